@@ -1,0 +1,27 @@
+// Owns every SourceFile of a run, original and synthetic, so that ranges can
+// be resolved to names and lines when diagnostics are printed.
+#pragma once
+
+#include <deque>
+#include <string>
+
+#include "source/source_file.h"
+
+namespace shaderport {
+
+class SourceManager {
+ public:
+  // Files are never moved once added: references stay valid.
+  const SourceFile& Add(std::string name, std::string text, bool synthetic = false) {
+    files_.emplace_back(static_cast<FileId>(files_.size()), std::move(name), std::move(text),
+                        synthetic);
+    return files_.back();
+  }
+  const SourceFile& Get(FileId id) const { return files_.at(id); }
+  size_t Size() const { return files_.size(); }
+
+ private:
+  std::deque<SourceFile> files_;
+};
+
+}  // namespace shaderport

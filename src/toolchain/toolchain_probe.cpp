@@ -1,0 +1,92 @@
+#include "toolchain/toolchain_probe.h"
+
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+#include <glslang/SPIRV/GlslangToSpv.h>
+
+#include <spirv-tools/libspirv.hpp>
+#include <spirv_glsl.hpp>
+
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/osmesa.h>
+#include <GL/gl.h>
+
+#include <vector>
+
+namespace shaderport::toolchain {
+namespace {
+
+constexpr const char* kProbeShader =
+    "#version 310 es\n"
+    "precision highp float;\n"
+    "layout(location = 0) out vec4 color;\n"
+    "void main() { color = vec4(0.25, 0.5, 0.75, 1.0); }\n";
+
+bool CompileProbe(std::vector<uint32_t>& spirv, std::string& error) {
+  glslang::InitializeProcess();
+  glslang::TShader shader(EShLangFragment);
+  shader.setStrings(&kProbeShader, 1);
+  shader.setEnvInput(glslang::EShSourceGlsl, EShLangFragment, glslang::EShClientOpenGL, 100);
+  shader.setEnvClient(glslang::EShClientOpenGL, glslang::EShTargetOpenGL_450);
+  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
+  if (!shader.parse(GetDefaultResources(), 310, false, EShMsgSpvRules)) {
+    error = shader.getInfoLog();
+    return false;
+  }
+  glslang::TProgram program;
+  program.addShader(&shader);
+  if (!program.link(EShMsgSpvRules)) {
+    error = program.getInfoLog();
+    return false;
+  }
+  glslang::GlslangToSpv(*program.getIntermediate(EShLangFragment), spirv);
+  return true;
+}
+
+void ProbeOsMesa(ToolchainReport& report) {
+  const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
+                            OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
+  OSMesaContext context = OSMesaCreateContextAttribs(attributes, nullptr);
+  if (context == nullptr) {
+    report.error = "OSMesa: context creation failed";
+    return;
+  }
+  std::vector<unsigned char> pixels(4 * 4 * 4);
+  if (OSMesaMakeCurrent(context, pixels.data(), GL_UNSIGNED_BYTE, 4, 4) != 0) {
+    const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    const auto* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+    report.osmesa_renderer = renderer != nullptr ? renderer : "";
+    report.osmesa_version = version != nullptr ? version : "";
+    OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
+  } else {
+    report.error = "OSMesa: make current failed";
+  }
+  OSMesaDestroyContext(context);
+}
+
+}  // namespace
+
+ToolchainReport ProbeToolchain() {
+  ToolchainReport report;
+  report.glslang_version = std::to_string(glslang::GetVersion().major) + "." +
+                           std::to_string(glslang::GetVersion().minor) + "." +
+                           std::to_string(glslang::GetVersion().patch);
+  std::vector<uint32_t> spirv;
+  if (!CompileProbe(spirv, report.error)) return report;
+  report.spirv_words = spirv.size();
+
+  spvtools::SpirvTools tools(SPV_ENV_OPENGL_4_5);
+  report.spirv_valid = tools.Validate(spirv);
+
+  spirv_cross::CompilerGLSL cross(spirv);
+  spirv_cross::CompilerGLSL::Options options;
+  options.es = true;
+  options.version = 300;
+  cross.set_common_options(options);
+  report.cross_compiled = cross.compile();
+
+  ProbeOsMesa(report);
+  return report;
+}
+
+}  // namespace shaderport::toolchain

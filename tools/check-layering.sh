@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Fails when a layer includes a header from a layer above it.
+# Layers, lowest first (a layer may include itself and anything listed before it,
+# except that toolchain, validate and report are siblings that do not include each other).
+set -euo pipefail
+root=${1:-$(dirname "$0")/..}
+declare -A allowed=(
+  [base]="base"
+  [source]="base source"
+  [diag]="base source diag"
+  [glsl]="base source diag glsl"
+  [toolchain]="base source diag toolchain"
+  [validate]="base source diag glsl validate"
+  [report]="base source diag report"
+  [driver]="base source diag glsl toolchain validate report driver rules"
+)
+status=0
+for layer in "${!allowed[@]}"; do
+  dir="$root/src/$layer"
+  [[ -d $dir ]] || continue
+  while IFS= read -r line; do
+    file=${line%%:*}
+    inc=$(sed -E 's/.*#include "([a-z_]+)\/.*/\1/' <<<"$line")
+    if [[ " ${allowed[$layer]} " != *" $inc "* ]]; then
+      echo "layering: ${file#"$root"/} (layer $layer) includes $inc/" >&2
+      status=1
+    fi
+  done < <(grep -rHE '^#include "[a-z_]+/' "$dir" || true)
+done
+# The CLI may include only the driver's public headers (and lower ones), never rules directly.
+exit $status

@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Installs every build and test dependency of shaderport from Debian 12 packages.
+# Idempotent: packages already present are skipped, and apt is not touched at all
+# when nothing is missing.
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build pkg-config ccache git
+  clang-14 libclang-rt-14-dev clang-format clang-tidy
+  glslang-dev glslang-tools spirv-tools
+  libspirv-cross-c-shared-dev spirv-cross
+  libosmesa6-dev libpng-dev
+  libgtest-dev libgmock-dev googletest libbenchmark-dev
+  libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libfmt-dev
+)
+
+# Node.js is only needed for the SARIF schema validation test. Some images ship a
+# Node.js build that bundles npm and conflicts with Debian's npm package, so only
+# ask for Debian's packages when no node/npm is on PATH.
+if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
+  packages+=(nodejs npm)
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if ((${#missing[@]} == 0)); then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}"
+sudo_cmd=()
+if [[ $(id -u) -ne 0 ]]; then sudo_cmd=(sudo); fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -q
+"${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
