@@ -1,0 +1,76 @@
+// The GLSL ES preprocessor: turns the lexed files of one shader into the token
+// stream the parser reads, remembering where every token came from.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "diag/diagnostic.h"
+#include "glsl/lex/token.h"
+#include "source/source_file.h"
+
+namespace shaderport::glsl {
+
+inline constexpr uint32_t kNoMacroUse = UINT32_MAX;
+
+// A token after preprocessing.
+struct PpToken {
+  TokenKind kind = TokenKind::kEndOfFile;
+  Punct punct = Punct::kNone;
+  std::string_view text;   // spelling; points into a SourceFile or into PreprocessResult storage
+  SourceRange spelling;    // where its characters are written (inside a macro body for expanded
+                           // tokens; the whole `a ## b` for pasted ones)
+  SourceRange expansion;   // what it stands for in the file being compiled: its own spelling
+                           // when not from a macro, else the range of the outermost macro use
+  uint32_t macro_use = kNoMacroUse;  // innermost MacroUse that produced it, if any
+  bool leading_space = false;
+  bool at_line_start = false;
+};
+
+// One expansion of a macro; uses nest through `parent`.
+struct MacroUse {
+  std::string name;
+  SourceRange use;          // the macro name and, for function-like macros, its arguments
+  SourceRange definition;   // the #define line's macro name
+  uint32_t parent = kNoMacroUse;
+};
+
+struct VersionDirective {
+  bool present = false;
+  int number = 100;            // 100 when absent (GLSL ES 1.00)
+  std::string profile;         // "es" or ""
+  SourceRange range;
+};
+
+struct ExtensionDirective {
+  std::string name;
+  std::string behavior;
+  SourceRange range;
+};
+
+struct PreprocessOptions {
+  // Macros defined before the first file, as "NAME" or "NAME=value" (e.g. GL_ES).
+  std::vector<std::string> predefined;
+};
+
+struct PreprocessResult {
+  std::vector<PpToken> tokens;             // ends with one kEndOfFile token
+  std::vector<MacroUse> macro_uses;
+  VersionDirective version;
+  std::vector<ExtensionDirective> extensions;
+  std::vector<SourceRange> inactive_regions;  // skipped #if groups (kept as trivia)
+  // Text of tokens made by `##`: a deque so that views into it survive moves.
+  std::deque<std::string> storage;
+  DiagnosticList diagnostics;
+};
+
+// Preprocesses `files` in order as one translation unit (e.g. ShaderToy Common
+// followed by a pass): macros defined in one file stay defined in the next.
+PreprocessResult Preprocess(std::span<const SourceFile* const> files,
+                            const PreprocessOptions& options = {});
+
+}  // namespace shaderport::glsl
