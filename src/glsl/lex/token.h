@@ -42,6 +42,7 @@ enum class TriviaKind : uint8_t {
   kLineComment,       // "// ..." up to, not including, the newline
   kBlockComment,      // "/* ... */" (an unterminated one runs to end of file)
   kLineContinuation,  // backslash followed by a newline
+  kSkipped,           // bytes left unlexed after limits::kMaxTokens was reached
 };
 
 struct Trivia {

@@ -1,0 +1,111 @@
+#include "driver/dialect.h"
+
+#include <set>
+#include <string>
+
+#include "glsl/lex/lexer.h"
+#include "source/source_file.h"
+
+namespace shaderport::driver {
+
+std::string_view DialectName(Dialect dialect) {
+  switch (dialect) {
+    case Dialect::kShaderToy:
+      return "shadertoy";
+    case Dialect::kWebGL1:
+      return "webgl1";
+    case Dialect::kWebGL2:
+      return "webgl2";
+  }
+  return "webgl1";
+}
+
+std::string_view StageName(Stage stage) {
+  return stage == Stage::kVertex ? "vertex" : "fragment";
+}
+
+std::optional<Dialect> ParseDialect(std::string_view name) {
+  if (name == "shadertoy") return Dialect::kShaderToy;
+  if (name == "webgl1") return Dialect::kWebGL1;
+  if (name == "webgl2") return Dialect::kWebGL2;
+  return std::nullopt;
+}
+
+std::optional<Stage> ParseStage(std::string_view name) {
+  if (name == "vertex" || name == "vert") return Stage::kVertex;
+  if (name == "fragment" || name == "frag") return Stage::kFragment;
+  return std::nullopt;
+}
+
+namespace {
+
+std::optional<Stage> StageFromExtension(const std::filesystem::path& path) {
+  const std::string extension = path.extension().string();
+  if (extension == ".vert" || extension == ".vs" || extension == ".vsh") return Stage::kVertex;
+  if (extension == ".frag" || extension == ".fs" || extension == ".fsh") return Stage::kFragment;
+  return std::nullopt;
+}
+
+// What the code says about itself, read from real tokens so that words in
+// comments do not count.
+struct CodeFacts {
+  bool version_300 = false;
+  bool version_directive = false;
+  std::set<std::string, std::less<>> defined_functions;  // `name (` at file scope-ish
+  bool writes_gl_position = false;
+  bool uses_attribute = false;
+};
+
+CodeFacts ReadFacts(std::string_view text) {
+  CodeFacts facts;
+  const SourceFile file(0, "<detect>", std::string(text));
+  const glsl::LexedFile lexed = glsl::Lex(file);
+  const auto& tokens = lexed.tokens;
+  for (size_t i = 0; i < tokens.size(); ++i) {
+    const glsl::Token& token = tokens[i];
+    if (token.kind == glsl::TokenKind::kHash && i + 2 < tokens.size() &&
+        tokens[i + 1].text == "version") {
+      facts.version_directive = true;
+      facts.version_300 = tokens[i + 2].text != "100";
+    }
+    if (token.kind != glsl::TokenKind::kIdentifier) continue;
+    if (token.text == "gl_Position") facts.writes_gl_position = true;
+    if (token.text == "attribute") facts.uses_attribute = true;
+    // `type name (` is a function declaration or definition.
+    if (i > 0 && i + 1 < tokens.size() && tokens[i - 1].kind == glsl::TokenKind::kIdentifier &&
+        tokens[i + 1].punct == glsl::Punct::kLeftParen) {
+      facts.defined_functions.insert(std::string(token.text));
+    }
+  }
+  return facts;
+}
+
+}  // namespace
+
+DetectedKind DetectKind(std::string_view text, const std::filesystem::path& path) {
+  const CodeFacts facts = ReadFacts(text);
+  DetectedKind kind;
+  const bool has_main = facts.defined_functions.contains("main");
+  if (facts.version_300) {
+    kind.dialect = Dialect::kWebGL2;
+  } else if (!has_main && !facts.version_directive &&
+             (facts.defined_functions.contains("mainImage") ||
+              facts.defined_functions.contains("mainCubemap") ||
+              facts.defined_functions.contains("mainSound"))) {
+    kind.dialect = Dialect::kShaderToy;
+    if (facts.defined_functions.contains("mainCubemap")) kind.pass = ShaderToyPass::kCubemap;
+    if (facts.defined_functions.contains("mainSound")) kind.pass = ShaderToyPass::kSound;
+  } else if (!has_main && !facts.version_directive && path.filename() == "common.glsl") {
+    kind.dialect = Dialect::kShaderToy;
+    kind.pass = ShaderToyPass::kCommon;
+  }
+  if (auto stage = StageFromExtension(path)) {
+    kind.stage = *stage;
+  } else if (kind.dialect != Dialect::kShaderToy &&
+             (facts.writes_gl_position || facts.uses_attribute)) {
+    kind.stage = Stage::kVertex;
+  }
+  return kind;
+}
+
+}  // namespace shaderport::driver

@@ -1,0 +1,32 @@
+// Which flavour of GLSL a file is written in, and which stage it is.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string_view>
+
+namespace shaderport::driver {
+
+enum class Dialect { kShaderToy, kWebGL1, kWebGL2 };
+enum class Stage { kVertex, kFragment };
+// The ShaderToy tab a file stands for; it decides the site's generated main().
+enum class ShaderToyPass { kImage, kBuffer, kCubemap, kSound, kCommon };
+
+std::string_view DialectName(Dialect dialect);  // "shadertoy", "webgl1", "webgl2"
+std::string_view StageName(Stage stage);        // "vertex", "fragment"
+std::optional<Dialect> ParseDialect(std::string_view name);
+std::optional<Stage> ParseStage(std::string_view name);
+
+struct DetectedKind {
+  Dialect dialect = Dialect::kWebGL1;
+  Stage stage = Stage::kFragment;
+  ShaderToyPass pass = ShaderToyPass::kImage;
+};
+
+// Looks at the code itself (comments and inactive text ignored): `#version 300 es`
+// means WebGL2; a `mainImage`/`mainCubemap`/`mainSound` and no `main` means
+// ShaderToy; otherwise WebGL1 (no #version is GLSL ES 1.00). The stage comes from
+// the extension, else from what the code writes (gl_Position means vertex).
+DetectedKind DetectKind(std::string_view text, const std::filesystem::path& path);
+
+}  // namespace shaderport::driver

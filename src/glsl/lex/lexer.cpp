@@ -1,0 +1,211 @@
+#include "glsl/lex/lexer.h"
+
+#include <cstdio>
+#include <string>
+
+#include "base/limits.h"
+#include "glsl/lex/lex_chars.h"
+#include "glsl/lex/punctuators_internal.h"
+
+namespace shaderport::glsl {
+namespace {
+
+class Lexer {
+ public:
+  explicit Lexer(const SourceFile& file) : file_(file), text_(file.Text()) {}
+
+  LexedFile Run() {
+    size_t p = 0;
+    while (true) {
+      p = LexTrivia(p);
+      if (p >= text_.size()) break;
+      if (out_.tokens.size() >= limits::kMaxTokens) {
+        Report("lex/too-many-tokens", p, text_.size(),
+               "the file has more than " + std::to_string(limits::kMaxTokens) +
+                   " tokens; the rest of it is not read");
+        out_.trivia.push_back({TriviaKind::kSkipped, U32(p), U32(text_.size())});
+        p = text_.size();
+        break;
+      }
+      p = LexToken(p);
+    }
+    Token eof;
+    eof.begin = eof.end = U32(text_.size());
+    eof.text = text_.substr(text_.size());
+    Finish(eof);
+    return std::move(out_);
+  }
+
+ private:
+  static uint32_t U32(size_t v) { return static_cast<uint32_t>(v); }
+
+  // Consumes the trivia starting at `p`; returns where the next token starts.
+  size_t LexTrivia(size_t p) {
+    const size_t n = text_.size();
+    while (p < n) {
+      const char c = text_[p];
+      size_t end = p;
+      TriviaKind kind;
+      if (IsHorizontalSpace(c)) {
+        while (end < n && IsHorizontalSpace(text_[end])) ++end;
+        kind = TriviaKind::kWhitespace;
+        leading_space_ = true;
+      } else if (size_t nl = NewlineLength(text_, p)) {
+        end = p + nl;
+        kind = TriviaKind::kNewline;
+        at_line_start_ = true;
+        leading_space_ = false;
+      } else if (size_t lc = ContinuationLength(text_, p)) {
+        end = p + lc;
+        kind = TriviaKind::kLineContinuation;
+      } else if (c == '/' && PeekLogical(text_, p, 1) == '/') {
+        end = LineCommentEnd(text_, p);
+        kind = TriviaKind::kLineComment;
+        leading_space_ = true;
+      } else if (c == '/' && PeekLogical(text_, p, 1) == '*') {
+        end = BlockCommentEnd(text_, p);
+        if (end == kNoEnd) {
+          end = n;
+          Report("lex/unterminated-comment", p, p + 2,
+                 "unterminated /* comment: it runs to the end of the file");
+        }
+        kind = TriviaKind::kBlockComment;
+        leading_space_ = true;
+      } else {
+        break;
+      }
+      out_.trivia.push_back({kind, U32(p), U32(end)});
+      p = end;
+    }
+    return p;
+  }
+
+  // Lexes one token at `p` (not trivia); returns where it ends.
+  size_t LexToken(size_t p) {
+    Token token;
+    Cursor cursor(text_, p);
+    const char c = text_[p];
+    if (IsIdentifierStart(c)) {
+      token.kind = TokenKind::kIdentifier;
+      while (IsIdentifierChar(cursor.Ch())) cursor.Bump();
+    } else if (IsDigit(c) || (c == '.' && IsDigit(cursor.Peek(1)))) {
+      token.kind = LexNumber(cursor);
+    } else if (c == '#' && at_line_start_) {
+      token.kind = TokenKind::kHash;
+      cursor.Bump();
+    } else if (int length = 0;
+               (token.punct = MatchPunctuator(c, cursor.Peek(1), cursor.Peek(2), &length)) !=
+               Punct::kNone) {
+      token.kind = TokenKind::kPunctuator;
+      for (int i = 0; i < length; ++i) cursor.Bump();
+    } else {
+      token.kind = TokenKind::kInvalid;
+      cursor.SetEnd(p + InvalidLength(text_, p));
+      ReportInvalid(p, cursor.End());
+    }
+    token.begin = U32(p);
+    token.end = U32(cursor.End());
+    token.text = text_.substr(p, cursor.End() - p);
+    Finish(token);
+    return cursor.End();
+  }
+
+  static TokenKind LexNumber(Cursor& cursor) {
+    TokenKind kind = TokenKind::kIntLiteral;
+    const char x = cursor.Peek(1);
+    if (cursor.Ch() == '0' && (x == 'x' || x == 'X')) {
+      cursor.Bump();
+      cursor.Bump();
+      while (IsHexDigit(cursor.Ch())) cursor.Bump();
+    } else {
+      while (IsDigit(cursor.Ch())) cursor.Bump();
+      if (cursor.Ch() == '.') {
+        kind = TokenKind::kFloatLiteral;
+        cursor.Bump();
+        while (IsDigit(cursor.Ch())) cursor.Bump();
+      }
+      const char e1 = cursor.Peek(1);
+      const bool exponent = (cursor.Ch() == 'e' || cursor.Ch() == 'E') &&
+                            (IsDigit(e1) || ((e1 == '+' || e1 == '-') && IsDigit(cursor.Peek(2))));
+      if (exponent) {
+        kind = TokenKind::kFloatLiteral;
+        cursor.Bump();
+        if (!IsDigit(cursor.Ch())) cursor.Bump();  // the sign
+        while (IsDigit(cursor.Ch())) cursor.Bump();
+      }
+      if (kind == TokenKind::kFloatLiteral && (cursor.Ch() == 'f' || cursor.Ch() == 'F')) {
+        cursor.Bump();
+      }
+    }
+    if (kind == TokenKind::kIntLiteral && (cursor.Ch() == 'u' || cursor.Ch() == 'U')) {
+      cursor.Bump();
+      kind = TokenKind::kUintLiteral;
+    }
+    return kind;
+  }
+
+  void ReportInvalid(size_t begin, size_t end) {
+    // A run of adjacent invalid characters gets one diagnostic.
+    if (!out_.tokens.empty() && out_.tokens.back().kind == TokenKind::kInvalid &&
+        out_.tokens.back().end == begin && !out_.diagnostics.empty() &&
+        out_.diagnostics.back().rule_id == "lex/invalid-character" &&
+        out_.diagnostics.back().range.end == begin) {
+      out_.diagnostics.back().range.end = U32(end);
+      return;
+    }
+    Report("lex/invalid-character", begin, end, DescribeInvalid(text_.substr(begin, end - begin)));
+  }
+
+  void Report(const char* rule, size_t begin, size_t end, std::string message) {
+    if (out_.diagnostics.size() >= limits::kMaxDiagnosticsPerFile) {
+      auto& last = out_.diagnostics.back();
+      if (last.notes.empty()) last.notes.push_back({{}, "further lexer diagnostics were dropped"});
+      return;
+    }
+    Diagnostic d;
+    d.severity = Severity::kError;
+    d.rule_id = rule;
+    d.range = {file_.Id(), U32(begin), U32(end)};
+    d.message = std::move(message);
+    out_.diagnostics.push_back(std::move(d));
+  }
+
+  // Attaches the pending trivia and line flags to `token` and stores it.
+  void Finish(Token& token) {
+    token.trivia_begin = trivia_used_;
+    token.trivia_end = U32(out_.trivia.size());
+    trivia_used_ = token.trivia_end;
+    token.at_line_start = at_line_start_;
+    token.leading_space = leading_space_;
+    at_line_start_ = false;
+    leading_space_ = false;
+    out_.tokens.push_back(token);
+  }
+
+  const SourceFile& file_;
+  std::string_view text_;
+  LexedFile out_;
+  uint32_t trivia_used_ = 0;
+  bool at_line_start_ = true;
+  bool leading_space_ = false;
+};
+
+}  // namespace
+
+LexedFile Lex(const SourceFile& file) { return Lexer(file).Run(); }
+
+std::string Reconstruct(const SourceFile& file, const LexedFile& lexed) {
+  const std::string_view text = file.Text();
+  std::string out;
+  out.reserve(text.size());
+  for (const Token& token : lexed.tokens) {
+    for (uint32_t i = token.trivia_begin; i < token.trivia_end && i < lexed.trivia.size(); ++i) {
+      const Trivia& t = lexed.trivia[i];
+      out.append(text.substr(t.begin, t.end - t.begin));
+    }
+    out.append(token.text);
+  }
+  return out;
+}
+
+}  // namespace shaderport::glsl

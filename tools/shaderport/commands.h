@@ -1,0 +1,20 @@
+// The subcommands of the shaderport CLI. Each registers its options on the app
+// and returns the exit code through `exit_code` when it runs.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace shaderport::cli {
+
+// Exit codes, documented in docs/cli.md.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitFindings = 1;
+inline constexpr int kExitUsage = 2;
+inline constexpr int kExitInternal = 3;
+
+void AddVersionCommand(CLI::App& app, int& exit_code);
+void AddCheckCommand(CLI::App& app, int& exit_code);
+void AddDumpCommand(CLI::App& app, int& exit_code);
+void AddSummaryCommand(CLI::App& app, int& exit_code);
+
+}  // namespace shaderport::cli
