@@ -8,9 +8,11 @@
 #include <spirv_glsl.hpp>
 
 #define GL_GLEXT_PROTOTYPES 1
-#include <GL/osmesa.h>
 #include <GL/gl.h>
+#include <GL/osmesa.h>
 
+#include <exception>
+#include <string>
 #include <vector>
 
 namespace shaderport::toolchain {
@@ -44,11 +46,18 @@ bool CompileProbe(std::vector<uint32_t>& spirv, std::string& error) {
 }
 
 void ProbeOsMesa(ToolchainReport& report) {
-  const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                            OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
+  const int attributes[] = {OSMESA_FORMAT,
+                            OSMESA_RGBA,
+                            OSMESA_PROFILE,
+                            OSMESA_CORE_PROFILE,
+                            OSMESA_CONTEXT_MAJOR_VERSION,
+                            3,
+                            OSMESA_CONTEXT_MINOR_VERSION,
+                            3,
+                            0};
   OSMesaContext context = OSMesaCreateContextAttribs(attributes, nullptr);
   if (context == nullptr) {
-    report.error = "OSMesa: context creation failed";
+    if (report.error.empty()) report.error = "OSMesa: context creation failed";
     return;
   }
   std::vector<unsigned char> pixels(4 * 4 * 4);
@@ -59,7 +68,7 @@ void ProbeOsMesa(ToolchainReport& report) {
     report.osmesa_version = version != nullptr ? version : "";
     OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
   } else {
-    report.error = "OSMesa: make current failed";
+    if (report.error.empty()) report.error = "OSMesa: make current failed";
   }
   OSMesaDestroyContext(context);
 }
@@ -77,13 +86,19 @@ ToolchainReport ProbeToolchain() {
 
   spvtools::SpirvTools tools(SPV_ENV_OPENGL_4_5);
   report.spirv_valid = tools.Validate(spirv);
+  if (!report.spirv_valid) report.error = "SPIRV-Tools: the probe module did not validate";
 
-  spirv_cross::CompilerGLSL cross(spirv);
-  spirv_cross::CompilerGLSL::Options options;
-  options.es = true;
-  options.version = 300;
-  cross.set_common_options(options);
-  report.cross_compiled = cross.compile();
+  // SPIRV-Cross reports failures by throwing; the library must not let them escape.
+  try {
+    spirv_cross::CompilerGLSL cross(spirv);
+    spirv_cross::CompilerGLSL::Options options;
+    options.es = true;
+    options.version = 300;
+    cross.set_common_options(options);
+    report.cross_compiled = cross.compile();
+  } catch (const std::exception& e) {
+    if (report.error.empty()) report.error = std::string("SPIRV-Cross: ") + e.what();
+  }
 
   ProbeOsMesa(report);
   return report;

@@ -93,9 +93,8 @@ class Lexer {
     } else if (c == '#' && at_line_start_) {
       token.kind = TokenKind::kHash;
       cursor.Bump();
-    } else if (int length = 0;
-               (token.punct = MatchPunctuator(c, cursor.Peek(1), cursor.Peek(2), &length)) !=
-               Punct::kNone) {
+    } else if (int length = 0; (token.punct = MatchPunctuator(c, cursor.Peek(1), cursor.Peek(2),
+                                                              &length)) != Punct::kNone) {
       token.kind = TokenKind::kPunctuator;
       for (int i = 0; i < length; ++i) cursor.Bump();
     } else {

@@ -12,6 +12,7 @@
 #include "diag/diagnostic.h"
 #include "glsl/lex/token.h"
 #include "source/source_file.h"
+#include "source/source_manager.h"
 
 namespace shaderport::glsl {
 
@@ -29,6 +30,10 @@ struct PpToken {
   uint32_t macro_use = kNoMacroUse;  // innermost MacroUse that produced it, if any
   bool leading_space = false;
   bool at_line_start = false;
+  // Spelled inside a #define body (or built by `##` or a built-in macro such as __LINE__):
+  // an edit to `spelling` would change the macro, not just this use. Tokens of macro
+  // arguments keep false: they are written at the use.
+  bool in_macro_body = false;
 };
 
 // One expansion of a macro; uses nest through `parent`.
@@ -52,6 +57,11 @@ struct ExtensionDirective {
   SourceRange range;
 };
 
+struct PragmaDirective {
+  std::string text;    // the tokens after `#pragma`, joined by single spaces
+  SourceRange range;   // the whole directive line
+};
+
 struct PreprocessOptions {
   // Macros defined before the first file, as "NAME" or "NAME=value" (e.g. GL_ES).
   std::vector<std::string> predefined;
@@ -62,6 +72,7 @@ struct PreprocessResult {
   std::vector<MacroUse> macro_uses;
   VersionDirective version;
   std::vector<ExtensionDirective> extensions;
+  std::vector<PragmaDirective> pragmas;
   std::vector<SourceRange> inactive_regions;  // skipped #if groups (kept as trivia)
   // Text of tokens made by `##`: a deque so that views into it survive moves.
   std::deque<std::string> storage;
@@ -72,5 +83,10 @@ struct PreprocessResult {
 // followed by a pass): macros defined in one file stay defined in the next.
 PreprocessResult Preprocess(std::span<const SourceFile* const> files,
                             const PreprocessOptions& options = {});
+
+// One line per token, "file:line:col kind 'text'" at the token's expansion, followed by
+// " <- spelled file:line:col via MACRO < OUTER" for tokens that come from macros.
+// For `shaderport dump --pp-tokens` and golden tests.
+std::string DumpPpTokens(const PreprocessResult& result, const SourceManager& sources);
 
 }  // namespace shaderport::glsl

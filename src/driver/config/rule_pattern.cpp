@@ -1,0 +1,49 @@
+#include "driver/config/rule_pattern.h"
+
+#include "diag/rule_catalog.h"
+
+namespace shaderport::driver {
+namespace {
+
+bool IsIdWord(std::string_view word) {
+  if (word.empty() || word.front() == '-' || word.back() == '-') return false;
+  for (char c : word) {
+    if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-')) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool IsValidRulePattern(std::string_view pattern) {
+  if (pattern == "*") return true;
+  const size_t slash = pattern.find('/');
+  if (slash == std::string_view::npos) return false;
+  const std::string_view category = pattern.substr(0, slash);
+  const std::string_view name = pattern.substr(slash + 1);
+  return IsIdWord(category) && (name == "*" || IsIdWord(name));
+}
+
+bool RulePatternMatches(std::string_view pattern, std::string_view rule_id) {
+  if (pattern == "*") return true;
+  if (pattern.size() >= 2 && pattern.substr(pattern.size() - 2) == "/*") {
+    const std::string_view prefix = pattern.substr(0, pattern.size() - 1);  // "category/"
+    return rule_id.substr(0, prefix.size()) == prefix;
+  }
+  return pattern == rule_id;
+}
+
+int RulePatternSpecificity(std::string_view pattern) {
+  if (pattern == "*") return 0;
+  if (pattern.size() >= 2 && pattern.substr(pattern.size() - 2) == "/*") return 1;
+  return 2;
+}
+
+bool RulePatternMatchesCatalog(std::string_view pattern) {
+  for (const RuleDescription& rule : RuleCatalog()) {
+    if (RulePatternMatches(pattern, rule.id)) return true;
+  }
+  return false;
+}
+
+}  // namespace shaderport::driver

@@ -1,0 +1,62 @@
+// Character-level helpers of the lexer (not public API). "Logical" characters
+// skip line continuations (backslash-newline), which GLSL ES 3.00 removes
+// before tokenizing; the bytes stay in the token text so nothing is lost.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace shaderport::glsl {
+
+inline constexpr size_t kNoEnd = static_cast<size_t>(-1);
+
+inline bool IsHorizontalSpace(char c) { return c == ' ' || c == '\t' || c == '\f' || c == '\v'; }
+inline bool IsDigit(char c) { return c >= '0' && c <= '9'; }
+inline bool IsHexDigit(char c) {
+  return IsDigit(c) || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F');
+}
+inline bool IsIdentifierStart(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+}
+inline bool IsIdentifierChar(char c) { return IsIdentifierStart(c) || IsDigit(c); }
+
+// Length of the newline ("\n", "\r\n" or "\r") at `p`, or 0.
+size_t NewlineLength(std::string_view text, size_t p);
+// Length of the backslash-newline at `p`, or 0.
+size_t ContinuationLength(std::string_view text, size_t p);
+// `p` moved past any line continuations.
+size_t SkipContinuations(std::string_view text, size_t p);
+// The logical character `k` steps after the one at `p`; '\0' past the end.
+char PeekLogical(std::string_view text, size_t p, int k);
+// End of the "//" comment at `p`: the next newline not escaped by a backslash.
+size_t LineCommentEnd(std::string_view text, size_t p);
+// One past the "*/" closing the comment at `p`, or kNoEnd when unterminated.
+size_t BlockCommentEnd(std::string_view text, size_t p);
+// Byte length of the invalid character at `p`: a whole UTF-8 sequence or one byte.
+size_t InvalidLength(std::string_view text, size_t p);
+// A message for an invalid character: "invalid character '$'", "... U+00A0 ...", ...
+std::string DescribeInvalid(std::string_view bytes);
+
+// Walks logical characters of one token. End() is one past the last consumed
+// byte, so continuations after the token stay outside it.
+class Cursor {
+ public:
+  Cursor(std::string_view text, size_t p) : text_(text), pos_(p), end_(p) {}
+  char Ch() const { return pos_ < text_.size() ? text_[pos_] : '\0'; }
+  char Peek(int k) const { return PeekLogical(text_, pos_, k); }
+  void Bump() {
+    if (pos_ >= text_.size()) return;
+    end_ = pos_ + 1;
+    pos_ = SkipContinuations(text_, pos_ + 1);
+  }
+  void SetEnd(size_t end) { pos_ = end_ = end; }
+  size_t End() const { return end_; }
+
+ private:
+  std::string_view text_;
+  size_t pos_;
+  size_t end_;
+};
+
+}  // namespace shaderport::glsl

@@ -1,0 +1,55 @@
+// The preprocessor's main loop over the lines of each file (not public API).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "glsl/lex/lexer.h"
+#include "glsl/lex/pp_state.h"
+
+namespace shaderport::glsl {
+
+// One #if group being read.
+struct ConditionalGroup {
+  SourceRange directive;  // the opening #if line, for "unterminated" errors
+  bool parent_active = true;
+  bool taken = false;     // an earlier branch was chosen (or the group is skipped as a whole)
+  bool active = false;    // the current branch is being compiled
+  bool else_seen = false;
+};
+
+class PpDriver {
+ public:
+  PpDriver(PreprocessResult& result, const PreprocessOptions& options);
+  void RunFile(const SourceFile& file, size_t index);
+  void Finish(const SourceFile* last_file);
+
+ private:
+  // preprocessor.cpp
+  bool Active() const { return groups_.empty() || groups_.back().active; }
+  void FlushText();
+  std::vector<ExpToken> ToExpTokens(std::span<const Token> tokens);
+  void AddLexDiagnostics(const LexedFile& lexed, size_t first_region);
+
+  // directives.cpp: `line` starts with the '#' token.
+  void Directive(std::span<const Token> line);
+  void Conditional(std::string_view name, std::span<const Token> line, SourceRange range);
+  bool Condition(std::string_view name, std::span<const Token> args, SourceRange range);
+  void Version(std::span<const Token> args, SourceRange range);
+  void Extension(std::span<const Token> args, SourceRange range);
+  void Line(std::span<const Token> args, SourceRange range);
+  SourceRange RangeOf(const Token& t) const { return {file_->Id(), t.begin, t.end}; }
+
+  PpState state_;
+  const SourceFile* file_ = nullptr;
+  size_t file_index_ = 0;
+  std::vector<const Token*> text_;  // active text tokens since the last directive
+  std::vector<ConditionalGroup> groups_;
+  uint32_t skip_begin_ = 0;         // start of the inactive region being read
+  bool seen_token_ = false;         // #version must come before every other token
+  bool seen_code_ = false;          // #extension should come before the code
+  bool reported_depth_ = false;
+};
+
+}  // namespace shaderport::glsl

@@ -1,0 +1,82 @@
+// State shared by the parts of the preprocessor (not public API): the macro
+// table, the result being built, and the budgets that keep hostile input bounded.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "glsl/lex/preprocessor.h"
+
+namespace shaderport::glsl {
+
+enum class BuiltinMacro : uint8_t { kNone, kLine, kFile, kVersion };
+
+struct Macro {
+  std::string name;
+  bool function_like = false;
+  bool predefined = false;  // GL_ES, __LINE__, options.predefined: may not be redefined
+  BuiltinMacro builtin = BuiltinMacro::kNone;
+  std::vector<std::string_view> params;
+  std::vector<PpToken> body;
+  std::vector<int> body_param;  // per body token: index into params, or -1
+  SourceRange definition;       // the name in its #define; invalid for predefined macros
+  int disabled = 0;             // > 0 while its expansion is being rescanned
+};
+
+struct StringHash {
+  using is_transparent = void;
+  size_t operator()(std::string_view s) const { return std::hash<std::string_view>{}(s); }
+};
+
+using MacroTable = std::unordered_map<std::string, Macro, StringHash, std::equal_to<>>;
+
+// A token during expansion: a PpToken plus C's "painted blue" mark for a macro
+// name met while that macro was being expanded (it never expands again).
+struct ExpToken {
+  PpToken token;
+  bool no_expand = false;
+};
+
+struct PpState {
+  PreprocessResult& result;
+  MacroTable macros;
+  size_t expanded_tokens = 0;     // budget: tokens made by macro expansion so far
+  bool expansion_exhausted = false;
+  bool reported_macro_depth = false;
+  // For __LINE__ and __FILE__: #line changes them.
+  const SourceFile* file = nullptr;
+  int line_delta = 0;  // added to the physical line
+  int source_number = 0;
+
+  explicit PpState(PreprocessResult& r) : result(r) {}
+
+  const Macro* Find(std::string_view name) const {
+    auto it = macros.find(name);
+    return it == macros.end() ? nullptr : &it->second;
+  }
+  Macro* FindMutable(std::string_view name) {
+    auto it = macros.find(name);
+    return it == macros.end() ? nullptr : &it->second;
+  }
+
+  // Adds a diagnostic unless limits::kMaxDiagnosticsPerFile were already reported.
+  void Report(Severity severity, std::string_view rule, SourceRange range, std::string message);
+
+  // Keeps `text` alive as long as the result and returns a view of it.
+  std::string_view Store(std::string text) {
+    result.storage.push_back(std::move(text));
+    return result.storage.back();
+  }
+};
+
+// Converts a lexed token of `file` to a PpToken spelled where it is written.
+PpToken ToPpToken(const SourceFile& file, const Token& token, PpState& state);
+
+// The smallest range covering `a` and `b` when both are in one file in order, else `a`.
+SourceRange Cover(SourceRange a, SourceRange b);
+
+}  // namespace shaderport::glsl

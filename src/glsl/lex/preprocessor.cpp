@@ -1,0 +1,112 @@
+#include "glsl/lex/preprocessor.h"
+
+#include <algorithm>
+
+#include "glsl/lex/macro_definitions.h"
+#include "glsl/lex/macro_expander.h"
+#include "glsl/lex/pp_driver.h"
+
+namespace shaderport::glsl {
+
+PpDriver::PpDriver(PreprocessResult& result, const PreprocessOptions& options) : state_(result) {
+  AddPredefinedMacros(state_, options.predefined);
+}
+
+void PpDriver::RunFile(const SourceFile& file, size_t index) {
+  file_ = &file;
+  file_index_ = index;
+  state_.file = &file;
+  state_.line_delta = 0;
+  state_.source_number = static_cast<int>(index);
+  const size_t first_region = state_.result.inactive_regions.size();
+  const size_t outer_groups = groups_.size();
+  const LexedFile lexed = Lex(file);
+  const std::vector<Token>& tokens = lexed.tokens;
+  size_t i = 0;
+  while (tokens[i].kind != TokenKind::kEndOfFile) {
+    if (tokens[i].kind != TokenKind::kHash) {
+      if (Active()) text_.push_back(&tokens[i]);
+      seen_token_ = true;
+      ++i;
+      continue;
+    }
+    size_t end = i + 1;
+    while (tokens[end].kind != TokenKind::kEndOfFile && !tokens[end].at_line_start) ++end;
+    FlushText();
+    Directive(std::span<const Token>(tokens).subspan(i, end - i));
+    seen_token_ = true;
+    i = end;
+  }
+  FlushText();
+  // A conditional group may not span files.
+  while (groups_.size() > outer_groups) {
+    const ConditionalGroup& g = groups_.back();
+    state_.Report(Severity::kError, "preprocessor/unterminated-conditional", g.directive,
+                  "this conditional has no #endif");
+    groups_.pop_back();
+    if (Active()) {
+      state_.result.inactive_regions.push_back(
+          {file.Id(), skip_begin_, static_cast<uint32_t>(file.Text().size())});
+    }
+  }
+  AddLexDiagnostics(lexed, first_region);
+}
+
+std::vector<ExpToken> PpDriver::ToExpTokens(std::span<const Token> tokens) {
+  std::vector<ExpToken> out;
+  out.reserve(tokens.size());
+  for (const Token& t : tokens) out.push_back({ToPpToken(*file_, t, state_), false});
+  return out;
+}
+
+void PpDriver::FlushText() {
+  if (text_.empty()) return;
+  seen_code_ = true;
+  std::vector<ExpToken> input;
+  input.reserve(text_.size());
+  for (const Token* t : text_) input.push_back({ToPpToken(*file_, *t, state_), false});
+  text_.clear();
+  std::vector<ExpToken> expanded = ExpandMacros(state_, std::move(input), false);
+  auto& out = state_.result.tokens;
+  out.reserve(out.size() + expanded.size());
+  for (ExpToken& t : expanded) out.push_back(t.token);
+}
+
+void PpDriver::AddLexDiagnostics(const LexedFile& lexed, size_t first_region) {
+  const auto& regions = state_.result.inactive_regions;
+  for (const Diagnostic& d : lexed.diagnostics) {
+    // Skipped groups may hold any text (as in C): only comments must still be closed there.
+    const bool skipped = std::any_of(regions.begin() + static_cast<std::ptrdiff_t>(first_region),
+                                     regions.end(),
+                                     [&](const SourceRange& r) { return r.Contains(d.range); });
+    if (skipped && d.rule_id == "lex/invalid-character") continue;
+    state_.Report(d.severity, d.rule_id, d.range, d.message);
+  }
+}
+
+void PpDriver::Finish(const SourceFile* last_file) {
+  PpToken eof;
+  if (last_file) {
+    const auto size = static_cast<uint32_t>(last_file->Text().size());
+    eof.spelling = eof.expansion = {last_file->Id(), size, size};
+    eof.text = last_file->Text().substr(size);
+  }
+  eof.at_line_start = true;
+  state_.result.tokens.push_back(eof);
+  std::stable_sort(state_.result.diagnostics.begin(), state_.result.diagnostics.end(),
+                   [](const Diagnostic& a, const Diagnostic& b) {
+                     return a.range.file != b.range.file ? a.range.file < b.range.file
+                                                         : a.range.begin < b.range.begin;
+                   });
+}
+
+PreprocessResult Preprocess(std::span<const SourceFile* const> files,
+                            const PreprocessOptions& options) {
+  PreprocessResult result;
+  PpDriver driver(result, options);
+  for (size_t i = 0; i < files.size(); ++i) driver.RunFile(*files[i], i);
+  driver.Finish(files.empty() ? nullptr : files.back());
+  return result;
+}
+
+}  // namespace shaderport::glsl

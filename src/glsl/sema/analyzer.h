@@ -1,0 +1,66 @@
+// Internal to sema: the pass that builds a SemanticModel. Declarations and
+// statements are in analyzer_statements.cpp, expressions in analyzer_expressions.cpp.
+#pragma once
+
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "glsl/sema/semantic_model.h"
+
+namespace shaderport::glsl {
+
+class Analyzer {
+ public:
+  Analyzer(const SyntaxTree& tree, const AnalyzeOptions& options);
+  SemanticModel Run();
+
+ private:
+  // Scopes and symbols.
+  void PushScope(uint32_t node);
+  void PopScope();
+  uint32_t Declare(Symbol symbol);
+  uint32_t Lookup(const std::string& name) const;
+  std::vector<uint32_t> LookupFunctions(const std::string& name) const;
+  void Refer(uint32_t node, uint32_t symbol);
+
+  // Declarations and statements (analyzer_statements.cpp).
+  void DeclareExternal(const Node& node);
+  void Statement(const Node* node);
+  void VariableDeclarationNode(const VariableDeclaration& decl);
+  void FunctionDeclarationNode(const FunctionDeclaration& fn);
+  void InterfaceBlockNode(const InterfaceBlock& block);
+  Type ResolveTypeSpecifier(const TypeSpecifier* spec);
+  uint32_t DeclareStruct(const StructSpecifier& spec);
+  int32_t ArraySize(const std::vector<ArrayDimension>& dims);
+
+  // Expressions (analyzer_expressions.cpp). Typed bottom-up with an explicit stack, so
+  // that long operator chains cannot exhaust the native stack.
+  Type TypeExpression(const Expr* expr);
+  Type ComputeType(const Expr& expr);
+  Type CallType(const CallExpr& call);
+  Type FunctionCallType(const CallExpr& call, const std::vector<Type>& args);
+  Type MemberType(const MemberExpr& member);
+  Type BinaryType(const BinaryExpr& binary);
+  Type AssignmentType(const AssignmentExpr& assignment);
+  Type ConditionalType(const ConditionalExpr& conditional);
+  // Records mismatches for `value` where `required` is needed; returns true if it found one.
+  bool CheckRequired(const Expr* value, const Type& required, MismatchContext context);
+  void AddMismatch(const Expr* node, MismatchKind kind, MismatchContext context,
+                   const Type& required, const Type& actual);
+  std::optional<int64_t> ConstantInt(const Expr* expr, int depth = 0) const;
+  const Type& TypeAt(const Expr* expr) const;
+
+  const SyntaxTree& tree_;
+  AnalyzeOptions options_;
+  SemanticModel model_;
+  bool recording_ = true;  // false while reading the predeclared header tree
+  std::vector<Type>* types_ = nullptr;  // expression types of the tree being read
+  std::vector<Type> header_types_;
+  uint32_t current_scope_ = kNoScope;
+  std::vector<std::unordered_map<std::string, std::vector<uint32_t>>> scope_names_;
+  std::unordered_map<std::string, uint32_t> builtin_symbols_;
+  Type current_return_ = Type::Unknown();
+};
+
+}  // namespace shaderport::glsl

@@ -1,0 +1,317 @@
+// Token access, ranges, diagnostics, recovery and scopes of the parser.
+#include <algorithm>
+#include <string>
+
+#include "base/limits.h"
+#include "glsl/lex/lexer.h"
+#include "glsl/syntax/parser_internal.h"
+#include "glsl/syntax/visit.h"
+
+namespace shaderport::glsl {
+
+Parser::Parser(const PreprocessResult& pp, const ParseOptions& options)
+    : pp_(pp), options_(options) {
+  const auto& tokens = pp_.tokens;
+  end_index_ = static_cast<uint32_t>(tokens.size());
+  for (uint32_t i = 0; i < tokens.size(); ++i) {
+    if (tokens[i].kind == TokenKind::kEndOfFile) {
+      end_index_ = i;
+      break;
+    }
+  }
+  texts_.reserve(end_index_ + 1);
+  words_.reserve(end_index_ + 1);
+  for (uint32_t i = 0; i < end_index_; ++i) {
+    std::string_view text = tokens[i].text;
+    if (text.find('\\') != std::string_view::npos) {
+      std::string clean;
+      for (size_t k = 0; k < text.size(); ++k) {
+        if (text[k] == '\\' && k + 1 < text.size() && (text[k + 1] == '\n' || text[k + 1] == '\r')) {
+          ++k;
+          if (text[k] == '\r' && k + 1 < text.size() && text[k + 1] == '\n') ++k;
+          continue;
+        }
+        clean.push_back(text[k]);
+      }
+      text = cleaned_.emplace_back(std::move(clean));
+    }
+    texts_.push_back(text);
+    words_.push_back(tokens[i].kind == TokenKind::kIdentifier ? ClassifyWord(text, options_.version)
+                                                               : WordInfo{});
+  }
+  texts_.emplace_back();
+  words_.emplace_back();
+}
+
+// ------------------------------------------------------------------ tokens
+
+uint32_t Parser::Index(uint32_t ahead) const { return std::min(pos_ + ahead, end_index_); }
+
+const PpToken& Parser::Tok(uint32_t ahead) const {
+  static const PpToken kEnd{};
+  uint32_t i = Index(ahead);
+  return i < pp_.tokens.size() ? pp_.tokens[i] : kEnd;
+}
+
+std::string_view Parser::Text(uint32_t ahead) const { return texts_[Index(ahead)]; }
+const WordInfo& Parser::Word(uint32_t ahead) const { return words_[Index(ahead)]; }
+
+bool Parser::AtPunct(Punct p, uint32_t ahead) const {
+  const PpToken& t = Tok(ahead);
+  return t.kind == TokenKind::kPunctuator && t.punct == p;
+}
+
+bool Parser::AtKeyword(std::string_view word, uint32_t ahead) const {
+  return Tok(ahead).kind == TokenKind::kIdentifier && Word(ahead).status == WordStatus::kKeyword &&
+         Text(ahead) == word;
+}
+
+bool Parser::AtRole(WordRole role, uint32_t ahead) const {
+  return Tok(ahead).kind == TokenKind::kIdentifier && Word(ahead).role == role &&
+         Word(ahead).status == WordStatus::kKeyword;
+}
+
+bool Parser::AtName(uint32_t ahead) const {
+  return Tok(ahead).kind == TokenKind::kIdentifier && Word(ahead).status != WordStatus::kKeyword;
+}
+
+void Parser::Advance() {
+  if (pos_ < end_index_) ++pos_;
+}
+
+bool Parser::Accept(Punct p) {
+  if (!AtPunct(p)) return false;
+  Advance();
+  return true;
+}
+
+bool Parser::Expect(Punct p, std::string_view context) {
+  if (Accept(p)) return true;
+  std::string message = "expected '" + std::string(PunctSpelling(p)) + "'";
+  if (!context.empty()) message += " " + std::string(context);
+  if (p == Punct::kSemicolon) {
+    ErrorAfterPrevious("syntax/expected-token", message);
+  } else {
+    ErrorAtToken("syntax/expected-token", message + ", found " + Describe());
+  }
+  return false;
+}
+
+Name Parser::TakeName() {
+  Name name{std::string(Text()), TokenRange(Index())};
+  if (Word().status == WordStatus::kReserved) {
+    Error(name.range, "syntax/reserved-word",
+          "'" + name.text + "' is a reserved word in GLSL ES " +
+              (options_.version >= 300 ? "3.00" : "1.00"));
+  }
+  Advance();
+  return name;
+}
+
+Name Parser::ExpectName(std::string_view what) {
+  if (AtName()) return TakeName();
+  std::string message = "expected " + std::string(what) + ", found " + Describe();
+  if (Tok().kind == TokenKind::kIdentifier) message = "expected " + std::string(what) +
+                                                      ", found keyword '" + std::string(Text()) + "'";
+  ErrorAtToken("syntax/expected-identifier", message);
+  return Name{"", RangeOf(Index(), Index() - 1)};
+}
+
+std::string Parser::Describe(uint32_t ahead) const {
+  if (Tok(ahead).kind == TokenKind::kEndOfFile) return "end of file";
+  return "'" + std::string(Text(ahead)) + "'";
+}
+
+// ------------------------------------------------------------------ ranges
+
+SourceRange Parser::TokenRange(uint32_t index) const {
+  if (index >= pp_.tokens.size()) return {};
+  return pp_.tokens[index].expansion;
+}
+
+SourceRange Parser::RangeOf(uint32_t first, uint32_t last) const {
+  SourceRange start = TokenRange(std::min(first, end_index_));
+  if (last < first || last >= end_index_) return {start.file, start.begin, start.begin};
+  uint32_t end_token = last;
+  while (end_token > first && TokenRange(end_token).file != start.file) --end_token;
+  return {start.file, start.begin, std::max(start.begin, TokenRange(end_token).end)};
+}
+
+void Parser::FinishNode(Node* node) {
+  bool empty = pos_ <= node->first_token;
+  node->last_token = empty ? node->first_token - 1 : pos_ - 1;
+  node->range = RangeOf(node->first_token, node->last_token);
+  uint32_t height = 0;
+  ForEachChild(*node, [&](const Node& child) { height = std::max(height, Height(&child)); });
+  if (heights_.size() <= node->id) heights_.resize(node->id + 1, 0);
+  heights_[node->id] = height + 1;
+}
+
+uint32_t Parser::Height(const Node* node) const {
+  return node != nullptr && node->id < heights_.size() ? heights_[node->id] : 0;
+}
+
+// ------------------------------------------------------------ diagnostics
+
+void Parser::Error(const SourceRange& range, std::string_view rule, std::string message) {
+  if (error_count_ >= limits::kMaxDiagnosticsPerFile) {
+    if (!too_many_reported_) {
+      too_many_reported_ = true;
+      diagnostics_.push_back({Severity::kNote, "syntax/too-many-errors", range,
+                              "too many syntax errors; further ones are not reported", {}, {}});
+    }
+    return;
+  }
+  ++error_count_;
+  diagnostics_.push_back({Severity::kError, std::string(rule), range, std::move(message), {}, {}});
+}
+
+void Parser::ErrorAtToken(std::string_view rule, std::string message) {
+  // One error per token: the first explains it, the rest would be cascades.
+  if (last_error_index_ == Index()) return;
+  last_error_index_ = Index();
+  Error(AtEnd() ? RangeOf(Index(), Index() - 1) : TokenRange(Index()), rule, std::move(message));
+}
+
+void Parser::ErrorAfterPrevious(std::string_view rule, std::string message) {
+  if (last_error_index_ == Index()) return;
+  last_error_index_ = Index();
+  SourceRange range = pos_ > 0 ? TokenRange(pos_ - 1) : RangeOf(0, UINT32_MAX);
+  range.begin = range.end;
+  Error(range, rule, std::move(message));
+}
+
+bool Parser::TooDeep() {
+  if (depth_ <= limits::kMaxSyntaxDepth) return false;
+  if (!depth_reported_) {
+    depth_reported_ = true;
+    Error(AtEnd() ? RangeOf(Index(), Index() - 1) : TokenRange(Index()), "syntax/nesting-too-deep",
+          "nesting too deep: more than " + std::to_string(limits::kMaxSyntaxDepth) +
+              " levels of parentheses, blocks or operators");
+  }
+  return true;
+}
+
+ErrorExpr* Parser::MakeErrorExpr() {
+  auto* node = Start<ErrorExpr>();
+  return Finish(node);
+}
+
+static bool IsOpener(const PpToken& t) {
+  return t.kind == TokenKind::kPunctuator &&
+         (t.punct == Punct::kLeftParen || t.punct == Punct::kLeftBracket ||
+          t.punct == Punct::kLeftBrace);
+}
+
+static bool IsCloser(const PpToken& t) {
+  return t.kind == TokenKind::kPunctuator &&
+         (t.punct == Punct::kRightParen || t.punct == Punct::kRightBracket ||
+          t.punct == Punct::kRightBrace);
+}
+
+void Parser::SkipBalanced(bool statement) {
+  uint32_t level = 0;
+  while (!AtEnd()) {
+    const PpToken& t = Tok();
+    if (IsOpener(t)) {
+      ++level;
+    } else if (IsCloser(t)) {
+      if (level == 0) return;
+      --level;
+      if (level == 0 && statement && t.punct == Punct::kRightBrace) {
+        Advance();
+        return;
+      }
+    } else if (level == 0 && t.kind == TokenKind::kPunctuator && t.punct == Punct::kSemicolon) {
+      if (statement) Advance();
+      return;
+    }
+    Advance();
+  }
+}
+
+void Parser::RecoverToStatementEnd() {
+  uint32_t start = pos_;
+  uint32_t level = 0;
+  while (!AtEnd()) {
+    const PpToken& t = Tok();
+    if (level == 0 && pos_ != start && t.at_line_start && t.kind == TokenKind::kIdentifier) {
+      WordRole role = Word().role;
+      if (role == WordRole::kType || role == WordRole::kQualifier || role == WordRole::kStruct ||
+          role == WordRole::kPrecision || role == WordRole::kControl) {
+        return;
+      }
+    }
+    if (IsOpener(t)) {
+      ++level;
+    } else if (IsCloser(t)) {
+      if (level == 0) {
+        // A stray closer at the start would stop recovery forever: consume it.
+        if (pos_ == start && t.punct != Punct::kRightBrace) Advance();
+        return;
+      }
+      --level;
+      if (level == 0 && t.punct == Punct::kRightBrace) {
+        Advance();
+        return;
+      }
+    } else if (level == 0 && t.kind == TokenKind::kPunctuator && t.punct == Punct::kSemicolon) {
+      Advance();
+      return;
+    }
+    Advance();
+  }
+}
+
+// ------------------------------------------------------------------ scopes
+
+bool Parser::IsStructName(std::string_view name) const {
+  for (auto it = scope_names_.rbegin(); it != scope_names_.rend(); ++it) {
+    if (it->first == name) return it->second;
+  }
+  return false;
+}
+
+bool Parser::IsTypeName(uint32_t ahead) const {
+  if (Tok(ahead).kind != TokenKind::kIdentifier) return false;
+  const WordInfo& word = Word(ahead);
+  if (word.status == WordStatus::kKeyword) return word.role == WordRole::kType;
+  return IsStructName(Text(ahead));
+}
+
+void Parser::DeclareStruct(std::string_view name) {
+  if (!name.empty()) scope_names_.emplace_back(std::string(name), true);
+}
+
+void Parser::DeclareOrdinaryName(std::string_view name) {
+  if (IsStructName(name)) scope_names_.emplace_back(std::string(name), false);
+}
+
+void Parser::PopScope() {
+  if (scope_marks_.empty()) return;
+  scope_names_.resize(scope_marks_.back());
+  scope_marks_.pop_back();
+}
+
+// -------------------------------------------------------------------- run
+
+ParseResult Parser::Run() {
+  auto* unit = Start<TranslationUnit>();
+  unit->first_token = 0;
+  while (!AtEnd()) {
+    uint32_t before = pos_;
+    Node* decl = ParseExternalDeclaration();
+    if (decl != nullptr) unit->declarations.push_back(decl);
+    if (pos_ == before) Advance();  // progress guarantee: every iteration eats a token
+  }
+  Finish(unit);
+  tree_.SetRoot(unit);
+  return ParseResult{std::move(tree_), std::move(diagnostics_)};
+}
+
+ParseResult Parse(const PreprocessResult& tokens, const ParseOptions& options) {
+  Parser parser(tokens, options);
+  return parser.Run();
+}
+
+}  // namespace shaderport::glsl

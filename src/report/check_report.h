@@ -1,0 +1,52 @@
+// What `shaderport check` found, file by file: the input of every output format.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "diag/diagnostic.h"
+#include "source/source_file.h"
+#include "source/source_manager.h"
+
+namespace shaderport {
+
+struct FileReport {
+  const SourceFile* file = nullptr;
+  std::string dialect;  // "shadertoy", "webgl1", "webgl2" ("" when unknown)
+  std::string stage;    // "vertex", "fragment" ("" when unknown)
+  // Sorted by position. A range may point into another file of the SourceManager
+  // (e.g. a ShaderToy Common file); printers show the file the range is in.
+  DiagnosticList diagnostics;
+};
+
+struct CheckReport {
+  std::vector<FileReport> files;
+  const SourceManager* sources = nullptr;
+};
+
+// Settings shared by the output formats; the CLI fills them in.
+struct ReportOptions {
+  std::string tool_version = "0.0.0";
+  // Absolute directory that paths are made relative to (SARIF's %SRCROOT%, the
+  // GitHub annotation paths). Empty: paths are printed as the files are named.
+  std::string base_directory;
+  std::string information_uri;  // SARIF tool.driver.informationUri, omitted when empty
+  bool color = false;           // text only: ANSI colours (the CLI decides: TTY, NO_COLOR)
+};
+
+struct ReportSummary {
+  size_t errors = 0;
+  size_t warnings = 0;
+  size_t notes = 0;
+  size_t files_with_problems = 0;  // files with at least one diagnostic of any severity
+  size_t files_checked = 0;
+};
+
+ReportSummary Summarize(const CheckReport& report);
+
+// Puts files in path order and each file's diagnostics in position order
+// (file, offset, end, then rule id), so that every format is deterministic.
+void SortReport(CheckReport& report);
+
+}  // namespace shaderport

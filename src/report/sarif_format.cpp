@@ -1,0 +1,214 @@
+#include "report/sarif_format.h"
+
+#include <cstdint>
+#include <cstdio>
+#include <map>
+#include <string_view>
+
+#include "diag/rule_catalog.h"
+#include "report/source_position.h"
+
+namespace shaderport {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+const char* SarifLevel(Severity severity) {
+  switch (severity) {
+    case Severity::kError:
+      return "error";
+    case Severity::kWarning:
+      return "warning";
+    case Severity::kNote:
+      return "note";
+  }
+  return "error";
+}
+
+std::string RuleIdOf(const Diagnostic& diagnostic) {
+  return diagnostic.rule_id.empty() ? "unknown" : diagnostic.rule_id;
+}
+
+// FNV-1a: stable across runs and platforms, which std::hash is not.
+uint64_t Fnv1a(std::string_view text, uint64_t hash = 14695981039346656037ull) {
+  for (char c : text) {
+    hash ^= static_cast<unsigned char>(c);
+    hash *= 1099511628211ull;
+  }
+  return hash;
+}
+
+std::string_view Trim(std::string_view text) {
+  const size_t begin = text.find_first_not_of(" \t");
+  if (begin == std::string_view::npos) return {};
+  return text.substr(begin, text.find_last_not_of(" \t") - begin + 1);
+}
+
+class SarifBuilder {
+ public:
+  SarifBuilder(const CheckReport& report, const ReportOptions& options)
+      : report_(report), options_(options) {}
+
+  Json Build() {
+    // Rules first: results refer to them by index.
+    for (const FileReport& file : report_.files) {
+      for (const Diagnostic& diagnostic : file.diagnostics) {
+        auto [it, inserted] = levels_.emplace(RuleIdOf(diagnostic), diagnostic.severity);
+        if (!inserted && diagnostic.severity > it->second) it->second = diagnostic.severity;
+      }
+    }
+    Json rules = Json::array();
+    for (const auto& [id, severity] : levels_) {
+      rule_index_[id] = rules.size();
+      rules.push_back(RuleToJson(id, severity));
+    }
+    Json results = Json::array();
+    for (const FileReport& file : report_.files) {
+      for (const Diagnostic& diagnostic : file.diagnostics) {
+        results.push_back(ResultToJson(file, diagnostic));
+      }
+    }
+    Json driver = {{"name", "shaderport"},
+                   {"version", options_.tool_version},
+                   {"semanticVersion", options_.tool_version}};
+    if (!options_.information_uri.empty()) driver["informationUri"] = options_.information_uri;
+    driver["rules"] = std::move(rules);
+
+    Json run = {{"tool", {{"driver", std::move(driver)}}}};
+    if (IsAbsolutePath(options_.base_directory)) {
+      std::string base = FileUri(DisplayPath(options_.base_directory, ""));
+      if (base.back() != '/') base += '/';
+      run["originalUriBaseIds"] = {{kSarifSourceRoot, {{"uri", base}}}};
+    }
+    run["results"] = std::move(results);
+    run["columnKind"] = "utf16CodeUnits";
+    return Json{{"$schema", kSarifSchemaUri}, {"version", "2.1.0"}, {"runs", Json::array({run})}};
+  }
+
+ private:
+  static std::string FileUri(const std::string& absolute_path) {
+    // "C:/x" keeps its drive colon; everything else is percent-encoded.
+    if (absolute_path.size() >= 2 && absolute_path[1] == ':') {
+      return "file:///" + absolute_path.substr(0, 2) + EncodeUriPath(absolute_path.substr(2));
+    }
+    return "file://" + EncodeUriPath(absolute_path);
+  }
+
+  Json RuleToJson(const std::string& id, Severity severity) const {
+    Json rule = {{"id", id}};
+    if (const RuleDescription* description = FindRule(id)) {
+      rule["shortDescription"] = {{"text", std::string(description->summary)}};
+      rule["fullDescription"] = {{"text", std::string(description->help)}};
+      rule["help"] = {{"text", std::string(description->help)}};
+    } else {
+      rule["shortDescription"] = {{"text", id}};
+    }
+    rule["defaultConfiguration"] = {{"level", SarifLevel(severity)}};
+    return rule;
+  }
+
+  Json ArtifactLocation(const SourceFile& file) const {
+    const std::string path = DisplayPath(file.Name(), options_.base_directory);
+    if (IsAbsolutePath(path)) return {{"uri", FileUri(path)}};
+    return {{"uri", EncodeUriPath(path)}, {"uriBaseId", kSarifSourceRoot}};
+  }
+
+  static Json Region(const ResolvedRange& where) {
+    return {{"startLine", where.start_utf16.line},
+            {"startColumn", where.start_utf16.column},
+            {"endLine", where.end_utf16.line},
+            {"endColumn", where.end_utf16.column}};
+  }
+
+  // A synthetic file (a generated header) is no artifact: point at the checked file.
+  Json PhysicalLocation(const SourceRange& range, const SourceFile* fallback) const {
+    const auto where = Resolve(report_.sources, range);
+    if (where && !where->file->IsSynthetic()) {
+      return {{"artifactLocation", ArtifactLocation(*where->file)}, {"region", Region(*where)}};
+    }
+    if (fallback == nullptr) return nullptr;
+    return {{"artifactLocation", ArtifactLocation(*fallback)}};
+  }
+
+  // Same rule, same file, same line text (ignoring indentation): the same finding
+  // after unrelated edits move it. The occurrence count separates repeats.
+  std::string Fingerprint(const Diagnostic& diagnostic, const SourceFile* fallback) {
+    const auto where = Resolve(report_.sources, diagnostic.range);
+    const SourceFile* file = where ? where->file : fallback;
+    std::string key = RuleIdOf(diagnostic) + '\n' + (file ? file->Name() : "") + '\n';
+    if (where) key += std::string(Trim(where->file->LineText(where->start.line)));
+    const int occurrence = ++occurrences_[key];
+    char hex[32];
+    std::snprintf(hex, sizeof hex, "%016llx:%d", static_cast<unsigned long long>(Fnv1a(key)),
+                  occurrence);
+    return hex;
+  }
+
+  Json FixesToJson(const Diagnostic& diagnostic) const {
+    // The fix-its of one diagnostic are applied together: one SARIF fix holds them all.
+    Json changes = Json::array();
+    std::string description;
+    for (const FixIt& fix : diagnostic.fixes) {
+      const auto where = Resolve(report_.sources, fix.range);
+      if (!where || where->file->IsSynthetic()) continue;
+      Json replacement = {{"deletedRegion", Region(*where)},
+                          {"insertedContent", {{"text", fix.replacement}}}};
+      Json artifact = ArtifactLocation(*where->file);
+      if (!changes.empty() && changes.back()["artifactLocation"] == artifact) {
+        changes.back()["replacements"].push_back(std::move(replacement));
+      } else {
+        changes.push_back({{"artifactLocation", std::move(artifact)},
+                           {"replacements", Json::array({std::move(replacement)})}});
+      }
+      if (fix.safety == FixSafety::kSuggestion) description = "Suggested fix (review it)";
+    }
+    if (changes.empty()) return Json::array();
+    if (description.empty()) description = "Safe fix";
+    return Json::array(
+        {{{"description", {{"text", description}}}, {"artifactChanges", std::move(changes)}}});
+  }
+
+  Json ResultToJson(const FileReport& file, const Diagnostic& diagnostic) {
+    const std::string id = RuleIdOf(diagnostic);
+    Json result = {{"ruleId", id},
+                   {"ruleIndex", rule_index_.at(id)},
+                   {"level", SarifLevel(diagnostic.severity)},
+                   {"message", {{"text", diagnostic.message}}}};
+    Json location = PhysicalLocation(diagnostic.range, file.file);
+    result["locations"] = Json::array();
+    if (!location.is_null()) result["locations"].push_back({{"physicalLocation", location}});
+    if (!diagnostic.notes.empty()) {
+      Json related = Json::array();
+      int id_number = 1;
+      for (const DiagnosticNote& note : diagnostic.notes) {
+        Json entry = {{"id", id_number++}, {"message", {{"text", note.message}}}};
+        Json note_location = PhysicalLocation(note.range, nullptr);
+        if (!note_location.is_null()) entry["physicalLocation"] = std::move(note_location);
+        related.push_back(std::move(entry));
+      }
+      result["relatedLocations"] = std::move(related);
+    }
+    Json fixes = FixesToJson(diagnostic);
+    if (!fixes.empty()) result["fixes"] = std::move(fixes);
+    result["partialFingerprints"] = {{"shaderport/v1", Fingerprint(diagnostic, file.file)}};
+    return result;
+  }
+
+  const CheckReport& report_;
+  const ReportOptions& options_;
+  std::map<std::string, Severity> levels_;  // sorted by id: the order of rules[]
+  std::map<std::string, size_t> rule_index_;
+  std::map<std::string, int> occurrences_;
+};
+
+}  // namespace
+
+Json ReportToSarif(const CheckReport& report, const ReportOptions& options) {
+  return SarifBuilder(report, options).Build();
+}
+
+std::string FormatSarif(const CheckReport& report, const ReportOptions& options) {
+  return ReportToSarif(report, options).dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+}
+
+}  // namespace shaderport

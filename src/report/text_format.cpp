@@ -1,0 +1,235 @@
+#include "report/text_format.h"
+
+#include <algorithm>
+#include <optional>
+#include <string_view>
+
+#include "report/source_position.h"
+
+namespace shaderport {
+namespace {
+
+constexpr std::string_view kBold = "\x1b[1m";
+constexpr std::string_view kRed = "\x1b[1;31m";
+constexpr std::string_view kMagenta = "\x1b[1;35m";
+constexpr std::string_view kCyan = "\x1b[1;36m";
+constexpr std::string_view kGreen = "\x1b[1;32m";
+constexpr std::string_view kReset = "\x1b[0m";
+
+// Quoted text in fix-it lines is cut to this many bytes: the JSON output has it all.
+constexpr size_t kMaxQuotedBytes = 60;
+
+std::string Plural(size_t count, std::string_view word) {
+  std::string out = std::to_string(count) + " " + std::string(word);
+  if (count != 1) out += 's';
+  return out;
+}
+
+// Shows text inside '...' on one line: newlines and tabs escaped, long text cut.
+std::string Quote(std::string_view text) {
+  std::string out = "'";
+  size_t shown = 0;
+  for (char c : text) {
+    // Cut only before the first byte of a character, never inside a UTF-8 sequence.
+    if (shown >= kMaxQuotedBytes && (static_cast<unsigned char>(c) & 0xC0) != 0x80) {
+      out += "...";
+      break;
+    }
+    ++shown;
+    if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else {
+      out += c;
+    }
+  }
+  return out + "'";
+}
+
+std::string OneLine(std::string_view message) {
+  std::string out(message);
+  for (char& c : out) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  return out;
+}
+
+class TextPrinter {
+ public:
+  TextPrinter(const CheckReport& report, const ReportOptions& options)
+      : report_(report), options_(options) {}
+
+  std::string Print() {
+    for (const FileReport& file : report_.files) {
+      for (const Diagnostic& diagnostic : file.diagnostics) PrintDiagnostic(file, diagnostic);
+    }
+    out_ += Paint(kBold, SummaryLine(Summarize(report_)));
+    out_ += '\n';
+    return std::move(out_);
+  }
+
+ private:
+  std::string Paint(std::string_view colour, std::string_view text) const {
+    if (!options_.color) return std::string(text);
+    return std::string(colour) + std::string(text) + std::string(kReset);
+  }
+
+  std::string PathOf(const SourceFile* file) const {
+    return file ? DisplayPath(file->Name(), options_.base_directory) : "<unknown>";
+  }
+
+  static std::string_view SeverityColour(Severity severity) {
+    switch (severity) {
+      case Severity::kError:
+        return kRed;
+      case Severity::kWarning:
+        return kMagenta;
+      case Severity::kNote:
+        return kCyan;
+    }
+    return kRed;
+  }
+
+  // "path:line:col: severity: message" (or "path: ..." without a range).
+  void PrintHeader(const std::optional<ResolvedRange>& where, const SourceFile* fallback,
+                   Severity severity, std::string_view message, std::string_view rule_id) {
+    std::string location;
+    if (where) {
+      location = PathOf(where->file) + ":" + std::to_string(where->start.line) + ":" +
+                 std::to_string(where->start.column) + ":";
+    } else if (fallback) {
+      location = PathOf(fallback) + ":";
+    }
+    if (!location.empty()) out_ += Paint(kBold, location) + " ";
+    out_ += Paint(SeverityColour(severity), std::string(SeverityName(severity)) + ":");
+    // One diagnostic is one line for tools that parse clang's format.
+    std::string text = " " + OneLine(message);
+    if (!rule_id.empty()) text += " [" + std::string(rule_id) + "]";
+    out_ += Paint(kBold, text);
+    out_ += '\n';
+  }
+
+  static std::string Gutter(uint32_t line) {
+    std::string number = std::to_string(line);
+    return std::string(number.size() < 5 ? 5 - number.size() : 0, ' ') + number + " | ";
+  }
+
+  // Spaces (tabs kept) that reach byte column `column` of `line`.
+  static std::string PadTo(std::string_view line, uint32_t column) {
+    std::string pad;
+    const size_t limit = std::min<size_t>(column - 1, line.size());
+    for (size_t i = 0; i < limit; ++i) {
+      const auto byte = static_cast<unsigned char>(line[i]);
+      if (byte == '\t') {
+        pad += '\t';
+      } else if ((byte & 0xC0) != 0x80) {
+        pad += ' ';
+      }
+    }
+    return pad;
+  }
+
+  // Control bytes could move the cursor or recolour a terminal: show them as spaces.
+  static std::string Printable(std::string_view line) {
+    std::string out(line);
+    for (char& c : out) {
+      const auto byte = static_cast<unsigned char>(c);
+      if ((byte < 0x20 && byte != '\t') || byte == 0x7F) c = ' ';
+    }
+    return out;
+  }
+
+  // The source line, the caret line and, for an insertion on that line, the text
+  // to insert under it. Returns the fix-it that was shown as an insertion line.
+  const FixIt* PrintSnippet(const ResolvedRange& where, const std::vector<FixIt>& fixes) {
+    const std::string_view line = where.file->LineText(where.start.line);
+    const std::string blank_gutter(Gutter(where.start.line).size() - 2, ' ');
+    out_ += Gutter(where.start.line) + Printable(line) + '\n';
+
+    // A range over several lines is underlined to the end of its first line.
+    const uint32_t line_end_column = static_cast<uint32_t>(line.size()) + 1;
+    const uint32_t end_column =
+        where.end.line == where.start.line ? where.end.column : line_end_column;
+    const uint32_t start_index = std::min(where.start.column - 1, line_end_column - 1);
+    const uint32_t end_index = std::max(std::min(end_column - 1, line_end_column - 1), start_index);
+    const uint32_t width = CountCodePoints(line.substr(start_index, end_index - start_index));
+    std::string marks = "^";
+    if (width > 1) marks += std::string(width - 1, '~');
+    out_ += blank_gutter + "| " + PadTo(line, where.start.column) + Paint(kGreen, marks) + '\n';
+
+    for (const FixIt& fix : fixes) {
+      auto fix_where = Resolve(report_.sources, fix.range);
+      if (!fix_where || fix_where->file != where.file ||
+          fix_where->start.line != where.start.line ||
+          fix_where->begin_offset != fix_where->end_offset ||
+          fix.replacement.find_first_of("\r\n") != std::string::npos) {
+        continue;
+      }
+      out_ += blank_gutter + "| " + PadTo(line, fix_where->start.column) +
+              Paint(kGreen, Printable(fix.replacement)) + '\n';
+      return &fix;
+    }
+    return nullptr;
+  }
+
+  void PrintFixIt(const FixIt& fix, const std::optional<ResolvedRange>& primary) {
+    auto where = Resolve(report_.sources, fix.range);
+    if (!where) return;
+    const std::string_view old_text =
+        where->file->Text().substr(where->begin_offset, where->end_offset - where->begin_offset);
+    std::string line = "  fix-it: ";
+    if (old_text.empty()) {
+      line += "insert " + Quote(fix.replacement);
+    } else if (fix.replacement.empty()) {
+      line += "remove " + Quote(old_text);
+    } else {
+      line += "replace " + Quote(old_text) + " with " + Quote(fix.replacement);
+    }
+    // Say where when the fix is not on the line shown above it.
+    if (!primary || primary->file != where->file || primary->start.line != where->start.line ||
+        old_text.empty()) {
+      line += " at ";
+      if (!primary || primary->file != where->file) line += PathOf(where->file) + ":";
+      line += std::to_string(where->start.line) + ":" + std::to_string(where->start.column);
+    }
+    if (fix.safety == FixSafety::kSuggestion) line += " (suggestion)";
+    out_ += line + '\n';
+  }
+
+  void PrintDiagnostic(const FileReport& file, const Diagnostic& diagnostic) {
+    const auto where = Resolve(report_.sources, diagnostic.range);
+    PrintHeader(where, file.file, diagnostic.severity, diagnostic.message, diagnostic.rule_id);
+    const FixIt* shown = where ? PrintSnippet(*where, diagnostic.fixes) : nullptr;
+    for (const FixIt& fix : diagnostic.fixes) {
+      if (&fix != shown) PrintFixIt(fix, where);
+    }
+    for (const DiagnosticNote& note : diagnostic.notes) {
+      const auto note_where = Resolve(report_.sources, note.range);
+      PrintHeader(note_where, nullptr, Severity::kNote, note.message, "");
+      if (note_where) PrintSnippet(*note_where, {});
+    }
+  }
+
+  const CheckReport& report_;
+  const ReportOptions& options_;
+  std::string out_;
+};
+
+}  // namespace
+
+std::string SummaryLine(const ReportSummary& summary) {
+  std::string line = Plural(summary.errors, "error") + ", " + Plural(summary.warnings, "warning");
+  if (summary.notes > 0) line += ", " + Plural(summary.notes, "note");
+  line += " in " + Plural(summary.files_with_problems, "file") + " (" +
+          Plural(summary.files_checked, "file") + " checked)";
+  return line;
+}
+
+std::string FormatText(const CheckReport& report, const ReportOptions& options) {
+  return TextPrinter(report, options).Print();
+}
+
+}  // namespace shaderport

@@ -1,0 +1,235 @@
+#include "validate/glslang_validator.h"
+
+#include <map>
+#include <memory>
+#include <optional>
+
+#include "base/limits.h"
+#include "glsl/lex/lexer.h"
+#include "validate/glslang_rules.h"
+#include "validate/user_code_scan.h"
+
+namespace shaderport::validate {
+namespace {
+
+std::string InternalPartName(size_t index) { return "p" + std::to_string(index); }
+
+// A part's text as a SourceFile plus its tokens, built when first needed.
+struct PartView {
+  std::unique_ptr<SourceFile> file;
+  glsl::LexedFile lexed;
+};
+
+class Mapper {
+ public:
+  explicit Mapper(const ValidationRequest& request)
+      : request_(request), views_(request.parts.size()) {
+    for (size_t i = 0; i < request.parts.size(); ++i) {
+      if (request.parts[i].kind == PartKind::kUser) last_user_ = static_cast<int>(i);
+    }
+  }
+
+  const PartView& View(int index) {
+    std::optional<PartView>& view = views_[static_cast<size_t>(index)];
+    if (!view) {
+      const ShaderPart& part = request_.parts[static_cast<size_t>(index)];
+      view.emplace();
+      view->file = std::make_unique<SourceFile>(part.file, part.name, std::string(part.text),
+                                                part.kind == PartKind::kGenerated);
+      view->lexed = glsl::Lex(*view->file);
+    }
+    return *view;
+  }
+
+  int PartIndex(std::string_view name) const {
+    for (size_t i = 0; i < request_.parts.size(); ++i) {
+      if (InternalPartName(i) == name) return static_cast<int>(i);
+    }
+    return -1;
+  }
+
+  bool UserCodeHasUnbalancedMacro() {
+    for (size_t i = 0; i < request_.parts.size(); ++i) {
+      if (request_.parts[i].kind != PartKind::kUser) continue;
+      if (HasUnbalancedMacroBody(View(static_cast<int>(i)).lexed)) return true;
+    }
+    return false;
+  }
+
+  Diagnostic Map(const MappedMessage& mapped) {
+    const GlslangMessage& message = mapped.message;
+    Diagnostic diagnostic;
+    diagnostic.severity = message.severity;
+    diagnostic.rule_id = std::string(ClassifyGlslangMessage(message));
+    diagnostic.message = TidyGlslangText(message);
+    if (mapped.part < 0) {
+      // Link errors have no location: they are about the user's code as a whole,
+      // or about its entry point (missing, or defined with another signature).
+      diagnostic.range = UserFileStart();
+      if (MentionsEntryPoint(message)) {
+        diagnostic.range = EntryPointInUserCode();
+        diagnostic.message = "no definition of " + request_.entry_point_signature +
+                             " (glslang: " + diagnostic.message + ")";
+      }
+      return diagnostic;
+    }
+    const ShaderPart& part = request_.parts[static_cast<size_t>(mapped.part)];
+    const PartView& view = View(mapped.part);
+    const SourceRange on_line = LocateOnLine(*view.file, view.lexed, message.line, message.token);
+    if (part.kind == PartKind::kUser) {
+      diagnostic.range = on_line;
+      return diagnostic;
+    }
+    if (message.severity != Severity::kError) {
+      // A warning about generated text is not the user's business, but not hidden either.
+      diagnostic.severity = Severity::kNote;
+    }
+    if (MentionsEntryPoint(message)) return EntryPointMismatch(std::move(diagnostic));
+    if (UserCodeIsUnfinished()) return IncompleteCode(std::move(diagnostic));
+    diagnostic.rule_id = "internal/generated-code";
+    diagnostic.range = part.file == kNoFile ? SourceRange{} : on_line;
+    diagnostic.message = "glslang reported an error in shaderport's generated " + part.name +
+                         " (line " + std::to_string(message.line) + "): " + diagnostic.message;
+    return diagnostic;
+  }
+
+ private:
+  SourceRange UserFileStart() const {
+    if (last_user_ < 0) return {};
+    return {request_.parts[static_cast<size_t>(last_user_)].file, 0, 0};
+  }
+
+  bool MentionsEntryPoint(const GlslangMessage& message) const {
+    const std::string& name = request_.entry_point;
+    return !name.empty() && (message.token == name || message.text.find(name) != std::string::npos);
+  }
+
+  bool UserCodeIsUnfinished() {
+    if (!unfinished_) {
+      OpenConstructs open;
+      for (size_t i = 0; i < request_.parts.size(); ++i) {
+        if (request_.parts[i].kind == PartKind::kUser) {
+          open += CountOpenConstructs(View(static_cast<int>(i)).lexed);
+        }
+      }
+      unfinished_ = open.Any();
+    }
+    return *unfinished_;
+  }
+
+  // The first definition or declaration of the entry point in user code, else the file.
+  SourceRange EntryPointInUserCode() {
+    for (int i = last_user_; i >= 0; --i) {
+      if (request_.parts[static_cast<size_t>(i)].kind != PartKind::kUser) continue;
+      const PartView& view = View(i);
+      const auto& tokens = view.lexed.tokens;
+      for (size_t k = 0; k + 1 < tokens.size(); ++k) {
+        if (tokens[k].kind == glsl::TokenKind::kIdentifier &&
+            tokens[k].text == request_.entry_point &&
+            tokens[k + 1].punct == glsl::Punct::kLeftParen) {
+          return {view.file->Id(), tokens[k].begin, tokens[k].end};
+        }
+      }
+    }
+    return UserFileStart();
+  }
+
+  Diagnostic EntryPointMismatch(Diagnostic diagnostic) {
+    diagnostic.rule_id = "glslang/entry-point-mismatch";
+    diagnostic.range = EntryPointInUserCode();
+    diagnostic.message = request_.entry_point + " must be declared as " +
+                         request_.entry_point_signature + " (glslang: " + diagnostic.message + ")";
+    return diagnostic;
+  }
+
+  Diagnostic IncompleteCode(Diagnostic diagnostic) {
+    diagnostic.rule_id = "glslang/incomplete-code";
+    SourceRange end = UserFileStart();
+    if (last_user_ >= 0) {
+      const auto size =
+          static_cast<uint32_t>(request_.parts[static_cast<size_t>(last_user_)].text.size());
+      end.begin = end.end = size;
+    }
+    diagnostic.range = end;
+    diagnostic.message =
+        "the code ends inside an unclosed brace, parenthesis or #if, so glslang reports an error "
+        "in the code that follows it (glslang: " +
+        diagnostic.message + ")";
+    return diagnostic;
+  }
+
+  const ValidationRequest& request_;
+  std::vector<std::optional<PartView>> views_;
+  int last_user_ = -1;
+  std::optional<bool> unfinished_;
+};
+
+void AppendMessages(std::string_view log, const Mapper& mapper, std::vector<MappedMessage>& out) {
+  for (GlslangMessage& message : ParseGlslangLog(log)) {
+    MappedMessage mapped;
+    mapped.part = message.part.empty() ? -1 : mapper.PartIndex(message.part);
+    mapped.message = std::move(message);
+    out.push_back(std::move(mapped));
+  }
+}
+
+// Errors in generated code after unfinished user code are all one problem: keep
+// the first as the diagnostic and the rest as its notes.
+void AddDiagnostic(Diagnostic diagnostic, DiagnosticList& out) {
+  if (diagnostic.rule_id == "glslang/incomplete-code") {
+    for (Diagnostic& previous : out) {
+      if (previous.rule_id == diagnostic.rule_id) {
+        previous.notes.push_back({SourceRange{}, diagnostic.message});
+        return;
+      }
+    }
+  }
+  if (out.size() >= limits::kMaxDiagnosticsPerFile) {
+    if (out.back().notes.empty() ||
+        out.back().notes.back().message != "further glslang messages were dropped") {
+      out.back().notes.push_back({SourceRange{}, "further glslang messages were dropped"});
+    }
+    return;
+  }
+  out.push_back(std::move(diagnostic));
+}
+
+}  // namespace
+
+ValidationResult ValidateWithGlslang(const ValidationRequest& request) {
+  ValidationResult result;
+  Mapper mapper(request);
+  std::vector<GlslangPart> parts;
+  for (size_t i = 0; i < request.parts.size(); ++i) {
+    parts.push_back({InternalPartName(i), request.parts[i].text});
+  }
+  const GlslangRun run =
+      mapper.UserCodeHasUnbalancedMacro()
+          ? RunGlslangIsolated(parts, request.stage, request.default_version, request.link)
+          : RunGlslang(parts, request.stage, request.default_version, request.link);
+  result.crashed = run.crashed || !run.ran;
+  result.compiled = run.compiled;
+  result.linked = run.linked;
+  if (result.crashed) {
+    Diagnostic diagnostic;
+    diagnostic.rule_id = run.crashed ? "glslang/crashed" : "internal/error";
+    diagnostic.message = run.crashed ? "glslang crashed or hung on this input; it was not validated"
+                                     : "glslang could not be started (no thread)";
+    for (auto it = request.parts.rbegin(); it != request.parts.rend(); ++it) {
+      if (it->kind == PartKind::kUser) {
+        diagnostic.range = {it->file, 0, 0};
+        break;
+      }
+    }
+    result.diagnostics.push_back(std::move(diagnostic));
+    return result;
+  }
+  AppendMessages(run.compile_log, mapper, result.messages);
+  AppendMessages(run.link_log, mapper, result.messages);
+  for (const MappedMessage& mapped : result.messages) {
+    AddDiagnostic(mapper.Map(mapped), result.diagnostics);
+  }
+  return result;
+}
+
+}  // namespace shaderport::validate

@@ -1,0 +1,179 @@
+// The site's header (uniforms, precision, sampler type per channel, HW_PERFORMANCE)
+// and main() follow shadertoy.com as documented in design notes §1c. Deliberate
+// differences, none of which changes what compiles:
+// - The entry-point prototype comes AFTER the user's code, not before it: with the
+//   user's `precision mediump float;` glslang otherwise reports a false "overloaded
+//   functions must have the same parameter precision qualifiers" (browsers accept it).
+// - Names the generated code uses are prefixed `shadertoy_`, so that a user macro
+//   such as `#define color ...` cannot rewrite the generated main().
+// - The output variable and the cube/sound uniforms are declared in the header, so
+//   that a user declaration clashing with them is reported on the user's line.
+#include "validate/shadertoy_contract.h"
+
+namespace shaderport::validate {
+namespace {
+
+constexpr std::string_view kUniforms =
+    "uniform vec3 iResolution;\n"
+    "uniform float iTime;\n"
+    "uniform float iChannelTime[4];\n"
+    "uniform vec4 iMouse;\n"
+    "uniform vec4 iDate;\n"
+    "uniform float iSampleRate;\n"
+    "uniform vec3 iChannelResolution[4];\n"
+    "uniform int iFrame;\n"
+    "uniform float iTimeDelta;\n"
+    "uniform float iFrameRate;\n";
+
+const char* SamplerName(ChannelType type) {
+  switch (type) {
+    case ChannelType::kCube:
+      return "samplerCube";
+    case ChannelType::k3D:
+      return "sampler3D";
+    case ChannelType::k2D:
+      break;
+  }
+  return "sampler2D";
+}
+
+}  // namespace
+
+std::optional<PassType> PassTypeFromName(std::string_view name) {
+  if (name == "image") return PassType::kImage;
+  if (name == "buffer") return PassType::kBuffer;
+  if (name == "cube") return PassType::kCube;
+  if (name == "sound") return PassType::kSound;
+  return std::nullopt;
+}
+
+const char* PassTypeName(PassType type) {
+  switch (type) {
+    case PassType::kBuffer:
+      return "buffer";
+    case PassType::kCube:
+      return "cube";
+    case PassType::kSound:
+      return "sound";
+    case PassType::kImage:
+      break;
+  }
+  return "image";
+}
+
+ChannelType ChannelTypeFromCtype(std::string_view ctype) {
+  if (ctype == "cubemap") return ChannelType::kCube;
+  if (ctype == "volume") return ChannelType::k3D;
+  return ChannelType::k2D;
+}
+
+std::string_view EntryPointName(PassType type) {
+  if (type == PassType::kCube) return "mainCubemap";
+  if (type == PassType::kSound) return "mainSound";
+  return "mainImage";
+}
+
+std::string_view EntryPointSignature(PassType type) {
+  if (type == PassType::kCube) {
+    return "void mainCubemap(out vec4 fragColor, in vec2 fragCoord, in vec3 rayOri, in vec3 "
+           "rayDir)";
+  }
+  if (type == PassType::kSound) return "vec2 mainSound(int samp, float time)";
+  return "void mainImage(out vec4 fragColor, in vec2 fragCoord)";
+}
+
+std::string ShaderToyHeader(PassType type, const ChannelTypes& channels) {
+  std::string header =
+      "#version 300 es\n"
+      "#ifdef GL_ES\n"
+      "precision highp float;\n"
+      "precision highp int;\n"
+      "precision mediump sampler3D;\n"
+      "#endif\n";
+  header += kUniforms;
+  for (size_t i = 0; i < channels.size(); ++i) {
+    header += "uniform " + std::string(SamplerName(channels[i])) + " iChannel" + std::to_string(i) +
+              ";\n";
+  }
+  if (type == PassType::kCube) header += "uniform vec4 unViewport;\nuniform vec3 unCorners[5];\n";
+  if (type == PassType::kSound)
+    header += "uniform float iTimeOffset;\nuniform int iSampleOffset;\n";
+  header += "out vec4 shadertoy_out_color;\n";
+  header += "#define HW_PERFORMANCE 1\n";
+  return header;
+}
+
+std::string ShaderToyEpilogue(PassType type) {
+  switch (type) {
+    case PassType::kSound:
+      return "vec2 mainSound(int samp, float time);\n"
+             "void main() {\n"
+             "  float shadertoy_t = iTimeOffset + ((gl_FragCoord.x - 0.5) + "
+             "(gl_FragCoord.y - 0.5) * 512.0) / iSampleRate;\n"
+             "  int shadertoy_s = iSampleOffset + int(gl_FragCoord.y - 0.2) * 512 + "
+             "int(gl_FragCoord.x - 0.2);\n"
+             "  vec2 shadertoy_y = mainSound(shadertoy_s, shadertoy_t);\n"
+             "  vec2 shadertoy_v = floor((0.5 + 0.5 * shadertoy_y) * 65536.0);\n"
+             "  vec2 shadertoy_vl = mod(shadertoy_v, 256.0) / 255.0;\n"
+             "  vec2 shadertoy_vh = floor(shadertoy_v / 256.0) / 255.0;\n"
+             "  shadertoy_out_color = vec4(shadertoy_vl.x, shadertoy_vh.x, shadertoy_vl.y, "
+             "shadertoy_vh.y);\n"
+             "}\n";
+    case PassType::kCube:
+      return "void mainCubemap(out vec4 c, in vec2 f, in vec3 ro, in vec3 rd);\n"
+             "void main() {\n"
+             "  vec4 shadertoy_color = vec4(1e20);\n"
+             "  vec3 shadertoy_ro = unCorners[4];\n"
+             "  vec2 shadertoy_uv = (gl_FragCoord.xy - unViewport.xy) / unViewport.zw;\n"
+             "  vec3 shadertoy_rd = normalize(mix(mix(unCorners[0], unCorners[1], shadertoy_uv.x), "
+             "mix(unCorners[3], unCorners[2], shadertoy_uv.x), shadertoy_uv.y) - shadertoy_ro);\n"
+             "  mainCubemap(shadertoy_color, gl_FragCoord.xy - unViewport.xy, shadertoy_ro, "
+             "shadertoy_rd);\n"
+             "  shadertoy_out_color = shadertoy_color;\n"
+             "}\n";
+    case PassType::kImage:
+    case PassType::kBuffer:
+      break;
+  }
+  std::string epilogue =
+      "void mainImage(out vec4 c, in vec2 f);\n"
+      "void main() {\n"
+      "  vec4 shadertoy_color = vec4(1e20);\n"
+      "  mainImage(shadertoy_color, gl_FragCoord.xy);\n";
+  // Image forces alpha to 1; buffers keep what the shader wrote.
+  epilogue += type == PassType::kImage ? "  shadertoy_out_color = vec4(shadertoy_color.xyz, 1.0);\n"
+                                       : "  shadertoy_out_color = shadertoy_color;\n";
+  epilogue += "}\n";
+  return epilogue;
+}
+
+ValidationRequest ComposeShaderToyRequest(SourceManager& sources, PassType type,
+                                          const ChannelTypes& channels, const SourceFile* common,
+                                          const SourceFile& pass) {
+  ValidationRequest request;
+  request.stage = Stage::kFragment;
+  request.default_version = 300;
+  request.link = true;
+  request.entry_point = std::string(EntryPointName(type));
+  request.entry_point_signature = std::string(EntryPointSignature(type));
+  auto add_generated = [&](std::string name, std::string text) {
+    const SourceFile& file = sources.Add(name, std::move(text), /*synthetic=*/true);
+    request.parts.push_back({std::move(name), file.Text(), file.Id(), PartKind::kGenerated});
+  };
+  // Strings are concatenated: a part whose last line has no newline would run into
+  // the next part's first line, so a newline is added between them.
+  auto add_user = [&](const SourceFile& file) {
+    request.parts.push_back({file.Name(), file.Text(), file.Id(), PartKind::kUser});
+    const std::string_view text = file.Text();
+    if (!text.empty() && text.back() != '\n' && text.back() != '\r') {
+      add_generated("shadertoy-separator", "\n");
+    }
+  };
+  add_generated("shadertoy-header", ShaderToyHeader(type, channels));
+  if (common != nullptr) add_user(*common);
+  add_user(pass);
+  add_generated("shadertoy-epilogue", ShaderToyEpilogue(type));
+  return request;
+}
+
+}  // namespace shaderport::validate

@@ -1,0 +1,40 @@
+// Token-level facts about user code that glslang's log does not give: columns,
+// unfinished constructs, and inputs known to crash glslang.
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+
+#include "glsl/lex/lexer.h"
+#include "source/source_file.h"
+
+namespace shaderport::validate {
+
+// Where glslang's message about `token` on 1-based `line` points: the first
+// identifier or punctuator token on that line spelled `token`; when there is none
+// (glslang quotes words like 'assign' or '', or the token came from a macro), the
+// line from its first to its last non-blank byte.
+SourceRange LocateOnLine(const SourceFile& file, const glsl::LexedFile& lexed, uint32_t line,
+                         std::string_view token);
+
+// Brace and #if nesting left open at the end of one file.
+struct OpenConstructs {
+  int32_t braces = 0;
+  int32_t parens = 0;
+  int32_t conditionals = 0;
+  bool Any() const { return braces > 0 || parens > 0 || conditionals > 0; }
+  OpenConstructs& operator+=(const OpenConstructs& o) {
+    braces += o.braces;
+    parens += o.parens;
+    conditionals += o.conditionals;
+    return *this;
+  }
+};
+OpenConstructs CountOpenConstructs(const glsl::LexedFile& lexed);
+
+// True when a #define body opens more parentheses than it closes. An incomplete
+// macro invocation inside a macro expansion can make glslang 12 recurse forever
+// (WebGL CTS macro-expansion-tricky.html); such input is validated out of process.
+bool HasUnbalancedMacroBody(const glsl::LexedFile& lexed);
+
+}  // namespace shaderport::validate

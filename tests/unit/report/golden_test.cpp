@@ -1,0 +1,73 @@
+// Every output format on the sample report, compared with tests/golden/report/.
+// SHADERPORT_UPDATE_GOLDENS=1 rewrites the files instead of comparing.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "report/output_format.h"
+#include "report_sample.h"
+
+namespace shaderport {
+namespace {
+
+std::string GoldenPath(const std::string& name) {
+  return std::string(SHADERPORT_SOURCE_DIR) + "/tests/golden/report/" + name;
+}
+
+void ExpectGolden(const std::string& name, const std::string& actual) {
+  const char* update = std::getenv("SHADERPORT_UPDATE_GOLDENS");
+  if (update != nullptr && std::string(update) == "1") {
+    std::ofstream(GoldenPath(name), std::ios::binary) << actual;
+    return;
+  }
+  std::ifstream in(GoldenPath(name), std::ios::binary);
+  ASSERT_TRUE(in) << "missing golden " << GoldenPath(name)
+                  << " (run with SHADERPORT_UPDATE_GOLDENS=1)";
+  std::stringstream expected;
+  expected << in.rdbuf();
+  EXPECT_EQ(expected.str(), actual) << "golden " << name << " differs";
+}
+
+TEST(ReportGolden, Text) {
+  testing::ReportSample sample;
+  ExpectGolden("sample.txt", FormatReport(sample.report, OutputFormat::kText, sample.options));
+}
+
+TEST(ReportGolden, TextInColour) {
+  testing::ReportSample sample;
+  sample.options.color = true;
+  ExpectGolden("sample.color.txt",
+               FormatReport(sample.report, OutputFormat::kText, sample.options));
+}
+
+TEST(ReportGolden, Json) {
+  testing::ReportSample sample;
+  ExpectGolden("sample.json", FormatReport(sample.report, OutputFormat::kJson, sample.options));
+}
+
+TEST(ReportGolden, Sarif) {
+  testing::ReportSample sample;
+  ExpectGolden("sample.sarif", FormatReport(sample.report, OutputFormat::kSarif, sample.options));
+}
+
+TEST(ReportGolden, Github) {
+  testing::ReportSample sample;
+  ExpectGolden("sample.github.txt",
+               FormatReport(sample.report, OutputFormat::kGithub, sample.options));
+}
+
+TEST(ReportGolden, OutputIsDeterministic) {
+  testing::ReportSample first;
+  testing::ReportSample second;
+  for (OutputFormat format :
+       {OutputFormat::kText, OutputFormat::kJson, OutputFormat::kSarif, OutputFormat::kGithub}) {
+    EXPECT_EQ(FormatReport(first.report, format, first.options),
+              FormatReport(second.report, format, second.options));
+  }
+}
+
+}  // namespace
+}  // namespace shaderport
