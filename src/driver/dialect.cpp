@@ -20,9 +20,7 @@ std::string_view DialectName(Dialect dialect) {
   return "webgl1";
 }
 
-std::string_view StageName(Stage stage) {
-  return stage == Stage::kVertex ? "vertex" : "fragment";
-}
+std::string_view StageName(Stage stage) { return stage == Stage::kVertex ? "vertex" : "fragment"; }
 
 std::optional<Dialect> ParseDialect(std::string_view name) {
   if (name == "shadertoy") return Dialect::kShaderToy;

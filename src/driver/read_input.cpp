@@ -32,9 +32,9 @@ bool LooksBinary(std::string_view text) {
 
 InputText ClassifyInputText(std::string text) {
   if (text.size() > limits::kMaxFileBytes) {
-    return Reject("input/too-large", "file is larger than the " +
-                                         std::to_string(limits::kMaxFileBytes >> 20) +
-                                         " MiB limit");
+    return Reject(
+        "input/too-large",
+        "file is larger than the " + std::to_string(limits::kMaxFileBytes >> 20) + " MiB limit");
   }
   if (text.empty()) return Reject("input/empty", "file is empty");
   if (LooksBinary(text)) {
@@ -48,10 +48,9 @@ InputText ReadInputFile(const std::filesystem::path& path) {
   const auto size = std::filesystem::file_size(path, error);
   if (error) return Reject("input/unreadable", "cannot read file: " + error.message());
   if (size > limits::kMaxFileBytes) {
-    return Reject("input/too-large", "file is " + std::to_string(size >> 20) +
-                                         " MiB, larger than the " +
-                                         std::to_string(limits::kMaxFileBytes >> 20) +
-                                         " MiB limit");
+    return Reject("input/too-large",
+                  "file is " + std::to_string(size >> 20) + " MiB, larger than the " +
+                      std::to_string(limits::kMaxFileBytes >> 20) + " MiB limit");
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) return Reject("input/unreadable", "cannot open file");

@@ -30,7 +30,9 @@ Json DiagnosticToJson(const CheckReport& report, const ReportOptions& options,
   }
   Json fixes = Json::array();
   for (const FixIt& fix : diagnostic.fixes) {
-    fixes.push_back({{"location", Location(report, options, fix.range)},
+    Json location = Location(report, options, fix.range);
+    if (location.is_null()) continue;  // an edit must say where: drop a broken one
+    fixes.push_back({{"location", std::move(location)},
                      {"replacement", fix.replacement},
                      {"safety", fix.safety == FixSafety::kSafe ? "safe" : "suggestion"}});
   }

@@ -3,24 +3,34 @@
 #pragma once
 
 #include <deque>
+#include <mutex>
 #include <string>
 
 #include "source/source_file.h"
 
 namespace shaderport {
 
+// Thread-safe: files of a parallel run are added from several threads.
 class SourceManager {
  public:
   // Files are never moved once added: references stay valid.
   const SourceFile& Add(std::string name, std::string text, bool synthetic = false) {
+    const std::lock_guard lock(mutex_);
     files_.emplace_back(static_cast<FileId>(files_.size()), std::move(name), std::move(text),
                         synthetic);
     return files_.back();
   }
-  const SourceFile& Get(FileId id) const { return files_.at(id); }
-  size_t Size() const { return files_.size(); }
+  const SourceFile& Get(FileId id) const {
+    const std::lock_guard lock(mutex_);
+    return files_.at(id);
+  }
+  size_t Size() const {
+    const std::lock_guard lock(mutex_);
+    return files_.size();
+  }
 
  private:
+  mutable std::mutex mutex_;
   std::deque<SourceFile> files_;
 };
 

@@ -13,11 +13,13 @@ bool Contains(std::string_view text, std::string_view part) {
 // First match wins, so more specific phrases come before general ones.
 constexpr auto kRules = std::to_array<std::pair<std::string_view, std::string_view>>({
     {"undeclared identifier", "glslang/undeclared-identifier"},
+    {"can't find function", "glslang/undeclared-identifier"},
     {"no matching overloaded function", "glslang/no-matching-overload"},
     {"wrong operand types", "glslang/wrong-operand-types"},
     {"cannot convert", "glslang/type-mismatch"},
     {"default precision qualifier", "glslang/missing-precision"},
     {"non-constant global initializer", "glslang/non-constant-global-initializer"},
+    {"non-constant initializer", "glslang/constant-expression-required"},
     {"Reserved word", "glslang/reserved-word"},
     {"reserved word", "glslang/reserved-word"},
     {"are reserved", "glslang/reserved-word"},             // identifiers starting with "gl_"
@@ -29,6 +31,7 @@ constexpr auto kRules = std::to_array<std::pair<std::string_view, std::string_vi
     {"redeclaration", "glslang/redefinition"},
     {"redeclared", "glslang/redefinition"},
     {"already been declared", "glslang/redefinition"},
+    {"already has a body", "glslang/redefinition"},
     {"constant expression required", "glslang/constant-expression-required"},
     {"must be constant", "glslang/constant-expression-required"},
     {"must be a constant", "glslang/constant-expression-required"},
@@ -79,7 +82,9 @@ void TidyQuotedTypes(std::string& text) {
 }  // namespace
 
 std::string_view ClassifyGlslangMessage(const GlslangMessage& message) {
-  const std::string_view text = message.text;
+  // glslang sometimes puts the subject in the quoted token and only a generic
+  // reason in the text ('non-constant global initializer (...)' : not supported...).
+  const std::string text = message.token + ": " + message.text;
   for (const auto& [phrase, rule] : kRules) {
     if (Contains(text, phrase)) return rule;
   }

@@ -4,8 +4,11 @@
 // - The entry-point prototype comes AFTER the user's code, not before it: with the
 //   user's `precision mediump float;` glslang otherwise reports a false "overloaded
 //   functions must have the same parameter precision qualifiers" (browsers accept it).
-// - Names the generated code uses are prefixed `shadertoy_`, so that a user macro
-//   such as `#define color ...` cannot rewrite the generated main().
+// - Names the generated code uses are prefixed `shadertoy_` and prototypes have no
+//   parameter names, so that a user macro such as `#define color ...` cannot rewrite
+//   the generated main(). When the user defines the entry point itself as a macro
+//   (`#define mainImage(c, p) ...`, seen in the corpus), the prototype is skipped and
+//   main() calls the macro, as it does on the site where the prototype comes first.
 // - The output variable and the cube/sound uniforms are declared in the header, so
 //   that a user declaration clashing with them is reported on the user's line.
 #include "validate/shadertoy_contract.h"
@@ -106,7 +109,9 @@ std::string ShaderToyHeader(PassType type, const ChannelTypes& channels) {
 std::string ShaderToyEpilogue(PassType type) {
   switch (type) {
     case PassType::kSound:
-      return "vec2 mainSound(int samp, float time);\n"
+      return "#ifndef mainSound\n"
+             "vec2 mainSound(int, float);\n"
+             "#endif\n"
              "void main() {\n"
              "  float shadertoy_t = iTimeOffset + ((gl_FragCoord.x - 0.5) + "
              "(gl_FragCoord.y - 0.5) * 512.0) / iSampleRate;\n"
@@ -120,7 +125,9 @@ std::string ShaderToyEpilogue(PassType type) {
              "shadertoy_vh.y);\n"
              "}\n";
     case PassType::kCube:
-      return "void mainCubemap(out vec4 c, in vec2 f, in vec3 ro, in vec3 rd);\n"
+      return "#ifndef mainCubemap\n"
+             "void mainCubemap(out vec4, in vec2, in vec3, in vec3);\n"
+             "#endif\n"
              "void main() {\n"
              "  vec4 shadertoy_color = vec4(1e20);\n"
              "  vec3 shadertoy_ro = unCorners[4];\n"
@@ -136,7 +143,9 @@ std::string ShaderToyEpilogue(PassType type) {
       break;
   }
   std::string epilogue =
-      "void mainImage(out vec4 c, in vec2 f);\n"
+      "#ifndef mainImage\n"
+      "void mainImage(out vec4, in vec2);\n"
+      "#endif\n"
       "void main() {\n"
       "  vec4 shadertoy_color = vec4(1e20);\n"
       "  mainImage(shadertoy_color, gl_FragCoord.xy);\n";

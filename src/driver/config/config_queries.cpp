@@ -19,8 +19,8 @@ std::string_view RuleLevelName(RuleLevel level) {
 }
 
 std::optional<RuleLevel> ParseRuleLevel(std::string_view name) {
-  for (RuleLevel level : {RuleLevel::kOff, RuleLevel::kNote, RuleLevel::kWarning,
-                          RuleLevel::kError}) {
+  for (RuleLevel level :
+       {RuleLevel::kOff, RuleLevel::kNote, RuleLevel::kWarning, RuleLevel::kError}) {
     if (name == RuleLevelName(level)) return level;
   }
   return std::nullopt;

@@ -53,8 +53,8 @@ size_t ParseParams(PpState& state, const SourceFile& file, std::span<const Token
 bool CheckName(PpState& state, std::string_view name, SourceRange at, bool undef) {
   const char* verb = undef ? "undefined" : "defined";
   if (const Macro* m = state.Find(name); m && m->predefined) {
-    state.Report(Severity::kError, "preprocessor/predefined-macro",
-                 at, "predefined macro '" + std::string(name) + "' cannot be " + verb);
+    state.Report(Severity::kError, "preprocessor/predefined-macro", at,
+                 "predefined macro '" + std::string(name) + "' cannot be " + verb);
     return false;
   }
   if (name == "defined" || name.starts_with("GL_")) {

@@ -80,8 +80,8 @@ class Expander {
       if (!state_.reported_macro_depth) {
         state_.reported_macro_depth = true;
         state_.Report(Severity::kError, "preprocessor/macro-too-deep", t.token.expansion,
-                      "macro expansion nested more than " +
-                          std::to_string(limits::kMaxMacroDepth) + " levels deep");
+                      "macro expansion nested more than " + std::to_string(limits::kMaxMacroDepth) +
+                          " levels deep");
       }
       out_.push_back(std::move(t));
       return;
@@ -135,6 +135,9 @@ class Expander {
     int nesting = 1;
     ExpToken t;
     while (true) {
+      if (state_.expanded_tokens > limits::kMaxExpandedTokens) {
+        ReportTooLarge(Cover(name.token.expansion, open.token.expansion));
+      }
       if (!Next(&t)) {
         state_.Report(Severity::kError, "preprocessor/unterminated-macro-call",
                       Cover(name.token.expansion, open.token.expansion),
@@ -225,12 +228,8 @@ class Expander {
       produced[0].token.at_line_start = name.token.at_line_start;
     }
     state_.expanded_tokens += produced.size() + 1;
-    if (state_.expanded_tokens > limits::kMaxExpandedTokens) {
-      state_.expansion_exhausted = true;
-      state_.Report(Severity::kError, "preprocessor/expansion-too-large", expansion,
-                    "macro expansion produced more than " +
-                        std::to_string(limits::kMaxExpandedTokens) +
-                        " tokens; no further macros are expanded");
+    if (state_.expanded_tokens > limits::kMaxExpandedTokens || state_.expansion_exhausted) {
+      ReportTooLarge(expansion);
       out_.push_back(name);
       return;
     }
@@ -238,9 +237,27 @@ class Expander {
     stack_.push_back({std::move(produced), 0, &macro});
   }
 
+  void ReportTooLarge(SourceRange at) {
+    if (state_.expansion_exhausted) return;
+    state_.expansion_exhausted = true;
+    state_.Report(Severity::kError, "preprocessor/expansion-too-large", at,
+                  "macro expansion produced more than " +
+                      std::to_string(limits::kMaxExpandedTokens) +
+                      " tokens; no further macros are expanded");
+  }
+
   std::vector<ExpToken> ExpandArgument(const std::vector<ExpToken>& arg) {
-    if (depth_ + stack_.size() + 1 > limits::kMaxMacroDepth) return arg;  // rescanned later
-    return ExpandMacros(state_, arg, in_if_, depth_ + static_cast<uint32_t>(stack_.size()) + 1);
+    // Each nested pre-expansion holds a copy of its argument: cap the nesting (real code
+    // nests a few calls deep) and charge the copy, so memory stays bounded. Arguments past
+    // the cap are substituted as written and expanded when the body is rescanned.
+    if (arg_nesting_ >= kMaxArgumentNesting ||
+        depth_ + stack_.size() + 1 > limits::kMaxMacroDepth) {
+      return arg;
+    }
+    state_.expanded_tokens += arg.size();
+    Expander nested(state_, in_if_, depth_ + static_cast<uint32_t>(stack_.size()) + 1);
+    nested.arg_nesting_ = arg_nesting_ + 1;
+    return nested.Run(arg);
   }
 
   std::vector<ExpToken> ApplyPastes(std::vector<Piece> pieces, SourceRange expansion) {
@@ -285,12 +302,11 @@ class Expander {
     v.token.kind = TokenKind::kIntLiteral;
     v.token.punct = Punct::kNone;
     v.token.in_macro_body = true;
-    int value = 0;
+    int64_t value = 0;
     if (builtin == BuiltinMacro::kLine) {
       const SourceRange at = name.token.expansion;
       const bool here = state_.file && at.file == state_.file->Id();
-      value = here ? static_cast<int>(state_.file->LocationOf(at.begin).line) + state_.line_delta
-                   : 0;
+      value = here ? state_.file->LocationOf(at.begin).line + state_.line_delta : 0;
     } else if (builtin == BuiltinMacro::kFile) {
       value = state_.source_number;
     } else {
@@ -300,9 +316,12 @@ class Expander {
     return v;
   }
 
+  static constexpr uint32_t kMaxArgumentNesting = 32;
+
   PpState& state_;
   bool in_if_;
   uint32_t depth_;
+  uint32_t arg_nesting_ = 0;
   std::vector<Context> stack_;
   std::vector<ExpToken> out_;
 };

@@ -14,8 +14,8 @@ namespace shaderport::glsl {
 struct ConditionalGroup {
   SourceRange directive;  // the opening #if line, for "unterminated" errors
   bool parent_active = true;
-  bool taken = false;     // an earlier branch was chosen (or the group is skipped as a whole)
-  bool active = false;    // the current branch is being compiled
+  bool taken = false;   // an earlier branch was chosen (or the group is skipped as a whole)
+  bool active = false;  // the current branch is being compiled
   bool else_seen = false;
 };
 
@@ -39,6 +39,7 @@ class PpDriver {
   void Version(std::span<const Token> args, SourceRange range);
   void Extension(std::span<const Token> args, SourceRange range);
   void Line(std::span<const Token> args, SourceRange range);
+  void CheckIdentifierLength(const Token& t);
   SourceRange RangeOf(const Token& t) const { return {file_->Id(), t.begin, t.end}; }
 
   PpState state_;
@@ -46,10 +47,11 @@ class PpDriver {
   size_t file_index_ = 0;
   std::vector<const Token*> text_;  // active text tokens since the last directive
   std::vector<ConditionalGroup> groups_;
-  uint32_t skip_begin_ = 0;         // start of the inactive region being read
-  bool seen_token_ = false;         // #version must come before every other token
-  bool seen_code_ = false;          // #extension should come before the code
+  uint32_t skip_begin_ = 0;  // start of the inactive region being read
+  bool seen_token_ = false;  // #version must come before every other token
+  bool seen_code_ = false;   // #extension should come before the code
   bool reported_depth_ = false;
+  uint32_t max_identifier_length_ = 0;
 };
 
 }  // namespace shaderport::glsl

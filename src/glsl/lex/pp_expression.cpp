@@ -140,9 +140,11 @@ class Evaluator {
     int64_t v = Multiplicative(eval);
     while (true) {
       if (Accept(Punct::kPlus)) {
-        v = static_cast<int64_t>(static_cast<uint64_t>(v) + static_cast<uint64_t>(Multiplicative(eval)));
+        v = static_cast<int64_t>(static_cast<uint64_t>(v) +
+                                 static_cast<uint64_t>(Multiplicative(eval)));
       } else if (Accept(Punct::kMinus)) {
-        v = static_cast<int64_t>(static_cast<uint64_t>(v) - static_cast<uint64_t>(Multiplicative(eval)));
+        v = static_cast<int64_t>(static_cast<uint64_t>(v) -
+                                 static_cast<uint64_t>(Multiplicative(eval)));
       } else {
         return v;
       }

@@ -44,12 +44,12 @@ struct ExpToken {
 struct PpState {
   PreprocessResult& result;
   MacroTable macros;
-  size_t expanded_tokens = 0;     // budget: tokens made by macro expansion so far
+  size_t expanded_tokens = 0;  // budget: tokens made by macro expansion so far
   bool expansion_exhausted = false;
   bool reported_macro_depth = false;
   // For __LINE__ and __FILE__: #line changes them.
   const SourceFile* file = nullptr;
-  int line_delta = 0;  // added to the physical line
+  int64_t line_delta = 0;  // added to the physical line
   int source_number = 0;
 
   explicit PpState(PreprocessResult& r) : result(r) {}

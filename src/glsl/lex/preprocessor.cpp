@@ -8,7 +8,8 @@
 
 namespace shaderport::glsl {
 
-PpDriver::PpDriver(PreprocessResult& result, const PreprocessOptions& options) : state_(result) {
+PpDriver::PpDriver(PreprocessResult& result, const PreprocessOptions& options)
+    : state_(result), max_identifier_length_(options.max_identifier_length) {
   AddPredefinedMacros(state_, options.predefined);
 }
 
@@ -25,7 +26,10 @@ void PpDriver::RunFile(const SourceFile& file, size_t index) {
   size_t i = 0;
   while (tokens[i].kind != TokenKind::kEndOfFile) {
     if (tokens[i].kind != TokenKind::kHash) {
-      if (Active()) text_.push_back(&tokens[i]);
+      if (Active()) {
+        text_.push_back(&tokens[i]);
+        CheckIdentifierLength(tokens[i]);
+      }
       seen_token_ = true;
       ++i;
       continue;
@@ -52,6 +56,17 @@ void PpDriver::RunFile(const SourceFile& file, size_t index) {
   AddLexDiagnostics(lexed, first_region);
 }
 
+void PpDriver::CheckIdentifierLength(const Token& t) {
+  // WebGL limits identifiers to 256 characters, and to 1024 in GLSL ES 3.00 (WebGL 2).
+  const size_t limit = max_identifier_length_                ? max_identifier_length_
+                       : state_.result.version.number >= 300 ? 1024
+                                                             : 256;
+  if (t.kind != TokenKind::kIdentifier || t.text.size() <= limit) return;
+  state_.Report(Severity::kError, "preprocessor/identifier-too-long", RangeOf(t),
+                "identifier of " + std::to_string(t.text.size()) + " characters; the limit is " +
+                    std::to_string(limit));
+}
+
 std::vector<ExpToken> PpDriver::ToExpTokens(std::span<const Token> tokens) {
   std::vector<ExpToken> out;
   out.reserve(tokens.size());
@@ -76,9 +91,9 @@ void PpDriver::AddLexDiagnostics(const LexedFile& lexed, size_t first_region) {
   const auto& regions = state_.result.inactive_regions;
   for (const Diagnostic& d : lexed.diagnostics) {
     // Skipped groups may hold any text (as in C): only comments must still be closed there.
-    const bool skipped = std::any_of(regions.begin() + static_cast<std::ptrdiff_t>(first_region),
-                                     regions.end(),
-                                     [&](const SourceRange& r) { return r.Contains(d.range); });
+    const bool skipped =
+        std::any_of(regions.begin() + static_cast<std::ptrdiff_t>(first_region), regions.end(),
+                    [&](const SourceRange& r) { return r.Contains(d.range); });
     if (skipped && d.rule_id == "lex/invalid-character") continue;
     state_.Report(d.severity, d.rule_id, d.range, d.message);
   }

@@ -65,6 +65,9 @@ struct PragmaDirective {
 struct PreprocessOptions {
   // Macros defined before the first file, as "NAME" or "NAME=value" (e.g. GL_ES).
   std::vector<std::string> predefined;
+  // Longest identifier accepted; 0 picks WebGL's limit from the #version: 256 for GLSL ES 1.00,
+  // 1024 for 3.00. WebGL 2 contexts allow 1024 for ES 1.00 shaders too: pass 1024 there.
+  uint32_t max_identifier_length = 0;
 };
 
 struct PreprocessResult {

@@ -54,7 +54,7 @@ class Analyzer {
   const SyntaxTree& tree_;
   AnalyzeOptions options_;
   SemanticModel model_;
-  bool recording_ = true;  // false while reading the predeclared header tree
+  bool recording_ = true;               // false while reading the predeclared header tree
   std::vector<Type>* types_ = nullptr;  // expression types of the tree being read
   std::vector<Type> header_types_;
   uint32_t current_scope_ = kNoScope;

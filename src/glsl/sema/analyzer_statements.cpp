@@ -186,8 +186,8 @@ void Analyzer::InterfaceBlockNode(const InterfaceBlock& block) {
   uint32_t id = model_.structs.Add(std::move(info));
   if (block.instance_name.Empty()) {
     for (const auto& [d, t] : members) {
-      Declare({.kind = SymbolKind::kVariable, .name = d->name.text, .type = t,
-               .declaration = d->id});
+      Declare(
+          {.kind = SymbolKind::kVariable, .name = d->name.text, .type = t, .declaration = d->id});
     }
     return;
   }
@@ -195,7 +195,9 @@ void Analyzer::InterfaceBlockNode(const InterfaceBlock& block) {
   if (int32_t size = ArraySize(block.instance_array); size != Type::kNotArray) {
     type = type.ArrayOf(size);
   }
-  Declare({.kind = SymbolKind::kVariable, .name = block.instance_name.text, .type = type,
+  Declare({.kind = SymbolKind::kVariable,
+           .name = block.instance_name.text,
+           .type = type,
            .declaration = block.id});
 }
 

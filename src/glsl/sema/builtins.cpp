@@ -232,8 +232,7 @@ std::vector<const BuiltinFunction*> BuiltinOverloads(std::string_view name) {
   return out;
 }
 
-const BuiltinVariable* FindBuiltinVariable(std::string_view name, int version,
-                                           ShaderStage stage) {
+const BuiltinVariable* FindBuiltinVariable(std::string_view name, int version, ShaderStage stage) {
   for (const BuiltinVariable& v : GetTables().variables) {
     if (v.name == name && v.AvailableIn(version, stage)) return &v;
   }

@@ -93,17 +93,38 @@ Type BinaryResultType(BinaryOp op, const Type& lhs, const Type& rhs) {
 
 bool CompoundAssignOperator(AssignOp op, BinaryOp& binary) {
   switch (op) {
-    case AssignOp::kAssign: return false;
-    case AssignOp::kMul: binary = BinaryOp::kMul; return true;
-    case AssignOp::kDiv: binary = BinaryOp::kDiv; return true;
-    case AssignOp::kMod: binary = BinaryOp::kMod; return true;
-    case AssignOp::kAdd: binary = BinaryOp::kAdd; return true;
-    case AssignOp::kSub: binary = BinaryOp::kSub; return true;
-    case AssignOp::kShl: binary = BinaryOp::kShl; return true;
-    case AssignOp::kShr: binary = BinaryOp::kShr; return true;
-    case AssignOp::kBitAnd: binary = BinaryOp::kBitAnd; return true;
-    case AssignOp::kBitXor: binary = BinaryOp::kBitXor; return true;
-    case AssignOp::kBitOr: binary = BinaryOp::kBitOr; return true;
+    case AssignOp::kAssign:
+      return false;
+    case AssignOp::kMul:
+      binary = BinaryOp::kMul;
+      return true;
+    case AssignOp::kDiv:
+      binary = BinaryOp::kDiv;
+      return true;
+    case AssignOp::kMod:
+      binary = BinaryOp::kMod;
+      return true;
+    case AssignOp::kAdd:
+      binary = BinaryOp::kAdd;
+      return true;
+    case AssignOp::kSub:
+      binary = BinaryOp::kSub;
+      return true;
+    case AssignOp::kShl:
+      binary = BinaryOp::kShl;
+      return true;
+    case AssignOp::kShr:
+      binary = BinaryOp::kShr;
+      return true;
+    case AssignOp::kBitAnd:
+      binary = BinaryOp::kBitAnd;
+      return true;
+    case AssignOp::kBitXor:
+      binary = BinaryOp::kBitXor;
+      return true;
+    case AssignOp::kBitOr:
+      binary = BinaryOp::kBitOr;
+      return true;
   }
   return false;
 }

@@ -22,9 +22,9 @@ inline constexpr uint32_t kNoSymbol = UINT32_MAX;
 inline constexpr uint32_t kNoScope = UINT32_MAX;
 
 enum class SymbolKind : uint8_t {
-  kVariable,         // globals, locals, block members of an unnamed block, block instances
+  kVariable,  // globals, locals, block members of an unnamed block, block instances
   kParameter,
-  kFunction,         // one user overload (prototype and definition share it)
+  kFunction,  // one user overload (prototype and definition share it)
   kStruct,
   kBuiltinVariable,  // created on first use
   kBuiltinFunction,  // one per built-in name used; the overload of each call is in builtin_calls
@@ -33,15 +33,15 @@ enum class SymbolKind : uint8_t {
 struct Symbol {
   SymbolKind kind = SymbolKind::kVariable;
   std::string name;
-  Type type;                        // variables: declared; functions: return; structs: the struct
-  std::vector<Type> parameters;     // kFunction
-  uint32_t declaration = kNoNode;   // Declarator, ParameterDeclaration, FunctionDeclaration,
-                                    // StructSpecifier or InterfaceBlock; kNoNode if predeclared
-  uint32_t definition = kNoNode;    // kFunction: the FunctionDeclaration with a body
+  Type type{};                     // variables: declared; functions: return; structs: the struct
+  std::vector<Type> parameters{};  // kFunction
+  uint32_t declaration = kNoNode;  // Declarator, ParameterDeclaration, FunctionDeclaration,
+                                   // StructSpecifier or InterfaceBlock; kNoNode if predeclared
+  uint32_t definition = kNoNode;   // kFunction: the FunctionDeclaration with a body
   uint32_t scope = kNoScope;
   bool is_const = false;
-  bool predeclared = false;         // from AnalyzeOptions (e.g. ShaderToy's uniforms)
-  std::optional<int64_t> const_value;  // const int/uint scalars with a constant initializer
+  bool predeclared = false;              // from AnalyzeOptions (e.g. ShaderToy's uniforms)
+  std::optional<int64_t> const_value{};  // const int/uint scalars with a constant initializer
   const BuiltinVariable* builtin_variable = nullptr;
 };
 
@@ -90,9 +90,9 @@ struct SemanticModel {
   std::vector<Scope> scopes;
   std::vector<Symbol> symbols;
   // By node id of the analysed tree.
-  std::vector<Type> expression_types;   // Unknown for non-expressions
-  std::vector<uint32_t> references;     // IdentifierExpr/CallExpr/TypeSpecifier -> symbol used
-  std::vector<uint32_t> declarations;   // declaring node -> symbol declared
+  std::vector<Type> expression_types;  // Unknown for non-expressions
+  std::vector<uint32_t> references;    // IdentifierExpr/CallExpr/TypeSpecifier -> symbol used
+  std::vector<uint32_t> declarations;  // declaring node -> symbol declared
   std::unordered_map<uint32_t, const BuiltinFunction*> builtin_calls;  // CallExpr -> overload
   std::vector<TypeMismatch> mismatches;  // in source order of discovery
 

@@ -9,39 +9,57 @@ namespace {
 
 const char* ScalarName(BaseType base) {
   switch (base) {
-    case BaseType::kVoid: return "void";
-    case BaseType::kBool: return "bool";
-    case BaseType::kInt: return "int";
-    case BaseType::kUint: return "uint";
-    case BaseType::kFloat: return "float";
-    default: return "unknown";
+    case BaseType::kVoid:
+      return "void";
+    case BaseType::kBool:
+      return "bool";
+    case BaseType::kInt:
+      return "int";
+    case BaseType::kUint:
+      return "uint";
+    case BaseType::kFloat:
+      return "float";
+    default:
+      return "unknown";
   }
 }
 
 const char* VectorPrefix(BaseType base) {
   switch (base) {
-    case BaseType::kBool: return "bvec";
-    case BaseType::kInt: return "ivec";
-    case BaseType::kUint: return "uvec";
-    default: return "vec";
+    case BaseType::kBool:
+      return "bvec";
+    case BaseType::kInt:
+      return "ivec";
+    case BaseType::kUint:
+      return "uvec";
+    default:
+      return "vec";
   }
 }
 
 const char* SamplerPrefix(BaseType sampled) {
   switch (sampled) {
-    case BaseType::kInt: return "i";
-    case BaseType::kUint: return "u";
-    default: return "";
+    case BaseType::kInt:
+      return "i";
+    case BaseType::kUint:
+      return "u";
+    default:
+      return "";
   }
 }
 
 const char* DimName(SamplerDim dim) {
   switch (dim) {
-    case SamplerDim::k2D: return "2D";
-    case SamplerDim::k3D: return "3D";
-    case SamplerDim::kCube: return "Cube";
-    case SamplerDim::k2DArray: return "2DArray";
-    default: return "";
+    case SamplerDim::k2D:
+      return "2D";
+    case SamplerDim::k3D:
+      return "3D";
+    case SamplerDim::kCube:
+      return "Cube";
+    case SamplerDim::k2DArray:
+      return "2DArray";
+    default:
+      return "";
   }
 }
 
@@ -84,8 +102,7 @@ constexpr std::array kSamplers = {
     NamedType{"sampler2DArray", Type::Sampler(SamplerDim::k2DArray)},
     NamedType{"sampler2DShadow", Type::Sampler(SamplerDim::k2D, BaseType::kFloat, true)},
     NamedType{"samplerCubeShadow", Type::Sampler(SamplerDim::kCube, BaseType::kFloat, true)},
-    NamedType{"sampler2DArrayShadow",
-              Type::Sampler(SamplerDim::k2DArray, BaseType::kFloat, true)},
+    NamedType{"sampler2DArrayShadow", Type::Sampler(SamplerDim::k2DArray, BaseType::kFloat, true)},
     NamedType{"isampler2D", Type::Sampler(SamplerDim::k2D, BaseType::kInt)},
     NamedType{"isampler3D", Type::Sampler(SamplerDim::k3D, BaseType::kInt)},
     NamedType{"isamplerCube", Type::Sampler(SamplerDim::kCube, BaseType::kInt)},

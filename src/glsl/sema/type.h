@@ -56,8 +56,8 @@ struct Type {
   }
   static constexpr Type Sampler(SamplerDim dim, BaseType sampled = BaseType::kFloat,
                                 bool shadow = false) {
-    return Type{.base = BaseType::kSampler, .sampler_dim = dim, .sampled = sampled,
-                .shadow = shadow};
+    return Type{
+        .base = BaseType::kSampler, .sampler_dim = dim, .sampled = sampled, .shadow = shadow};
   }
   static constexpr Type Struct(uint32_t id) {
     return Type{.base = BaseType::kStruct, .struct_id = id};

@@ -15,15 +15,16 @@ namespace shaderport::glsl {
 enum class NodeKind : uint8_t {
   kTranslationUnit,
   // Types and declarations.
-  kTypeSpecifier,          // TypeSpecifier: `highp vec3`, `S`, `float[3]`, `struct {...}`
-  kStructSpecifier,        // StructSpecifier: `struct S { float a; }`
-  kVariableDeclaration,    // VariableDeclaration: `const float a = 1.0, b[2];`, `struct S {...};`
-  kDeclarator,             // Declarator: one name of a declaration, `b[2] = ...`
-  kQualifierDeclaration,   // QualifierDeclaration: `invariant gl_Position;`, `layout(std140) uniform;`
-  kPrecisionDeclaration,   // PrecisionDeclaration: `precision mediump float;`
-  kInterfaceBlock,         // InterfaceBlock: `uniform B { vec4 v; } b[2];`
-  kFunctionDeclaration,    // FunctionDeclaration: prototype or definition
-  kParameterDeclaration,   // ParameterDeclaration: `in highp vec2 p[2]`
+  kTypeSpecifier,         // TypeSpecifier: `highp vec3`, `S`, `float[3]`, `struct {...}`
+  kStructSpecifier,       // StructSpecifier: `struct S { float a; }`
+  kVariableDeclaration,   // VariableDeclaration: `const float a = 1.0, b[2];`, `struct S {...};`
+  kDeclarator,            // Declarator: one name of a declaration, `b[2] = ...`
+  kQualifierDeclaration,  // QualifierDeclaration: `invariant gl_Position;`, `layout(std140)
+                          // uniform;`
+  kPrecisionDeclaration,  // PrecisionDeclaration: `precision mediump float;`
+  kInterfaceBlock,        // InterfaceBlock: `uniform B { vec4 v; } b[2];`
+  kFunctionDeclaration,   // FunctionDeclaration: prototype or definition
+  kParameterDeclaration,  // ParameterDeclaration: `in highp vec2 p[2]`
   // Statements.
   kCompoundStatement,
   kExpressionStatement,
@@ -43,19 +44,20 @@ enum class NodeKind : uint8_t {
   kIdentifierExpr,
   kLiteralExpr,
   kParenExpr,
-  kUnaryExpr,  // prefix and postfix, see UnaryOp
+  kUnaryExpr,   // prefix and postfix, see UnaryOp
   kBinaryExpr,  // includes the comma operator
   kAssignmentExpr,
   kConditionalExpr,
-  kCallExpr,   // function call, constructor (incl. `float[3](...)`) or `x.length()`
+  kCallExpr,    // function call, constructor (incl. `float[3](...)`) or `x.length()`
   kMemberExpr,  // `.name`: struct field or swizzle, sema decides
   kIndexExpr,
   kErrorExpr,  // a missing or unparsable expression
 };
 
-/// The parser keeps every tree at most this high (a long `a+b+c+...` chain is
-/// cut with syntax/nesting-too-deep), so recursive walks of 4096 frames are safe.
-inline constexpr uint32_t kMaxSyntaxTreeHeight = 4096;
+/// Tree height: recursion in the parser is bounded by limits::kMaxSyntaxDepth, but
+/// left-associative chains (`a+b+c+...`, `a.x.y[0]...`) build trees of any height
+/// iteratively; valid WebGL shaders have chains of thousands of operators. Walk
+/// trees with VisitPreorder/VisitPostorder (visit.h), not with unbounded recursion.
 
 /// Stable lower-case name of a kind ("binary-expr"), used by DumpAst.
 const char* NodeKindName(NodeKind kind);
@@ -123,11 +125,11 @@ enum class LiteralKind : uint8_t { kInt, kUint, kFloat, kBool };
 struct LiteralExpr : Expr {
   SHADERPORT_NODE(LiteralExpr, Expr, kLiteralExpr)
   LiteralKind literal_kind = LiteralKind::kInt;
-  std::string text;          // as written, e.g. "0x1Fu", "1.5e3", "true"
-  uint64_t int_value = 0;    // kInt / kUint (the integer as written; wraps are sema's business)
-  bool int_overflow = false; // the value does not fit in 32 bits
-  double float_value = 0.0;  // kFloat
-  bool bool_value = false;   // kBool
+  std::string text;           // as written, e.g. "0x1Fu", "1.5e3", "true"
+  uint64_t int_value = 0;     // kInt / kUint (the integer as written; wraps are sema's business)
+  bool int_overflow = false;  // the value does not fit in 32 bits
+  double float_value = 0.0;   // kFloat
+  bool bool_value = false;    // kBool
 };
 
 struct ParenExpr : Expr {
@@ -136,8 +138,14 @@ struct ParenExpr : Expr {
 };
 
 enum class UnaryOp : uint8_t {
-  kPlus, kMinus, kNot, kBitNot,
-  kPreIncrement, kPreDecrement, kPostIncrement, kPostDecrement,
+  kPlus,
+  kMinus,
+  kNot,
+  kBitNot,
+  kPreIncrement,
+  kPreDecrement,
+  kPostIncrement,
+  kPostDecrement,
 };
 const char* UnaryOpSpelling(UnaryOp op);  // "-", "++" ...
 
@@ -149,9 +157,25 @@ struct UnaryExpr : Expr {
 };
 
 enum class BinaryOp : uint8_t {
-  kMul, kDiv, kMod, kAdd, kSub, kShl, kShr,
-  kLess, kGreater, kLessEqual, kGreaterEqual, kEqual, kNotEqual,
-  kBitAnd, kBitXor, kBitOr, kLogicalAnd, kLogicalXor, kLogicalOr,
+  kMul,
+  kDiv,
+  kMod,
+  kAdd,
+  kSub,
+  kShl,
+  kShr,
+  kLess,
+  kGreater,
+  kLessEqual,
+  kGreaterEqual,
+  kEqual,
+  kNotEqual,
+  kBitAnd,
+  kBitXor,
+  kBitOr,
+  kLogicalAnd,
+  kLogicalXor,
+  kLogicalOr,
   kComma,
 };
 const char* BinaryOpSpelling(BinaryOp op);  // "*", "&&", "," ...
@@ -165,7 +189,17 @@ struct BinaryExpr : Expr {
 };
 
 enum class AssignOp : uint8_t {
-  kAssign, kMul, kDiv, kMod, kAdd, kSub, kShl, kShr, kBitAnd, kBitXor, kBitOr,
+  kAssign,
+  kMul,
+  kDiv,
+  kMod,
+  kAdd,
+  kSub,
+  kShl,
+  kShr,
+  kBitAnd,
+  kBitXor,
+  kBitOr,
 };
 const char* AssignOpSpelling(AssignOp op);  // "=", "+=" ...
 
@@ -224,11 +258,22 @@ enum class Precision : uint8_t { kNone, kLow, kMedium, kHigh };
 const char* PrecisionSpelling(Precision p);  // "", "lowp", "mediump", "highp"
 
 enum class QualifierKind : uint8_t {
-  kConst, kIn, kOut, kInOut, kUniform, kAttribute, kVarying, kCentroid,
-  kFlat, kSmooth, kInvariant, kLayout,
+  kConst,
+  kIn,
+  kOut,
+  kInOut,
+  kUniform,
+  kAttribute,
+  kVarying,
+  kCentroid,
+  kFlat,
+  kSmooth,
+  kInvariant,
+  kLayout,
   kPrecision,  // lowp/mediump/highp: also copied to TypeSpecifier::precision
 };
-const char* QualifierSpelling(QualifierKind kind);  // "const", "layout", ... ("precision" for kPrecision)
+const char* QualifierSpelling(
+    QualifierKind kind);  // "const", "layout", ... ("precision" for kPrecision)
 
 /// `name` or `name = value` inside `layout(...)`.
 struct LayoutId {
@@ -262,9 +307,9 @@ struct ArrayDimension {
 };
 
 enum class TypeNameKind : uint8_t {
-  kBuiltin,    // a type keyword of the language version (`float`, `sampler2D`, `void`)
-  kStruct,     // a struct declared earlier, or declared right here (`struct_def`)
-  kUnknown,    // an identifier used in type position that names no known type
+  kBuiltin,  // a type keyword of the language version (`float`, `sampler2D`, `void`)
+  kStruct,   // a struct declared earlier, or declared right here (`struct_def`)
+  kUnknown,  // an identifier used in type position that names no known type
 };
 
 struct StructSpecifier;
@@ -273,7 +318,7 @@ struct StructSpecifier;
 /// Precision written among the qualifiers lands here; so do `float[3]` sizes.
 struct TypeSpecifier : Node {
   SHADERPORT_NODE(TypeSpecifier, Node, kTypeSpecifier)
-  Name name;                // "vec3", "S"; the struct's name (maybe empty) for a struct_def
+  Name name;  // "vec3", "S"; the struct's name (maybe empty) for a struct_def
   TypeNameKind name_kind = TypeNameKind::kBuiltin;
   Precision precision = Precision::kNone;
   StructSpecifier* struct_def = nullptr;  // `struct S { ... }` written in place

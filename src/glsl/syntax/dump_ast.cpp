@@ -1,4 +1,5 @@
 // DumpAst: one line per node for golden tests and `shaderport dump --ast`.
+#include <algorithm>
 #include <string>
 
 #include "glsl/syntax/parser.h"
@@ -38,17 +39,22 @@ std::string Dims(const std::vector<ArrayDimension>& array) {
 
 const char* TypeNameKindName(TypeNameKind kind) {
   switch (kind) {
-    case TypeNameKind::kBuiltin: return "builtin";
-    case TypeNameKind::kStruct: return "struct";
-    case TypeNameKind::kUnknown: return "unknown";
+    case TypeNameKind::kBuiltin:
+      return "builtin";
+    case TypeNameKind::kStruct:
+      return "struct";
+    case TypeNameKind::kUnknown:
+      return "unknown";
   }
   return "?";
 }
 
 std::string Attributes(const Node& node) {
   switch (node.kind) {
-    case NodeKind::kIdentifierExpr: return " " + node.As<IdentifierExpr>()->name;
-    case NodeKind::kLiteralExpr: return " " + node.As<LiteralExpr>()->text;
+    case NodeKind::kIdentifierExpr:
+      return " " + node.As<IdentifierExpr>()->name;
+    case NodeKind::kLiteralExpr:
+      return " " + node.As<LiteralExpr>()->text;
     case NodeKind::kUnaryExpr: {
       const auto* n = node.As<UnaryExpr>();
       bool postfix = n->op == UnaryOp::kPostIncrement || n->op == UnaryOp::kPostDecrement;
@@ -65,11 +71,13 @@ std::string Attributes(const Node& node) {
                                                                   : " method ";
       return kind + n->callee.text + (n->void_argument ? " (void)" : "");
     }
-    case NodeKind::kMemberExpr: return " ." + node.As<MemberExpr>()->member.text;
+    case NodeKind::kMemberExpr:
+      return " ." + node.As<MemberExpr>()->member.text;
     case NodeKind::kTypeSpecifier: {
       const auto* n = node.As<TypeSpecifier>();
       std::string out = " ";
-      if (n->precision != Precision::kNone) out += std::string(PrecisionSpelling(n->precision)) + " ";
+      if (n->precision != Precision::kNone)
+        out += std::string(PrecisionSpelling(n->precision)) + " ";
       return out + (n->name.Empty() ? "<anonymous>" : n->name.text) + Dims(n->array) + " (" +
              TypeNameKindName(n->name_kind) + ")";
     }
@@ -109,7 +117,8 @@ std::string Attributes(const Node& node) {
     }
     case NodeKind::kCaseLabel:
       return node.As<CaseLabel>()->value == nullptr ? " default" : " case";
-    default: return "";
+    default:
+      return "";
   }
 }
 
@@ -128,7 +137,11 @@ std::string RangeText(const SourceRange& range, const SourceManager& sources) {
 std::string DumpAst(const SyntaxTree& tree, const SourceManager& sources) {
   std::string out;
   VisitPreorder(tree, [&](const Node& node, uint32_t depth) {
-    out.append(2 * depth, ' ');
+    // Indentation stops growing so that a chain of thousands of operators
+    // stays linear in size; deeper lines carry their depth instead.
+    constexpr uint32_t kMaxIndent = 64;
+    out.append(2 * std::min(depth, kMaxIndent), ' ');
+    if (depth > kMaxIndent) out += "[" + std::to_string(depth) + "] ";
     out += NodeKindName(node.kind);
     out += Attributes(node);
     out += " ";

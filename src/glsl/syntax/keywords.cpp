@@ -32,8 +32,9 @@ constexpr auto kRows = Sorted();
 }  // namespace
 
 WordInfo ClassifyWord(std::string_view word, int version) {
-  auto it = std::lower_bound(kRows.begin(), kRows.end(), word,
-                             [](const KeywordRow& r, std::string_view key) { return r.word < key; });
+  auto it =
+      std::lower_bound(kRows.begin(), kRows.end(), word,
+                       [](const KeywordRow& r, std::string_view key) { return r.word < key; });
   if (it == kRows.end() || it->word != word) return {};
   WordStatus status = version >= 300 ? it->es300 : it->es100;
   return {status, status == WordStatus::kKeyword ? it->role : WordRole::kNone};

@@ -10,12 +10,18 @@ struct QualifierWord {
 };
 
 constexpr QualifierWord kQualifierWords[] = {
-    {"const", QualifierKind::kConst},         {"in", QualifierKind::kIn},
-    {"out", QualifierKind::kOut},             {"inout", QualifierKind::kInOut},
-    {"uniform", QualifierKind::kUniform},     {"attribute", QualifierKind::kAttribute},
-    {"varying", QualifierKind::kVarying},     {"centroid", QualifierKind::kCentroid},
-    {"flat", QualifierKind::kFlat},           {"smooth", QualifierKind::kSmooth},
-    {"invariant", QualifierKind::kInvariant}, {"layout", QualifierKind::kLayout},
+    {"const", QualifierKind::kConst},
+    {"in", QualifierKind::kIn},
+    {"out", QualifierKind::kOut},
+    {"inout", QualifierKind::kInOut},
+    {"uniform", QualifierKind::kUniform},
+    {"attribute", QualifierKind::kAttribute},
+    {"varying", QualifierKind::kVarying},
+    {"centroid", QualifierKind::kCentroid},
+    {"flat", QualifierKind::kFlat},
+    {"smooth", QualifierKind::kSmooth},
+    {"invariant", QualifierKind::kInvariant},
+    {"layout", QualifierKind::kLayout},
 };
 
 QualifierKind QualifierKindOf(std::string_view word) {
@@ -82,9 +88,11 @@ Node* Parser::ParseExternalDeclaration() {
   }
   if (StartsDeclaration()) return ParseDeclaration(true);
   auto* error = Start<ErrorStatement>();
-  if (Tok().kind != TokenKind::kInvalid) {  // the lexer already reported invalid bytes
-    ErrorAtToken("syntax/unexpected-token", "expected a declaration, found " + Describe());
+  if (Tok().kind == TokenKind::kInvalid) {  // the lexer already reported the byte
+    Advance();
+    return Finish(error);
   }
+  ErrorAtToken("syntax/unexpected-token", "expected a declaration, found " + Describe());
   uint32_t before = pos_;
   RecoverToStatementEnd();
   if (pos_ == before) Advance();
@@ -158,7 +166,8 @@ TypeSpecifier* Parser::ParseTypeSpecifier(const QualifierList& qualifiers) {
     type->name = type->struct_def->name;
     type->name_kind = TypeNameKind::kStruct;
   } else if (IsTypeName()) {
-    type->name_kind = Word().role == WordRole::kType ? TypeNameKind::kBuiltin : TypeNameKind::kStruct;
+    type->name_kind =
+        Word().role == WordRole::kType ? TypeNameKind::kBuiltin : TypeNameKind::kStruct;
     type->name = {std::string(Text()), TokenRange(Index())};
     Advance();
   } else if (AtName()) {
@@ -224,8 +233,7 @@ Node* Parser::ParseDeclaration(bool global) {
   if (AtRole(WordRole::kPrecision)) return ParsePrecisionDeclaration();
   uint32_t first = Index();
   QualifierList qualifiers = ParseQualifiers();
-  bool invariant_names = qualifiers.Has(QualifierKind::kInvariant) && AtName() &&
-                         !IsTypeName() &&
+  bool invariant_names = qualifiers.Has(QualifierKind::kInvariant) && AtName() && !IsTypeName() &&
                          (AtPunct(Punct::kComma, 1) || AtPunct(Punct::kSemicolon, 1));
   if (!qualifiers.Empty() && (AtPunct(Punct::kSemicolon) || invariant_names)) {
     auto* node = tree_.Make<QualifierDeclaration>();
@@ -258,13 +266,13 @@ Node* Parser::ParseDeclaration(bool global) {
 Node* Parser::ParseDeclaratorList(VariableDeclaration* decl) {
   if (!AtPunct(Punct::kSemicolon)) {
     while (true) {
-      auto* d = Start<Declarator>();
-      d->name = ExpectName("a name in the declaration");
-      if (d->name.Empty()) {
-        Finish(d);
+      if (!AtName()) {
+        ExpectName("a name in the declaration");
         RecoverToStatementEnd();
         return Finish(decl);
       }
+      auto* d = Start<Declarator>();
+      d->name = TakeName();
       DeclareOrdinaryName(d->name.text);
       ParseArrayDimensions(d->array);
       if (Accept(Punct::kEqual)) d->initializer = ParseAssignment();

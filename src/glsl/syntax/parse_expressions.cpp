@@ -8,10 +8,6 @@
 namespace shaderport::glsl {
 namespace {
 
-// Longest binary/postfix chain kept; far above real code, low enough that
-// recursive walks over the tree stay within kMaxSyntaxTreeHeight.
-constexpr uint32_t kMaxChainHeight = 1024;
-
 struct BinaryInfo {
   BinaryOp op;
   int precedence;
@@ -20,57 +16,96 @@ struct BinaryInfo {
 std::optional<BinaryInfo> BinaryOf(const PpToken& t) {
   if (t.kind != TokenKind::kPunctuator) return std::nullopt;
   switch (t.punct) {
-    case Punct::kOrOr: return BinaryInfo{BinaryOp::kLogicalOr, 1};
-    case Punct::kXorXor: return BinaryInfo{BinaryOp::kLogicalXor, 2};
-    case Punct::kAndAnd: return BinaryInfo{BinaryOp::kLogicalAnd, 3};
-    case Punct::kPipe: return BinaryInfo{BinaryOp::kBitOr, 4};
-    case Punct::kCaret: return BinaryInfo{BinaryOp::kBitXor, 5};
-    case Punct::kAmp: return BinaryInfo{BinaryOp::kBitAnd, 6};
-    case Punct::kEqualEqual: return BinaryInfo{BinaryOp::kEqual, 7};
-    case Punct::kNotEqual: return BinaryInfo{BinaryOp::kNotEqual, 7};
-    case Punct::kLess: return BinaryInfo{BinaryOp::kLess, 8};
-    case Punct::kGreater: return BinaryInfo{BinaryOp::kGreater, 8};
-    case Punct::kLessEqual: return BinaryInfo{BinaryOp::kLessEqual, 8};
-    case Punct::kGreaterEqual: return BinaryInfo{BinaryOp::kGreaterEqual, 8};
-    case Punct::kShiftLeft: return BinaryInfo{BinaryOp::kShl, 9};
-    case Punct::kShiftRight: return BinaryInfo{BinaryOp::kShr, 9};
-    case Punct::kPlus: return BinaryInfo{BinaryOp::kAdd, 10};
-    case Punct::kMinus: return BinaryInfo{BinaryOp::kSub, 10};
-    case Punct::kStar: return BinaryInfo{BinaryOp::kMul, 11};
-    case Punct::kSlash: return BinaryInfo{BinaryOp::kDiv, 11};
-    case Punct::kPercent: return BinaryInfo{BinaryOp::kMod, 11};
-    default: return std::nullopt;
+    case Punct::kOrOr:
+      return BinaryInfo{BinaryOp::kLogicalOr, 1};
+    case Punct::kXorXor:
+      return BinaryInfo{BinaryOp::kLogicalXor, 2};
+    case Punct::kAndAnd:
+      return BinaryInfo{BinaryOp::kLogicalAnd, 3};
+    case Punct::kPipe:
+      return BinaryInfo{BinaryOp::kBitOr, 4};
+    case Punct::kCaret:
+      return BinaryInfo{BinaryOp::kBitXor, 5};
+    case Punct::kAmp:
+      return BinaryInfo{BinaryOp::kBitAnd, 6};
+    case Punct::kEqualEqual:
+      return BinaryInfo{BinaryOp::kEqual, 7};
+    case Punct::kNotEqual:
+      return BinaryInfo{BinaryOp::kNotEqual, 7};
+    case Punct::kLess:
+      return BinaryInfo{BinaryOp::kLess, 8};
+    case Punct::kGreater:
+      return BinaryInfo{BinaryOp::kGreater, 8};
+    case Punct::kLessEqual:
+      return BinaryInfo{BinaryOp::kLessEqual, 8};
+    case Punct::kGreaterEqual:
+      return BinaryInfo{BinaryOp::kGreaterEqual, 8};
+    case Punct::kShiftLeft:
+      return BinaryInfo{BinaryOp::kShl, 9};
+    case Punct::kShiftRight:
+      return BinaryInfo{BinaryOp::kShr, 9};
+    case Punct::kPlus:
+      return BinaryInfo{BinaryOp::kAdd, 10};
+    case Punct::kMinus:
+      return BinaryInfo{BinaryOp::kSub, 10};
+    case Punct::kStar:
+      return BinaryInfo{BinaryOp::kMul, 11};
+    case Punct::kSlash:
+      return BinaryInfo{BinaryOp::kDiv, 11};
+    case Punct::kPercent:
+      return BinaryInfo{BinaryOp::kMod, 11};
+    default:
+      return std::nullopt;
   }
 }
 
 std::optional<AssignOp> AssignOf(const PpToken& t) {
   if (t.kind != TokenKind::kPunctuator) return std::nullopt;
   switch (t.punct) {
-    case Punct::kEqual: return AssignOp::kAssign;
-    case Punct::kStarEqual: return AssignOp::kMul;
-    case Punct::kSlashEqual: return AssignOp::kDiv;
-    case Punct::kPercentEqual: return AssignOp::kMod;
-    case Punct::kPlusEqual: return AssignOp::kAdd;
-    case Punct::kMinusEqual: return AssignOp::kSub;
-    case Punct::kShiftLeftEqual: return AssignOp::kShl;
-    case Punct::kShiftRightEqual: return AssignOp::kShr;
-    case Punct::kAmpEqual: return AssignOp::kBitAnd;
-    case Punct::kCaretEqual: return AssignOp::kBitXor;
-    case Punct::kPipeEqual: return AssignOp::kBitOr;
-    default: return std::nullopt;
+    case Punct::kEqual:
+      return AssignOp::kAssign;
+    case Punct::kStarEqual:
+      return AssignOp::kMul;
+    case Punct::kSlashEqual:
+      return AssignOp::kDiv;
+    case Punct::kPercentEqual:
+      return AssignOp::kMod;
+    case Punct::kPlusEqual:
+      return AssignOp::kAdd;
+    case Punct::kMinusEqual:
+      return AssignOp::kSub;
+    case Punct::kShiftLeftEqual:
+      return AssignOp::kShl;
+    case Punct::kShiftRightEqual:
+      return AssignOp::kShr;
+    case Punct::kAmpEqual:
+      return AssignOp::kBitAnd;
+    case Punct::kCaretEqual:
+      return AssignOp::kBitXor;
+    case Punct::kPipeEqual:
+      return AssignOp::kBitOr;
+    default:
+      return std::nullopt;
   }
 }
 
 std::optional<UnaryOp> PrefixOf(const PpToken& t) {
   if (t.kind != TokenKind::kPunctuator) return std::nullopt;
   switch (t.punct) {
-    case Punct::kPlus: return UnaryOp::kPlus;
-    case Punct::kMinus: return UnaryOp::kMinus;
-    case Punct::kBang: return UnaryOp::kNot;
-    case Punct::kTilde: return UnaryOp::kBitNot;
-    case Punct::kPlusPlus: return UnaryOp::kPreIncrement;
-    case Punct::kMinusMinus: return UnaryOp::kPreDecrement;
-    default: return std::nullopt;
+    case Punct::kPlus:
+      return UnaryOp::kPlus;
+    case Punct::kMinus:
+      return UnaryOp::kMinus;
+    case Punct::kBang:
+      return UnaryOp::kNot;
+    case Punct::kTilde:
+      return UnaryOp::kBitNot;
+    case Punct::kPlusPlus:
+      return UnaryOp::kPreIncrement;
+    case Punct::kMinusMinus:
+      return UnaryOp::kPreDecrement;
+    default:
+      return std::nullopt;
   }
 }
 
@@ -100,18 +135,6 @@ void ParseIntegerText(std::string_view text, LiteralExpr* literal) {
 
 }  // namespace
 
-Expr* Parser::CheckHeight(Expr* expr) {
-  if (Height(expr) <= kMaxChainHeight) return expr;
-  if (!depth_reported_) {
-    depth_reported_ = true;
-    Error(expr->range, "syntax/nesting-too-deep",
-          "expression too long: more than " + std::to_string(kMaxChainHeight) +
-              " chained operators");
-  }
-  SkipBalanced(false);
-  return expr;
-}
-
 Expr* Parser::ParseExpression() {
   uint32_t first = Index();
   Expr* lhs = ParseAssignment();
@@ -123,7 +146,7 @@ Expr* Parser::ParseExpression() {
     node->lhs = lhs;
     Advance();
     node->rhs = ParseAssignment();
-    lhs = CheckHeight(Finish(node));
+    lhs = Finish(node);
   }
   return lhs;
 }
@@ -176,7 +199,7 @@ Expr* Parser::ParseBinary(int min_precedence) {
     node->lhs = lhs;
     Advance();
     node->rhs = ParseBinary(info->precedence + 1);
-    lhs = CheckHeight(Finish(node));
+    lhs = Finish(node);
   }
 }
 
@@ -245,7 +268,7 @@ Expr* Parser::ParsePostfix() {
     } else {
       return expr;
     }
-    expr = CheckHeight(expr);
+    expr = expr;
   }
 }
 

@@ -26,7 +26,8 @@ Parser::Parser(const PreprocessResult& pp, const ParseOptions& options)
     if (text.find('\\') != std::string_view::npos) {
       std::string clean;
       for (size_t k = 0; k < text.size(); ++k) {
-        if (text[k] == '\\' && k + 1 < text.size() && (text[k + 1] == '\n' || text[k + 1] == '\r')) {
+        if (text[k] == '\\' && k + 1 < text.size() &&
+            (text[k + 1] == '\n' || text[k + 1] == '\r')) {
           ++k;
           if (text[k] == '\r' && k + 1 < text.size() && text[k + 1] == '\n') ++k;
           continue;
@@ -37,7 +38,7 @@ Parser::Parser(const PreprocessResult& pp, const ParseOptions& options)
     }
     texts_.push_back(text);
     words_.push_back(tokens[i].kind == TokenKind::kIdentifier ? ClassifyWord(text, options_.version)
-                                                               : WordInfo{});
+                                                              : WordInfo{});
   }
   texts_.emplace_back();
   words_.emplace_back();
@@ -111,8 +112,8 @@ Name Parser::TakeName() {
 Name Parser::ExpectName(std::string_view what) {
   if (AtName()) return TakeName();
   std::string message = "expected " + std::string(what) + ", found " + Describe();
-  if (Tok().kind == TokenKind::kIdentifier) message = "expected " + std::string(what) +
-                                                      ", found keyword '" + std::string(Text()) + "'";
+  if (Tok().kind == TokenKind::kIdentifier)
+    message = "expected " + std::string(what) + ", found keyword '" + std::string(Text()) + "'";
   ErrorAtToken("syntax/expected-identifier", message);
   return Name{"", RangeOf(Index(), Index() - 1)};
 }
@@ -141,14 +142,6 @@ void Parser::FinishNode(Node* node) {
   bool empty = pos_ <= node->first_token;
   node->last_token = empty ? node->first_token - 1 : pos_ - 1;
   node->range = RangeOf(node->first_token, node->last_token);
-  uint32_t height = 0;
-  ForEachChild(*node, [&](const Node& child) { height = std::max(height, Height(&child)); });
-  if (heights_.size() <= node->id) heights_.resize(node->id + 1, 0);
-  heights_[node->id] = height + 1;
-}
-
-uint32_t Parser::Height(const Node* node) const {
-  return node != nullptr && node->id < heights_.size() ? heights_[node->id] : 0;
 }
 
 // ------------------------------------------------------------ diagnostics
@@ -157,8 +150,12 @@ void Parser::Error(const SourceRange& range, std::string_view rule, std::string 
   if (error_count_ >= limits::kMaxDiagnosticsPerFile) {
     if (!too_many_reported_) {
       too_many_reported_ = true;
-      diagnostics_.push_back({Severity::kNote, "syntax/too-many-errors", range,
-                              "too many syntax errors; further ones are not reported", {}, {}});
+      diagnostics_.push_back({Severity::kNote,
+                              "syntax/too-many-errors",
+                              range,
+                              "too many syntax errors; further ones are not reported",
+                              {},
+                              {}});
     }
     return;
   }
@@ -295,6 +292,20 @@ void Parser::PopScope() {
 
 // -------------------------------------------------------------------- run
 
+void Parser::PlaceEmptyNodes() {
+  // A missing operand sits at the next token, which may lie past its parent
+  // (`float a = ;`): move each empty node into its parent so ranges nest.
+  VisitPreorder(*tree_.Root(), [&](const Node& parent, uint32_t) {
+    ForEachChild(parent, [&](const Node& child) {
+      if (child.HasTokens() || child.range.file != parent.range.file) return;
+      Node& node = tree_.NodeAt(child.id);
+      uint32_t at = std::clamp(node.range.begin, parent.range.begin, parent.range.end);
+      node.range.begin = node.range.end = at;
+    });
+    return true;
+  });
+}
+
 ParseResult Parser::Run() {
   auto* unit = Start<TranslationUnit>();
   unit->first_token = 0;
@@ -306,6 +317,7 @@ ParseResult Parser::Run() {
   }
   Finish(unit);
   tree_.SetRoot(unit);
+  PlaceEmptyNodes();
   return ParseResult{std::move(tree_), std::move(diagnostics_)};
 }
 

@@ -20,6 +20,7 @@ class Parser {
   ParseResult Run();
 
  private:
+  void PlaceEmptyNodes();
   friend class DepthGuard;
 
   // ---- tokens (parser.cpp)
@@ -55,7 +56,6 @@ class Parser {
   void FinishNode(Node* node);
   SourceRange RangeOf(uint32_t first, uint32_t last) const;
   SourceRange TokenRange(uint32_t index) const;
-  uint32_t Height(const Node* node) const;
 
   // ---- diagnostics and recovery (parser.cpp)
   void Error(const SourceRange& range, std::string_view rule, std::string message);
@@ -126,7 +126,6 @@ class Parser {
   Expr* ParseConstructorOrCall();
   void ParseArguments(CallExpr* call);
   bool AtConstructor() const;  // a type name starting an expression
-  Expr* CheckHeight(Expr* expr);
 
   const PreprocessResult& pp_;
   ParseOptions options_;
@@ -135,9 +134,8 @@ class Parser {
   uint32_t pos_ = 0;
   uint32_t end_index_ = 0;  // index of the kEndOfFile token
   std::vector<WordInfo> words_;
-  std::deque<std::string> cleaned_;           // spellings with continuations removed
-  std::vector<std::string_view> texts_;       // per token
-  std::vector<uint32_t> heights_;             // per node id
+  std::deque<std::string> cleaned_;                        // spellings with continuations removed
+  std::vector<std::string_view> texts_;                    // per token
   std::vector<std::pair<std::string, bool>> scope_names_;  // (name, is struct)
   std::vector<size_t> scope_marks_;
   uint32_t depth_ = 0;

@@ -176,4 +176,34 @@ void VisitPreorder(const SyntaxTree& tree,
   if (tree.Root() != nullptr) VisitPreorder(*tree.Root(), fn);
 }
 
+void VisitPostorder(const Node& start, const std::function<void(const Node& node)>& fn) {
+  // Each entry holds a node and its children, gathered on first visit.
+  struct Frame {
+    const Node* node;
+    std::vector<const Node*> children;
+    size_t next = 0;
+  };
+  std::vector<Frame> stack;
+  auto push = [&](const Node* node) {
+    Frame frame{node, {}, 0};
+    ForEachChild(*node, [&](const Node& child) { frame.children.push_back(&child); });
+    stack.push_back(std::move(frame));
+  };
+  push(&start);
+  while (!stack.empty()) {
+    Frame& top = stack.back();
+    if (top.next < top.children.size()) {
+      push(top.children[top.next++]);
+      continue;
+    }
+    const Node* done = top.node;
+    stack.pop_back();
+    fn(*done);
+  }
+}
+
+void VisitPostorder(const SyntaxTree& tree, const std::function<void(const Node& node)>& fn) {
+  if (tree.Root() != nullptr) VisitPostorder(*tree.Root(), fn);
+}
+
 }  // namespace shaderport::glsl

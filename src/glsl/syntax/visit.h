@@ -21,4 +21,9 @@ void VisitPreorder(const SyntaxTree& tree,
 void VisitPreorder(const Node& start,
                    const std::function<bool(const Node& node, uint32_t depth)>& fn);
 
+/// Calls `fn` on every node after all its children (children in source order):
+/// the order to compute bottom-up facts such as expression types without recursion.
+void VisitPostorder(const SyntaxTree& tree, const std::function<void(const Node& node)>& fn);
+void VisitPostorder(const Node& start, const std::function<void(const Node& node)>& fn);
+
 }  // namespace shaderport::glsl

@@ -14,6 +14,7 @@ struct ConformanceStage {
   std::string id;  // case id + ":vertex" / ":fragment"
   std::string source;
   bool should_compile;  // expected success, or a default stage
+  int context_version;  // 1: WebGL 1, 2: WebGL 2
 };
 
 struct ShaderToyPass {
@@ -34,7 +35,8 @@ inline std::vector<ConformanceStage> LoadConformanceStages() {
       const auto& success = expected[vertex ? "vShaderSuccess" : "fShaderSuccess"];
       const bool is_default = j.value(vertex ? "vIsDefault" : "fIsDefault", false);
       out.push_back({j["id"].get<std::string>() + ":" + stage, j[stage].get<std::string>(),
-                     is_default || (success.is_boolean() && success.get<bool>())});
+                     is_default || (success.is_boolean() && success.get<bool>()),
+                     j["contextVersion"].get<int>()});
     }
   }
   return out;

@@ -214,5 +214,28 @@ TEST(OutputFormat, EmptyReportStillPrintsValidDocuments) {
   EXPECT_EQ(FormatGithub(report, options), "");
 }
 
+TEST(OutputFormat, AnyRangeIsPrintedWithoutCrashing) {
+  // Producers have bugs: ranges past the end, reversed, in unknown files, inside
+  // multi-byte characters, on CR LF lines. Every format must still print something.
+  OneFile one(
+      "a\t\xC3\xA9\r\n\xF0\x9F\x8E\xA8"
+      "b\rc\n\xFF");
+  const uint32_t size = 14;
+  uint32_t seed = 12345;
+  auto next = [&seed] { return seed = seed * 1103515245u + 12345u; };
+  for (int i = 0; i < 400; ++i) {
+    Diagnostic d;
+    d.rule_id = "r/x";
+    d.range = {next() % 5 == 0 ? 3u : 0u, next() % (size + 3), next() % (size + 3)};
+    d.notes.push_back({{next() % 4 == 0 ? kNoFile : 0u, next() % size, next() % size}, "n"});
+    d.fixes.push_back({{0, next() % size, next() % size}, "x\ny", FixSafety::kSafe});
+    one.report.files[0].diagnostics.push_back(std::move(d));
+  }
+  for (OutputFormat format :
+       {OutputFormat::kText, OutputFormat::kJson, OutputFormat::kSarif, OutputFormat::kGithub}) {
+    EXPECT_FALSE(FormatReport(one.report, format, one.options).empty());
+  }
+}
+
 }  // namespace
 }  // namespace shaderport

@@ -44,10 +44,14 @@ std::string ValueOf(const Type& type) { return Spell(type) + "(1)"; }
 Type Mutate(const Type& type) {
   if (type.IsMatrix()) return Type::Vector(BaseType::kFloat, type.rows);
   switch (type.base) {
-    case BaseType::kFloat: return Type::Vector(BaseType::kInt, type.rows);
-    case BaseType::kInt: return Type::Vector(BaseType::kFloat, type.rows);
-    case BaseType::kUint: return Type::Vector(BaseType::kInt, type.rows);
-    default: return Type::Vector(BaseType::kFloat, type.rows);
+    case BaseType::kFloat:
+      return Type::Vector(BaseType::kInt, type.rows);
+    case BaseType::kInt:
+      return Type::Vector(BaseType::kFloat, type.rows);
+    case BaseType::kUint:
+      return Type::Vector(BaseType::kInt, type.rows);
+    default:
+      return Type::Vector(BaseType::kFloat, type.rows);
   }
 }
 
@@ -68,8 +72,8 @@ std::string CallShader(const BuiltinFunction& f, const std::vector<Type>& arg_ty
     }
     call += (i ? ", " : "") + name;
   }
-  return Header(version, extension) + globals + "void main() {\n" + locals + "  " +
-         Spell(result) + " r = " + call + ");\n}\n";
+  return Header(version, extension) + globals + "void main() {\n" + locals + "  " + Spell(result) +
+         " r = " + call + ");\n}\n";
 }
 
 struct Tally {
@@ -80,8 +84,8 @@ struct Tally {
     if (r.ok == expected) {
       ++agree;
     } else {
-      disagreements.push_back(what + (expected ? " (table: valid)" : " (table: invalid)") +
-                              "\n" + shader + r.log);
+      disagreements.push_back(what + (expected ? " (table: valid)" : " (table: invalid)") + "\n" +
+                              shader + r.log);
     }
   }
 };
@@ -163,8 +167,7 @@ TEST(BuiltinGlslangTest, VariablesAgreeWithGlslang) {
     for (const Combo& c : kCombos) {
       const BuiltinVariable* found = FindBuiltinVariable(v.name, c.version, c.stage);
       bool valid = found != nullptr && found->type == v.type;
-      std::string body = "void main() {\n  " + Spell(element, &structs) + " r = " + read +
-                         ";\n}\n";
+      std::string body = "void main() {\n  " + Spell(element, &structs) + " r = " + read + ";\n}\n";
       tally.Check(valid, Header(c.version, v.extension) + body, c.stage,
                   v.name + " in ESSL " + std::to_string(c.version));
       if (!valid) continue;
@@ -174,8 +177,8 @@ TEST(BuiltinGlslangTest, VariablesAgreeWithGlslang) {
       }
       Type other = element.IsStruct() ? Type::Float() : Mutate(element);
       tally.Check(false,
-                  Header(c.version, v.extension) + "void main() {\n  " + Spell(other) + " r = " +
-                      read + ";\n}\n",
+                  Header(c.version, v.extension) + "void main() {\n  " + Spell(other) +
+                      " r = " + read + ";\n}\n",
                   c.stage, v.name + " as " + Spell(other));
     }
   }

@@ -37,8 +37,8 @@ TEST(BuiltinTableTest, FamiliesExpand) {
 }
 
 TEST(BuiltinTableTest, ExactMatchOnly) {
-  BuiltinCallMatch m = ResolveBuiltinCall("pow", std::vector{kFloat, kInt}, 300,
-                                          ShaderStage::kFragment);
+  BuiltinCallMatch m =
+      ResolveBuiltinCall("pow", std::vector{kFloat, kInt}, 300, ShaderStage::kFragment);
   EXPECT_EQ(m.function, nullptr);
   m = ResolveBuiltinCall("pow", std::vector{kVec3, kVec3}, 300, ShaderStage::kFragment);
   ASSERT_NE(m.function, nullptr);
@@ -59,12 +59,12 @@ TEST(BuiltinTableTest, ExactMatchOnly) {
 }
 
 TEST(BuiltinTableTest, TextureLookups) {
-  BuiltinCallMatch m = ResolveBuiltinCall("texture", std::vector{kSampler2D, kVec2}, 300,
-                                          ShaderStage::kFragment);
+  BuiltinCallMatch m =
+      ResolveBuiltinCall("texture", std::vector{kSampler2D, kVec2}, 300, ShaderStage::kFragment);
   ASSERT_NE(m.function, nullptr);
   EXPECT_EQ(m.function->return_type, kVec4);
-  m = ResolveBuiltinCall("texture", std::vector{Type::Sampler(SamplerDim::k2D, BaseType::kInt),
-                                                kVec2, kFloat},
+  m = ResolveBuiltinCall("texture",
+                         std::vector{Type::Sampler(SamplerDim::k2D, BaseType::kInt), kVec2, kFloat},
                          300, ShaderStage::kFragment);
   ASSERT_NE(m.function, nullptr);
   EXPECT_EQ(m.function->return_type, Type::Vector(BaseType::kInt, 4));
@@ -74,8 +74,7 @@ TEST(BuiltinTableTest, TextureLookups) {
   ASSERT_NE(m.function, nullptr);
   EXPECT_FALSE(m.available);
   // texture2D is gone in 3.00 but still typed.
-  m = ResolveBuiltinCall("texture2D", std::vector{kSampler2D, kVec2}, 300,
-                         ShaderStage::kFragment);
+  m = ResolveBuiltinCall("texture2D", std::vector{kSampler2D, kVec2}, 300, ShaderStage::kFragment);
   ASSERT_NE(m.function, nullptr);
   EXPECT_FALSE(m.available);
   EXPECT_EQ(m.function->return_type, kVec4);
@@ -86,15 +85,14 @@ TEST(BuiltinTableTest, TextureLookups) {
 }
 
 TEST(BuiltinTableTest, UnknownArgumentsResolveWhenUnambiguous) {
-  BuiltinCallMatch m = ResolveBuiltinCall("length", std::vector{Type::Unknown()}, 300,
-                                          ShaderStage::kFragment);
+  BuiltinCallMatch m =
+      ResolveBuiltinCall("length", std::vector{Type::Unknown()}, 300, ShaderStage::kFragment);
   ASSERT_NE(m.function, nullptr);  // every length() returns float
   EXPECT_TRUE(m.uncertain);
   EXPECT_EQ(m.function->return_type, kFloat);
   m = ResolveBuiltinCall("normalize", std::vector{Type::Unknown()}, 300, ShaderStage::kFragment);
   EXPECT_EQ(m.function, nullptr);
-  m = ResolveBuiltinCall("cross", std::vector{Type::Unknown(), kVec3}, 300,
-                         ShaderStage::kFragment);
+  m = ResolveBuiltinCall("cross", std::vector{Type::Unknown(), kVec3}, 300, ShaderStage::kFragment);
   ASSERT_NE(m.function, nullptr);
   EXPECT_EQ(m.function->return_type, kVec3);
 }

@@ -17,8 +17,7 @@ TEST(TypeTest, SpellsAsGlslWrites) {
   EXPECT_EQ(Spell(Type::Float().ArrayOf(3)), "float[3]");
   EXPECT_EQ(Spell(Type::Vector(BaseType::kFloat, 4).ArrayOf(Type::kUnsizedArray)), "vec4[]");
   EXPECT_EQ(Spell(Type::Sampler(SamplerDim::k2DArray, BaseType::kUint)), "usampler2DArray");
-  EXPECT_EQ(Spell(Type::Sampler(SamplerDim::kCube, BaseType::kFloat, true)),
-            "samplerCubeShadow");
+  EXPECT_EQ(Spell(Type::Sampler(SamplerDim::kCube, BaseType::kFloat, true)), "samplerCubeShadow");
   EXPECT_EQ(Spell(Type::Unknown()), "unknown");
   EXPECT_EQ(Spell(Type::Void()), "void");
   StructTable structs;
@@ -29,12 +28,38 @@ TEST(TypeTest, SpellsAsGlslWrites) {
 }
 
 TEST(TypeTest, ParsesEveryBuiltinTypeName) {
-  for (const char* name :
-       {"void", "bool", "int", "uint", "float", "vec2", "vec3", "vec4", "bvec2", "ivec3", "uvec4",
-        "mat2", "mat3", "mat4", "mat2x3", "mat4x2", "mat3x4", "sampler2D", "samplerCube",
-        "sampler3D", "sampler2DShadow", "samplerCubeShadow", "sampler2DArray",
-        "sampler2DArrayShadow", "isampler2D", "isampler3D", "isamplerCube", "isampler2DArray",
-        "usampler2D", "usampler3D", "usamplerCube", "usampler2DArray"}) {
+  for (const char* name : {"void",
+                           "bool",
+                           "int",
+                           "uint",
+                           "float",
+                           "vec2",
+                           "vec3",
+                           "vec4",
+                           "bvec2",
+                           "ivec3",
+                           "uvec4",
+                           "mat2",
+                           "mat3",
+                           "mat4",
+                           "mat2x3",
+                           "mat4x2",
+                           "mat3x4",
+                           "sampler2D",
+                           "samplerCube",
+                           "sampler3D",
+                           "sampler2DShadow",
+                           "samplerCubeShadow",
+                           "sampler2DArray",
+                           "sampler2DArrayShadow",
+                           "isampler2D",
+                           "isampler3D",
+                           "isamplerCube",
+                           "isampler2DArray",
+                           "usampler2D",
+                           "usampler3D",
+                           "usamplerCube",
+                           "usampler2DArray"}) {
     std::optional<Type> t = BuiltinTypeByName(name);
     ASSERT_TRUE(t.has_value()) << name;
     EXPECT_EQ(Spell(*t), name);

@@ -171,6 +171,40 @@ TEST(CorpusManifest, EveryFileNamesItsOriginInALeadingComment) {
   }
 }
 
+// Files cut from a seed keep its text byte for byte, apart from the added origin comment. Files
+// assembled from several snippets (AO variants, the Steps 1-5 assembly) may only add the changed
+// call of the variant; every other line must be a line of the seed.
+TEST(CorpusManifest, SeedFilesKeepTheSeedText) {
+  const fs::path seeds = fs::path(SHADERPORT_SHARED_DIR) / "seeds";
+  if (!fs::exists(seeds)) GTEST_SKIP() << "no seeds at " << seeds;
+  int checked = 0;
+  for (const ManifestRow& row : ReadManifest()) {
+    if (row.origin.rfind("seeds/", 0) != 0) continue;
+    SCOPED_TRACE(row.path);
+    const std::string seed_name = row.origin.substr(0, row.origin.find(' '));
+    const std::string seed = ReadText(seeds / fs::path(seed_name).filename());
+    ASSERT_FALSE(seed.empty()) << seed_name;
+    std::string body = ReadText(kCorpusDir / row.path);
+    if (body.rfind("// origin: ", 0) == 0) body.erase(0, body.find('\n') + 1);
+    while (!body.empty() && body.back() == '\n') body.pop_back();
+    ++checked;
+    const bool assembled = row.path.rfind("ao/variant-", 0) == 0 || row.path == "ao/steps-1-5.glsl";
+    if (!assembled) {
+      EXPECT_NE(seed.find(body), std::string::npos) << "text differs from " << seed_name;
+      continue;
+    }
+    std::set<std::string> seed_lines;
+    std::istringstream seed_in(seed);
+    for (std::string line; std::getline(seed_in, line);) seed_lines.insert(line);
+    std::istringstream body_in(body);
+    for (std::string line; std::getline(body_in, line);) {
+      if (line.empty() || line.find("float ao = calcAO") != std::string::npos) continue;
+      EXPECT_TRUE(seed_lines.count(line)) << "line not in " << seed_name << ": " << line;
+    }
+  }
+  EXPECT_GE(checked, 20);
+}
+
 TEST(CorpusManifest, GlslangVerdictMatchesExpectColumn) {
   int compiled = 0;
   int failed = 0;

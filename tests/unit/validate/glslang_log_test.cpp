@@ -53,7 +53,8 @@ TEST(GlslangRulesTest, ClassifiesKnownMessages) {
   };
   EXPECT_EQ(rule("x", "undeclared identifier"), "glslang/undeclared-identifier");
   EXPECT_EQ(rule("pow", "no matching overloaded function found"), "glslang/no-matching-overload");
-  EXPECT_EQ(rule("=", "cannot convert from ' const int' to ' temp float'"), "glslang/type-mismatch");
+  EXPECT_EQ(rule("=", "cannot convert from ' const int' to ' temp float'"),
+            "glslang/type-mismatch");
   EXPECT_EQ(rule("*", "wrong operand types: no operation '*' exists ... cannot convert"),
             "glslang/wrong-operand-types");
   EXPECT_EQ(rule("varying", "Reserved word."), "glslang/reserved-word");

@@ -1,0 +1,140 @@
+#include "driver/check_file.h"
+
+#include <algorithm>
+#include <array>
+#include <string_view>
+
+#include "base/limits.h"
+#include "driver/dialect.h"
+#include "driver/front_end.h"
+#include "driver/read_input.h"
+#include "driver/suppress/suppressions.h"
+#include "validate/glslang_validator.h"
+#include "validate/shadertoy_contract.h"
+
+namespace shaderport::driver {
+namespace {
+
+// Breaches of our own limits: glslang is not run on such input.
+bool IsLimitBreach(std::string_view rule_id) {
+  static constexpr std::array<std::string_view, 5> kLimitRules = {
+      "lex/too-many-tokens", "syntax/nesting-too-deep", "preprocessor/macro-too-deep",
+      "preprocessor/expansion-too-large", "preprocessor/conditional-too-deep"};
+  return std::find(kLimitRules.begin(), kLimitRules.end(), rule_id) != kLimitRules.end();
+}
+
+Diagnostic WholeFileError(const SourceFile& file, std::string rule_id, std::string message) {
+  Diagnostic diagnostic;
+  diagnostic.severity = Severity::kError;
+  diagnostic.rule_id = std::move(rule_id);
+  diagnostic.range = {file.Id(), 0, 0};
+  diagnostic.message = std::move(message);
+  return diagnostic;
+}
+
+validate::PassType ToPassType(ShaderToyPass pass) {
+  switch (pass) {
+    case ShaderToyPass::kCubemap:
+      return validate::PassType::kCube;
+    case ShaderToyPass::kSound:
+      return validate::PassType::kSound;
+    case ShaderToyPass::kBuffer:
+      return validate::PassType::kBuffer;
+    case ShaderToyPass::kImage:
+    case ShaderToyPass::kCommon:
+      return validate::PassType::kImage;
+  }
+  return validate::PassType::kImage;
+}
+
+DetectedKind ResolveKind(const FileJob& job, const CheckOptions& options, const SourceFile& file) {
+  DetectedKind kind = DetectKind(file.Text(), job.path);
+  if (job.config != nullptr) {
+    const FileSettings settings = SettingsFor(*job.config, job.path);
+    if (settings.dialect) kind.dialect = *settings.dialect;
+    if (settings.stage) kind.stage = *settings.stage;
+  }
+  if (options.dialect) kind.dialect = *options.dialect;
+  if (options.stage) kind.stage = *options.stage;
+  return kind;
+}
+
+validate::ValidationRequest ComposeRequest(const FileJob& job, const CheckOptions& options,
+                                           const DetectedKind& kind, const SourceFile& file,
+                                           SourceManager& sources) {
+  const validate::Stage stage =
+      kind.stage == Stage::kVertex ? validate::Stage::kVertex : validate::Stage::kFragment;
+  if (kind.dialect != Dialect::kShaderToy) {
+    validate::ValidationRequest request;
+    request.parts.push_back({file.Name(), file.Text(), file.Id(), validate::PartKind::kUser});
+    request.stage = stage;
+    request.default_version = 100;  // no #version means GLSL ES 1.00, as in WebGL
+    return request;
+  }
+  const bool is_common = kind.pass == ShaderToyPass::kCommon;
+  validate::ValidationRequest request = validate::ComposeShaderToyRequest(
+      sources, ToPassType(kind.pass), options.channels, is_common ? nullptr : job.common, file);
+  // Common code has no entry point of its own: the site only compiles it inside
+  // a pass, so here it is compiled but not linked.
+  if (is_common) request.link = false;
+  return request;
+}
+
+}  // namespace
+
+const SourceFile* LoadSharedFile(const std::filesystem::path& path, SourceManager& sources,
+                                 std::string& error) {
+  InputText input = ReadInputFile(path);
+  if (!input.text) {
+    error = path.string() + ": " + input.message;
+    return nullptr;
+  }
+  return &sources.Add(path.string(), std::move(*input.text));
+}
+
+FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceManager& sources) {
+  FileReport report;
+  InputText input = ReadInputFile(job.path);
+  if (!input.text) {
+    report.file = &sources.Add(job.path.string(), "");
+    report.diagnostics.push_back(
+        WholeFileError(*report.file, std::move(input.rule_id), std::move(input.message)));
+    return report;
+  }
+  const SourceFile& file = sources.Add(job.path.string(), std::move(*input.text));
+  report.file = &file;
+  const DetectedKind kind = ResolveKind(job, options, file);
+  report.dialect = std::string(DialectName(kind.dialect));
+  report.stage = std::string(StageName(kind.stage));
+
+  const SourceFile* common = kind.dialect == Dialect::kShaderToy ? job.common : nullptr;
+  // Our own front end runs first: it enforces the limits (glslang has none
+  // against, e.g., 100,000 nested parentheses), and its tokens give the
+  // suppression comments and inactive regions.
+  const FrontEndResult front = RunFrontEnd(file, common, kind, sources);
+  for (const Diagnostic& diagnostic : front.diagnostics) {
+    if (IsLimitBreach(diagnostic.rule_id)) report.diagnostics.push_back(diagnostic);
+  }
+  if (!report.diagnostics.empty()) return report;
+
+  validate::ValidationResult result =
+      validate::ValidateWithGlslang(ComposeRequest(job, options, kind, file, sources));
+  report.diagnostics = std::move(result.diagnostics);
+  if (common != nullptr && job.common_checked_separately) {
+    // Common is an input of its own: its findings are reported once, there.
+    std::erase_if(report.diagnostics,
+                  [&](const Diagnostic& d) { return d.range.file == common->Id(); });
+  }
+  ApplySuppressions(file, front.lexed, report.diagnostics, front.preprocessed.inactive_regions);
+  if (job.config != nullptr) ApplyRuleConfig(*job.config, report.diagnostics);
+  if (report.diagnostics.size() > limits::kMaxDiagnosticsPerFile) {
+    report.diagnostics.resize(limits::kMaxDiagnosticsPerFile);
+    Diagnostic& last = report.diagnostics.back();
+    last.notes.push_back({{},
+                          "further diagnostics in this file were not shown (limit " +
+                              std::to_string(limits::kMaxDiagnosticsPerFile) + ")"});
+  }
+  return report;
+}
+
+}  // namespace shaderport::driver

@@ -1,0 +1,30 @@
+// The check of one input file, after the run has decided its settings.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+
+#include "driver/check_options.h"
+#include "driver/config/config.h"
+#include "report/check_report.h"
+#include "source/source_manager.h"
+
+namespace shaderport::driver {
+
+struct FileJob {
+  std::filesystem::path path;
+  const Config* config = nullptr;          // the .shaderport.toml that governs it, if any
+  const SourceFile* common = nullptr;      // ShaderToy Common code to compile before it
+  bool common_checked_separately = false;  // then Common's own findings are not repeated here
+};
+
+// Thread-safe: adds the file (and generated text) to `sources` and never throws
+// for bad input.
+FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceManager& sources);
+
+// Reads and registers a file that other files use (ShaderToy Common); nullptr
+// and a diagnostic message in `error` when it cannot be used.
+const SourceFile* LoadSharedFile(const std::filesystem::path& path, SourceManager& sources,
+                                 std::string& error);
+
+}  // namespace shaderport::driver

@@ -1,0 +1,26 @@
+// What a user can set for one `shaderport check` run.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+#include "diag/diagnostic.h"
+#include "driver/dialect.h"
+#include "validate/shadertoy_contract.h"
+
+namespace shaderport::driver {
+
+struct CheckOptions {
+  std::vector<std::filesystem::path> paths;
+  std::optional<Dialect> dialect;               // --dialect: overrides detection and config
+  std::optional<Stage> stage;                   // --stage
+  std::optional<std::filesystem::path> common;  // --common: ShaderToy Common for every pass
+  validate::ChannelTypes channels{};            // --channel N=2d|cube|3d (default all 2D)
+  std::optional<std::filesystem::path> config;  // --config: instead of searching upward
+  bool use_config = true;                       // --no-config
+  std::optional<Severity> fail_on;              // --fail-on: overrides the config's
+  unsigned jobs = 0;                            // 0: every core
+};
+
+}  // namespace shaderport::driver

@@ -1,0 +1,56 @@
+#include "driver/front_end.h"
+
+#include <vector>
+
+namespace shaderport::driver {
+namespace {
+
+glsl::ParseResult ParseUnit(const std::vector<const SourceFile*>& files, int forced_version,
+                            bool shadertoy, glsl::PreprocessResult& preprocessed) {
+  glsl::PreprocessOptions options;
+  // The site defines HW_PERFORMANCE for every pass.
+  if (shadertoy) options.predefined = {"HW_PERFORMANCE=1"};
+  preprocessed = glsl::Preprocess(files, options);
+  glsl::ParseOptions parse_options;
+  parse_options.version = forced_version != 0 ? forced_version : preprocessed.version.number;
+  return glsl::Parse(preprocessed, parse_options);
+}
+
+void Append(DiagnosticList& to, const DiagnosticList& from) {
+  to.insert(to.end(), from.begin(), from.end());
+}
+
+}  // namespace
+
+FrontEndResult RunFrontEnd(const SourceFile& file, const SourceFile* common,
+                           const DetectedKind& kind, SourceManager& sources,
+                           const FrontEndOptions& options) {
+  FrontEndResult result;
+  result.lexed = glsl::Lex(file);
+  const bool shadertoy = kind.dialect == Dialect::kShaderToy;
+  std::vector<const SourceFile*> files;
+  if (shadertoy && common != nullptr) files.push_back(common);
+  files.push_back(&file);
+  // ShaderToy code is compiled by the site as GLSL ES 3.00 behind its header.
+  result.parsed = ParseUnit(files, shadertoy ? glsl::kEssl300 : 0, shadertoy, result.preprocessed);
+  Append(result.diagnostics, result.preprocessed.diagnostics);
+  Append(result.diagnostics, result.parsed.diagnostics);
+
+  if (!options.analyze) return result;
+  glsl::AnalyzeOptions analyze;
+  analyze.version = shadertoy ? glsl::kEssl300 : result.preprocessed.version.number;
+  analyze.stage =
+      kind.stage == Stage::kVertex ? glsl::ShaderStage::kVertex : glsl::ShaderStage::kFragment;
+  if (shadertoy) {
+    const SourceFile& header =
+        sources.Add("<shadertoy-header>",
+                    validate::ShaderToyHeader(validate::PassType::kImage, options.channels), true);
+    glsl::PreprocessResult header_tokens;
+    result.header = ParseUnit({&header}, glsl::kEssl300, true, header_tokens);
+    analyze.header = &result.header->tree;
+  }
+  result.model = glsl::Analyze(result.parsed.tree, analyze);
+  return result;
+}
+
+}  // namespace shaderport::driver

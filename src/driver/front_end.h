@@ -1,0 +1,40 @@
+// Our own front end on one input: lexer, preprocessor, parser and, on request,
+// the semantic model, set up for the file's dialect (ShaderToy code sees the
+// site's uniforms and its Common code).
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "driver/dialect.h"
+#include "glsl/lex/lexer.h"
+#include "glsl/lex/preprocessor.h"
+#include "glsl/sema/semantic_model.h"
+#include "glsl/syntax/parser.h"
+#include "source/source_manager.h"
+#include "validate/shadertoy_contract.h"
+
+namespace shaderport::driver {
+
+struct FrontEndResult {
+  glsl::LexedFile lexed;                // the file alone (comments, suppressions)
+  glsl::PreprocessResult preprocessed;  // Common (if any) then the file
+  glsl::ParseResult parsed;
+  std::optional<glsl::ParseResult> header;   // ShaderToy's generated uniforms, parsed
+  std::optional<glsl::SemanticModel> model;  // when analysis was asked for
+  DiagnosticList diagnostics;                // lexer (of Common too), preprocessor, parser
+
+  bool HasErrors() const { return shaderport::HasErrors(diagnostics); }
+};
+
+struct FrontEndOptions {
+  bool analyze = false;
+  validate::ChannelTypes channels{};
+};
+
+// `sources` receives the generated ShaderToy header when the dialect needs it.
+FrontEndResult RunFrontEnd(const SourceFile& file, const SourceFile* common,
+                           const DetectedKind& kind, SourceManager& sources,
+                           const FrontEndOptions& options = {});
+
+}  // namespace shaderport::driver

@@ -1,0 +1,31 @@
+// Runs a job per index on a few threads. Each job writes only its own slot of
+// the caller's result vector, so output order never depends on scheduling.
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <thread>
+#include <vector>
+
+namespace shaderport::driver {
+
+template <typename Job>
+void ParallelFor(size_t count, unsigned jobs, Job&& job) {
+  if (jobs == 0) jobs = std::max(1u, std::thread::hardware_concurrency());
+  jobs = static_cast<unsigned>(std::min<size_t>(jobs, std::max<size_t>(count, 1)));
+  std::atomic<size_t> next{0};
+  auto worker = [&] {
+    for (size_t i = next++; i < count; i = next++) job(i);
+  };
+  if (jobs <= 1) {
+    worker();
+    return;
+  }
+  std::vector<std::jthread> threads;
+  threads.reserve(jobs - 1);
+  for (unsigned t = 1; t < jobs; ++t) threads.emplace_back(worker);
+  worker();
+}
+
+}  // namespace shaderport::driver

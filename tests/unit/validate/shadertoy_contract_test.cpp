@@ -1,0 +1,198 @@
+#include "validate/shadertoy_contract.h"
+
+#include <gtest/gtest.h>
+
+#include "validate/validate_test_util.h"
+
+namespace shaderport::validate {
+namespace {
+
+using testing::Where;
+
+constexpr ChannelTypes kAll2D = {ChannelType::k2D, ChannelType::k2D, ChannelType::k2D,
+                                 ChannelType::k2D};
+
+struct Compiled {
+  SourceManager sources;
+  FileId common = kNoFile;
+  FileId pass = kNoFile;
+  ValidationResult result;
+};
+
+std::unique_ptr<Compiled> CompilePass(const std::string& code, PassType type = PassType::kImage,
+                                      const std::string& common = "",
+                                      const ChannelTypes& channels = kAll2D) {
+  auto out = std::make_unique<Compiled>();
+  const SourceFile* common_file = nullptr;
+  if (!common.empty()) {
+    common_file = &out->sources.Add("Common", common);
+    out->common = common_file->Id();
+  }
+  const SourceFile& pass = out->sources.Add("Image", code);
+  out->pass = pass.Id();
+  out->result =
+      ValidateWithGlslang(ComposeShaderToyRequest(out->sources, type, channels, common_file, pass));
+  return out;
+}
+
+std::string Rules(const DiagnosticList& diagnostics) {
+  std::string out;
+  for (const auto& d : diagnostics) out += d.rule_id + " " + d.message + "\n";
+  return out;
+}
+
+TEST(ShaderToyContractTest, HeaderDeclaresTheSiteUniformsAndSamplers) {
+  const std::string header = ShaderToyHeader(
+      PassType::kImage, {ChannelType::k2D, ChannelType::kCube, ChannelType::k3D, ChannelType::k2D});
+  EXPECT_TRUE(header.starts_with("#version 300 es\n#ifdef GL_ES\nprecision highp float;\n"));
+  for (const char* line :
+       {"uniform vec3 iResolution;", "uniform float iTime;", "uniform float iChannelTime[4];",
+        "uniform vec4 iMouse;", "uniform vec4 iDate;", "uniform float iSampleRate;",
+        "uniform vec3 iChannelResolution[4];", "uniform int iFrame;", "uniform float iTimeDelta;",
+        "uniform float iFrameRate;", "uniform sampler2D iChannel0;",
+        "uniform samplerCube iChannel1;", "uniform sampler3D iChannel2;",
+        "uniform sampler2D iChannel3;", "#define HW_PERFORMANCE 1",
+        "precision mediump sampler3D;"}) {
+    EXPECT_NE(header.find(line), std::string::npos) << line;
+  }
+  EXPECT_NE(ShaderToyEpilogue(PassType::kImage).find("vec4(shadertoy_color.xyz, 1.0)"),
+            std::string::npos);
+  EXPECT_EQ(ShaderToyEpilogue(PassType::kBuffer).find("1.0)"), std::string::npos);
+}
+
+TEST(ShaderToyContractTest, TypicalImagePassCompilesAndLinks) {
+  auto c = CompilePass(
+      "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+      "  vec2 uv = fragCoord / iResolution.xy;\n"
+      "  fragColor = vec4(uv, 0.5 + 0.5 * sin(iTime), 1.0) * texture(iChannel0, uv);\n"
+      "}");  // no final newline: the next generated part must not join this line
+  EXPECT_TRUE(c->result.Accepted(true)) << Rules(c->result.diagnostics);
+  EXPECT_TRUE(c->result.diagnostics.empty()) << Rules(c->result.diagnostics);
+}
+
+TEST(ShaderToyContractTest, MediumpPrecisionStatementCompilesCleanly) {
+  auto c = CompilePass(
+      "precision mediump float;\n"
+      "void mainImage(out vec4 fragColor, in vec2 fragCoord) { fragColor = vec4(1.0); }\n");
+  EXPECT_TRUE(c->result.Accepted(true)) << Rules(c->result.diagnostics);
+  EXPECT_TRUE(c->result.diagnostics.empty()) << Rules(c->result.diagnostics);
+}
+
+TEST(ShaderToyContractTest, UserMacrosDoNotBreakTheGeneratedMain) {
+  auto c = CompilePass(
+      "#define color vec3(1.0)\n#define t iTime\n#define c 2.0\n"
+      "void mainImage(out vec4 O, in vec2 U) { O = vec4(color * t * c, 1.0); }\n");
+  EXPECT_TRUE(c->result.Accepted(true)) << Rules(c->result.diagnostics);
+}
+
+TEST(ShaderToyContractTest, EntryPointDefinedAsAMacroIsCalledLikeOnTheSite) {
+  // Corpus shader wddcz2 defines mainImage in Common as a function-like macro.
+  auto c =
+      CompilePass("vec4 Main(vec2 uv) { return vec4(uv, 0.0, 1.0); }\n", PassType::kImage,
+                  "vec4 Main(vec2 uv);\n#define mainImage(color, coord) (color = Main(coord))\n");
+  EXPECT_TRUE(c->result.Accepted(true)) << Rules(c->result.diagnostics);
+}
+
+TEST(ShaderToyContractTest, ErrorBehindTheHeaderLandsOnTheUserLine) {
+  auto c = CompilePass(
+      "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+      "  fragColor = vec4(fragCoord, iTime, undefinedThing);\n"
+      "}\n");
+  ASSERT_EQ(c->result.diagnostics.size(), 1u) << Rules(c->result.diagnostics);
+  const auto& d = c->result.diagnostics[0];
+  EXPECT_EQ(d.rule_id, "glslang/undeclared-identifier");
+  EXPECT_EQ(d.range.file, c->pass);
+  EXPECT_EQ(Where(c->sources, d.range), (LineColumn{2, 38}));
+}
+
+TEST(ShaderToyContractTest, ErrorInCommonLandsInCommon) {
+  auto c =
+      CompilePass("void mainImage(out vec4 o, in vec2 u) { o = vec4(helper()); }\n",
+                  PassType::kImage, "// shared code\nfloat helper() {\n  return pow(2.0, 2);\n}\n");
+  ASSERT_FALSE(c->result.diagnostics.empty());
+  const auto& d = c->result.diagnostics[0];
+  EXPECT_EQ(d.rule_id, "glslang/no-matching-overload");
+  EXPECT_EQ(d.range.file, c->common);
+  EXPECT_EQ(Where(c->sources, d.range), (LineColumn{3, 10}));
+}
+
+TEST(ShaderToyContractTest, MacroFromCommonIsVisibleInThePass) {
+  auto c = CompilePass("void mainImage(out vec4 o, in vec2 u) {\n  o = vec4(TWICE(1.0) + x);\n}\n",
+                       PassType::kImage, "#define TWICE(v) (2.0 * (v))\n");
+  ASSERT_EQ(c->result.diagnostics.size(), 1u) << Rules(c->result.diagnostics);
+  EXPECT_EQ(c->result.diagnostics[0].range.file, c->pass);
+  EXPECT_EQ(Where(c->sources, c->result.diagnostics[0].range), (LineColumn{2, 25}));
+}
+
+TEST(ShaderToyContractTest, MissingMainImageIsAUserErrorAtTheFile) {
+  auto c = CompilePass("void mainImg(out vec4 o, in vec2 u) { o = vec4(1.0); }\n");
+  EXPECT_TRUE(c->result.compiled);
+  EXPECT_FALSE(c->result.linked);
+  ASSERT_EQ(c->result.diagnostics.size(), 1u) << Rules(c->result.diagnostics);
+  EXPECT_EQ(c->result.diagnostics[0].rule_id, "glslang/missing-entry-point");
+  EXPECT_EQ(c->result.diagnostics[0].range, (SourceRange{c->pass, 0, 0}));
+}
+
+TEST(ShaderToyContractTest, WrongParametersPointAtTheUsersMainImage) {
+  auto c = CompilePass("\nvoid mainImage(out vec4 o, in vec2 u, float k) { o = vec4(k); }\n");
+  ASSERT_EQ(c->result.diagnostics.size(), 1u) << Rules(c->result.diagnostics);
+  EXPECT_EQ(c->result.diagnostics[0].rule_id, "glslang/missing-entry-point");
+  EXPECT_EQ(Where(c->sources, c->result.diagnostics[0].range), (LineColumn{2, 6}));
+}
+
+TEST(ShaderToyContractTest, WrongReturnTypeIsAnEntryPointMismatchNotInternal) {
+  auto c =
+      CompilePass("vec4 mainImage(out vec4 o, in vec2 u) {\n  o = vec4(1.0);\n  return o;\n}\n");
+  ASSERT_EQ(c->result.diagnostics.size(), 1u) << Rules(c->result.diagnostics);
+  const auto& d = c->result.diagnostics[0];
+  EXPECT_EQ(d.rule_id, "glslang/entry-point-mismatch");
+  EXPECT_EQ(d.range.file, c->pass);
+  EXPECT_EQ(Where(c->sources, d.range), (LineColumn{1, 6}));
+}
+
+TEST(ShaderToyContractTest, UnclosedBraceIsIncompleteUserCode) {
+  auto c = CompilePass("void mainImage(out vec4 o, in vec2 u) {\n  o = vec4(1.0);\n");
+  ASSERT_EQ(c->result.diagnostics.size(), 1u) << Rules(c->result.diagnostics);
+  const auto& d = c->result.diagnostics[0];
+  EXPECT_EQ(d.rule_id, "glslang/incomplete-code");
+  EXPECT_EQ(d.range.file, c->pass);
+  EXPECT_FALSE(d.notes.empty());  // the cascade is kept, not hidden
+}
+
+TEST(ShaderToyContractTest, ChannelTypesFollowTheInputs) {
+  const std::string code =
+      "void mainImage(out vec4 o, in vec2 u) { o = texture(iChannel1, vec3(u, 1.0)); }\n";
+  EXPECT_FALSE(CompilePass(code)->result.compiled);
+  auto cube = CompilePass(
+      code, PassType::kImage, "",
+      {ChannelType::k2D, ChannelTypeFromCtype("cubemap"), ChannelType::k2D, ChannelType::k2D});
+  EXPECT_TRUE(cube->result.Accepted(true)) << Rules(cube->result.diagnostics);
+  auto volume = CompilePass(
+      code, PassType::kImage, "",
+      {ChannelType::k2D, ChannelTypeFromCtype("volume"), ChannelType::k2D, ChannelType::k2D});
+  EXPECT_TRUE(volume->result.Accepted(true)) << Rules(volume->result.diagnostics);
+}
+
+TEST(ShaderToyContractTest, SoundAndCubePassesHaveTheirOwnMains) {
+  auto sound = CompilePass("vec2 mainSound(int samp, float time) { return vec2(sin(time)); }\n",
+                           PassType::kSound);
+  EXPECT_TRUE(sound->result.Accepted(true)) << Rules(sound->result.diagnostics);
+  auto cube = CompilePass(
+      "void mainCubemap(out vec4 o, in vec2 f, in vec3 ro, in vec3 rd) { o = vec4(rd, 1.0); }\n",
+      PassType::kCube);
+  EXPECT_TRUE(cube->result.Accepted(true)) << Rules(cube->result.diagnostics);
+  auto wrong =
+      CompilePass("void mainImage(out vec4 o, in vec2 u) { o = vec4(1.0); }\n", PassType::kSound);
+  ASSERT_EQ(wrong->result.diagnostics.size(), 1u);
+  EXPECT_EQ(wrong->result.diagnostics[0].rule_id, "glslang/missing-entry-point");
+}
+
+TEST(ShaderToyContractTest, NamesFromTheCorpusJson) {
+  EXPECT_EQ(PassTypeFromName("buffer"), PassType::kBuffer);
+  EXPECT_EQ(PassTypeFromName("common"), std::nullopt);
+  EXPECT_EQ(ChannelTypeFromCtype("texture"), ChannelType::k2D);
+  EXPECT_EQ(ChannelTypeFromCtype("keyboard"), ChannelType::k2D);
+}
+
+}  // namespace
+}  // namespace shaderport::validate

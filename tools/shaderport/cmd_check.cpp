@@ -1,0 +1,134 @@
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "commands.h"
+#include "driver/check_pipeline.h"
+#include "report/output_format.h"
+
+namespace shaderport::cli {
+namespace {
+
+struct CheckArgs {
+  std::vector<std::string> paths;
+  std::string format = "text";
+  std::string fail_on;
+  std::string dialect;
+  std::string stage;
+  std::string common;
+  std::vector<std::string> channels;
+  std::string config;
+  bool no_config = false;
+  unsigned jobs = 0;
+  std::string color = "auto";
+};
+
+bool ParseChannel(const std::string& spec, validate::ChannelTypes& channels) {
+  // N=2d|cube|3d
+  if (spec.size() < 3 || spec[1] != '=' || spec[0] < '0' || spec[0] > '3') return false;
+  const std::string type = spec.substr(2);
+  const auto index = static_cast<size_t>(spec[0] - '0');
+  if (type == "2d") {
+    channels[index] = validate::ChannelType::k2D;
+  } else if (type == "cube") {
+    channels[index] = validate::ChannelType::kCube;
+  } else if (type == "3d") {
+    channels[index] = validate::ChannelType::k3D;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+bool UseColor(const std::string& mode) {
+  if (mode == "always") return true;
+  if (mode == "never") return false;
+  const char* no_color = std::getenv("NO_COLOR");
+  return isatty(STDOUT_FILENO) != 0 && (no_color == nullptr || *no_color == '\0');
+}
+
+int Usage(const std::string& message) {
+  std::fprintf(stderr, "shaderport check: error: %s\n", message.c_str());
+  return kExitUsage;
+}
+
+int RunCheckCommand(const CheckArgs& args) {
+  driver::CheckOptions options;
+  for (const std::string& path : args.paths) options.paths.emplace_back(path);
+  const auto format = ParseOutputFormat(args.format);
+  if (!format) return Usage("unknown --format '" + args.format + "'");
+  if (!args.dialect.empty()) {
+    options.dialect = driver::ParseDialect(args.dialect);
+    if (!options.dialect) return Usage("unknown --dialect '" + args.dialect + "'");
+  }
+  if (!args.stage.empty()) {
+    options.stage = driver::ParseStage(args.stage);
+    if (!options.stage) return Usage("unknown --stage '" + args.stage + "'");
+  }
+  if (!args.fail_on.empty()) {
+    static const std::map<std::string, Severity> kLevels = {
+        {"error", Severity::kError}, {"warning", Severity::kWarning}, {"note", Severity::kNote}};
+    const auto it = kLevels.find(args.fail_on);
+    if (it == kLevels.end()) return Usage("unknown --fail-on '" + args.fail_on + "'");
+    options.fail_on = it->second;
+  }
+  for (const std::string& spec : args.channels) {
+    if (!ParseChannel(spec, options.channels)) {
+      return Usage("bad --channel '" + spec + "' (expected N=2d|cube|3d, N from 0 to 3)");
+    }
+  }
+  if (!args.common.empty()) options.common = args.common;
+  if (!args.config.empty()) options.config = args.config;
+  options.use_config = !args.no_config;
+  options.jobs = args.jobs;
+
+  driver::CheckRun run = driver::RunCheck(options);
+  for (const std::string& error : run.usage_errors) {
+    std::fprintf(stderr, "shaderport check: error: %s\n", error.c_str());
+  }
+  SortReport(run.report);
+  ReportOptions report_options;
+  report_options.tool_version = SHADERPORT_VERSION;
+  report_options.base_directory = std::filesystem::current_path().string();
+  report_options.color = *format == OutputFormat::kText && UseColor(args.color);
+  const std::string output = FormatReport(run.report, *format, report_options);
+  std::fwrite(output.data(), 1, output.size(), stdout);
+  std::fflush(stdout);
+  if (run.internal_error) return kExitInternal;
+  if (!run.usage_errors.empty()) return kExitUsage;
+  return run.failed ? kExitFindings : kExitOk;
+}
+
+}  // namespace
+
+void AddCheckCommand(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<CheckArgs>();
+  auto* command = app.add_subcommand(
+      "check", "Report every problem in shaders, as glslang and browsers would compile them");
+  command->add_option("paths", args->paths, "Files and directories to check")->required();
+  command->add_option("--format", args->format, "text | json | sarif | github")
+      ->capture_default_str();
+  command->add_option("--fail-on", args->fail_on,
+                      "Lowest severity that fails the check: error (default) | warning | note");
+  command->add_option("--dialect", args->dialect,
+                      "shadertoy | webgl1 | webgl2 (default: detected per file)");
+  command->add_option("--stage", args->stage, "vertex | fragment (default: from the extension)");
+  command->add_option("--common", args->common,
+                      "ShaderToy Common code compiled before every ShaderToy pass "
+                      "(default: common.glsl beside the pass)");
+  command->add_option("--channel", args->channels,
+                      "Sampler type of a ShaderToy channel, N=2d|cube|3d (repeatable)");
+  command->add_option("--config", args->config, "Use this .shaderport.toml instead of searching");
+  command->add_flag("--no-config", args->no_config, "Ignore .shaderport.toml files");
+  command->add_option("-j,--jobs", args->jobs, "Files checked in parallel (default: all cores)");
+  command->add_option("--color", args->color, "auto | always | never (NO_COLOR is honoured)")
+      ->capture_default_str();
+  command->callback([args, &exit_code] { exit_code = RunCheckCommand(*args); });
+}
+
+}  // namespace shaderport::cli
