@@ -12,7 +12,9 @@ declare -A allowed=(
   [toolchain]="base source diag toolchain"
   [validate]="base source diag glsl validate"
   [report]="base source diag report"
-  [driver]="base source diag glsl toolchain validate report driver rules"
+  [rule]="base source diag glsl rule"
+  [render]="base source diag render"
+  [driver]="base source diag glsl toolchain validate report rule render driver"
 )
 status=0
 for layer in "${!allowed[@]}"; do
@@ -27,5 +29,10 @@ for layer in "${!allowed[@]}"; do
     fi
   done < <(grep -rHE '^#include "[a-z_]+/' "$dir" || true)
 done
+# rules/ may use the rule framework and everything below it, nothing above.
+if grep -rHE '^#include "(driver|validate|report|toolchain|render)/' "$root/rules" 2>/dev/null; then
+  echo "layering: rules/ includes a layer above the rule framework" >&2
+  status=1
+fi
 # The CLI may include only the driver's public headers (and lower ones), never rules directly.
 exit $status

@@ -16,6 +16,12 @@ constexpr auto kUnsorted = std::to_array<RuleDescription>({
 #include "diag/catalog/glslang.def"
 #include "diag/catalog/config.def"
 #include "diag/catalog/internal.def"
+#include "diag/catalog/port.def"
+#include "diag/catalog/webgl2.def"
+#include "diag/catalog/shadertoy.def"
+#include "diag/catalog/typing.def"
+#include "diag/catalog/spirv.def"
+#include "diag/catalog/render.def"
 #undef RULE
 });
 

@@ -183,7 +183,8 @@ class Expander {
     use.name = macro.name;
     use.use = close ? Cover(name.token.spelling, close->token.spelling) : name.token.spelling;
     use.definition = macro.definition;
-    use.parent = name.token.macro_use;
+    // A name met while pre-expanding an argument belongs to the call it is an argument of.
+    use.parent = name.token.macro_use != kNoMacroUse ? name.token.macro_use : argument_of_use_;
     state_.result.macro_uses.push_back(std::move(use));
 
     std::vector<Piece> pieces;
@@ -208,7 +209,7 @@ class Expander {
       const std::vector<ExpToken>* arg = &args[param];
       if (!next_to_paste) {
         auto& cached = expanded_args[param];
-        if (!cached) cached = ExpandArgument(args[param]);
+        if (!cached) cached = ExpandArgument(args[param], use_id);
         arg = &*cached;
       }
       if (arg->empty() && next_to_paste) pieces.push_back({{}, false, true});
@@ -221,7 +222,9 @@ class Expander {
     std::vector<ExpToken> produced = ApplyPastes(std::move(pieces), expansion);
     for (ExpToken& p : produced) {
       p.token.expansion = expansion;
-      p.token.macro_use = use_id;
+      // Argument tokens that an earlier macro made keep that macro's use (the innermost
+      // one that produced them); body tokens and arguments written in the file get this use.
+      if (p.token.macro_use == kNoMacroUse) p.token.macro_use = use_id;
     }
     if (!produced.empty()) {
       produced[0].token.leading_space = name.token.leading_space;
@@ -246,7 +249,7 @@ class Expander {
                       " tokens; no further macros are expanded");
   }
 
-  std::vector<ExpToken> ExpandArgument(const std::vector<ExpToken>& arg) {
+  std::vector<ExpToken> ExpandArgument(const std::vector<ExpToken>& arg, uint32_t use_id) {
     // Each nested pre-expansion holds a copy of its argument: cap the nesting (real code
     // nests a few calls deep) and charge the copy, so memory stays bounded. Arguments past
     // the cap are substituted as written and expanded when the body is rescanned.
@@ -257,6 +260,7 @@ class Expander {
     state_.expanded_tokens += arg.size();
     Expander nested(state_, in_if_, depth_ + static_cast<uint32_t>(stack_.size()) + 1);
     nested.arg_nesting_ = arg_nesting_ + 1;
+    nested.argument_of_use_ = use_id;
     return nested.Run(arg);
   }
 
@@ -322,6 +326,7 @@ class Expander {
   bool in_if_;
   uint32_t depth_;
   uint32_t arg_nesting_ = 0;
+  uint32_t argument_of_use_ = kNoMacroUse;
   std::vector<Context> stack_;
   std::vector<ExpToken> out_;
 };
