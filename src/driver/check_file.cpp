@@ -50,7 +50,7 @@ validate::PassType ToPassType(ShaderToyPass pass) {
 DetectedKind ResolveKind(const FileJob& job, const CheckOptions& options, const SourceFile& file) {
   DetectedKind kind = DetectKind(file.Text(), job.path);
   if (job.config != nullptr) {
-    const FileSettings settings = SettingsFor(*job.config, job.path);
+    const FileSettings settings = SettingsFor(*job.config, std::filesystem::absolute(job.path));
     if (settings.dialect) kind.dialect = *settings.dialect;
     if (settings.stage) kind.stage = *settings.stage;
   }

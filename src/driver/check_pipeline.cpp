@@ -95,7 +95,8 @@ CheckRun RunCheck(const CheckOptions& options) {
     job.config = configs.For(path);
     const bool named =
         std::find(explicit_files.begin(), explicit_files.end(), path) != explicit_files.end();
-    if (!named && job.config != nullptr && !IsIncluded(*job.config, path)) continue;
+    // Config globs are relative to the config's (absolute) directory.
+    if (!named && job.config != nullptr && !IsIncluded(*job.config, fs::absolute(path))) continue;
     job.common = CommonFor(path, options, commons, sources, run);
     jobs.push_back(std::move(job));
   }

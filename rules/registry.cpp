@@ -1,0 +1,49 @@
+#include "rules/registry.h"
+
+#include <algorithm>
+
+#include "rules/all_rules.h"
+
+namespace shaderport::rules {
+namespace {
+
+std::vector<const rule::Rule*> BuildRegistry() {
+  std::vector<const rule::Rule*> list = {
+      // clang-format off
+      // ---- rules (sorted by rule id; one line per rule: &FooRule(),) ----
+      // ---- end of rules ----
+      // clang-format on
+  };
+  // Sorting makes the order (and so fix priority) independent of where a
+  // concurrent edit put its line.
+  std::stable_sort(list.begin(), list.end(), [](const rule::Rule* a, const rule::Rule* b) {
+    return a->Info().id < b->Info().id;
+  });
+  return list;
+}
+
+}  // namespace
+
+std::span<const rule::Rule* const> AllRules() {
+  static const std::vector<const rule::Rule*> registry = BuildRegistry();
+  return registry;
+}
+
+std::vector<const rule::Rule*> RulesForMode(rule::PortMode mode) {
+  std::vector<const rule::Rule*> selected;
+  for (const rule::Rule* r : AllRules()) {
+    if (mode == rule::PortMode::kPort || r->Info().scope == rule::RuleScope::kAlways) {
+      selected.push_back(r);
+    }
+  }
+  return selected;
+}
+
+const rule::Rule* FindRule(std::string_view id) {
+  for (const rule::Rule* r : AllRules()) {
+    if (r->Info().id == id) return r;
+  }
+  return nullptr;
+}
+
+}  // namespace shaderport::rules

@@ -1,0 +1,75 @@
+// `shaderport check` through the real binary: every format on a small project
+// with a config, Common code, suppressions and an excluded folder.
+#include <gtest/gtest.h>
+
+#include "cli_test_util.h"
+
+namespace shaderport::testing {
+namespace {
+
+const std::filesystem::path kProject = SourceDir() / "tests/data/check-project";
+const std::filesystem::path kGoldens = SourceDir() / "tests/golden/cli";
+
+class CheckFormatTest : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(CheckFormatTest, ProjectOutputMatchesGolden) {
+  const std::string format = GetParam();
+  const CommandResult result = RunShaderport("check --format " + format + " .", kProject);
+  EXPECT_EQ(result.exit_code, 1) << result.err;
+  EXPECT_EQ(result.err, "");
+  const std::string extension = format == "text" ? "txt" : format;
+  EXPECT_TRUE(MatchesGolden(result.out, kGoldens / ("check-project." + extension)));
+}
+
+INSTANTIATE_TEST_SUITE_P(Formats, CheckFormatTest,
+                         ::testing::Values("text", "json", "sarif", "github"));
+
+TEST(CheckCliTest, OutputIsTheSameWhateverTheThreadCount) {
+  const CommandResult one = RunShaderport("check --format json -j 1 .", kProject);
+  const CommandResult four = RunShaderport("check --format json -j 4 .", kProject);
+  EXPECT_EQ(one.out, four.out);
+  EXPECT_FALSE(one.out.empty());
+}
+
+TEST(CheckCliTest, ExcludedFilesAreSkippedUnlessNamed) {
+  const CommandResult walked = RunShaderport("check .", kProject);
+  EXPECT_EQ(walked.out.find("excluded/"), std::string::npos);
+  const CommandResult named = RunShaderport("check excluded/broken.frag", kProject);
+  EXPECT_NE(named.out.find("excluded/broken.frag:1:1: error"), std::string::npos) << named.out;
+  EXPECT_EQ(named.exit_code, 1);
+}
+
+TEST(CheckCliTest, ExitCodes) {
+  EXPECT_EQ(RunShaderport("check webgl1/ok.frag", kProject).exit_code, 0);
+  // A warning fails only when asked to.
+  EXPECT_EQ(RunShaderport("check webgl2/no-precision.frag", kProject).exit_code, 0);
+  EXPECT_EQ(RunShaderport("check --fail-on warning webgl2/no-precision.frag", kProject).exit_code,
+            1);
+  EXPECT_EQ(RunShaderport("check webgl1/bad.vert", kProject).exit_code, 1);
+  EXPECT_EQ(RunShaderport("check --format yaml .", kProject).exit_code, 2);
+  EXPECT_EQ(RunShaderport("check no-such-file.frag", kProject).exit_code, 2);
+  EXPECT_EQ(RunShaderport("check", kProject).exit_code, 2);
+}
+
+TEST(CheckCliTest, ColourOnlyWhenAskedOrOnATerminal) {
+  const CommandResult plain = RunShaderport("check webgl1/bad.vert", kProject);
+  EXPECT_EQ(plain.out.find('\x1b'), std::string::npos);
+  const CommandResult forced = RunShaderport("check --color always webgl1/bad.vert", kProject);
+  EXPECT_NE(forced.out.find('\x1b'), std::string::npos);
+}
+
+TEST(CheckCliTest, NoConfigMeansDefaultSeverities) {
+  const CommandResult result =
+      RunShaderport("check --no-config --format github webgl2/no-precision.frag", kProject);
+  EXPECT_NE(result.out.find("::error "), std::string::npos) << result.out;
+}
+
+TEST(CheckCliTest, DialectAndStageOverrides) {
+  // Read as a fragment shader, gl_Position is undeclared.
+  const CommandResult result = RunShaderport("check --stage fragment webgl1/bad.vert", kProject);
+  EXPECT_NE(result.out.find("gl_Position"), std::string::npos) << result.out;
+  EXPECT_EQ(RunShaderport("check --dialect nonsense webgl1/ok.frag", kProject).exit_code, 2);
+}
+
+}  // namespace
+}  // namespace shaderport::testing

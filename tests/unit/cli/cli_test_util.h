@@ -1,0 +1,70 @@
+// Runs the real shaderport binary and captures what it prints.
+#pragma once
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace shaderport::testing {
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+inline std::string ReadWholeFile(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+// `args` is passed to the shell as is; `directory` is the working directory.
+inline CommandResult RunShaderport(const std::string& args, const std::filesystem::path& directory,
+                                   const std::string& environment = "NO_COLOR=1") {
+  static int counter = 0;
+  const std::filesystem::path err_file = std::filesystem::temp_directory_path() /
+                                         ("shaderport-cli-" + std::to_string(::getpid()) + "-" +
+                                          std::to_string(counter++) + ".err");
+  const std::string command = "cd '" + directory.string() + "' && env " + environment + " '" +
+                              SHADERPORT_BINARY + "' " + args + " 2>'" + err_file.string() + "'";
+  CommandResult result;
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (pipe == nullptr) return result;
+  char buffer[65536];
+  size_t n = 0;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) result.out.append(buffer, n);
+  const int status = ::pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  result.err = ReadWholeFile(err_file);
+  std::filesystem::remove(err_file);
+  return result;
+}
+
+// Compares `actual` with a golden file, or rewrites it when SHADERPORT_UPDATE_GOLDENS=1.
+inline ::testing::AssertionResult MatchesGolden(const std::string& actual,
+                                                const std::filesystem::path& golden) {
+  const char* update = std::getenv("SHADERPORT_UPDATE_GOLDENS");
+  if (update != nullptr && std::string(update) == "1") {
+    std::filesystem::create_directories(golden.parent_path());
+    std::ofstream(golden, std::ios::binary) << actual;
+    return ::testing::AssertionSuccess();
+  }
+  if (!std::filesystem::exists(golden)) {
+    return ::testing::AssertionFailure()
+           << golden << " is missing; run with SHADERPORT_UPDATE_GOLDENS=1 and review it";
+  }
+  const std::string expected = ReadWholeFile(golden);
+  if (expected == actual) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "output differs from " << golden << "\n--- actual ---\n"
+                                       << actual;
+}
+
+inline std::filesystem::path SourceDir() { return SHADERPORT_SOURCE_DIR; }
+
+}  // namespace shaderport::testing
