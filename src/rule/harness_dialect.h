@@ -1,48 +1,89 @@
 // A harness dialect: what a shader host (ShaderToy, glslsandbox, The Book of
 // Shaders, a blog's harness) provides to the code and how its entry point
-// becomes a real main(). Dialects are data: TOML files under rules/dialects/,
-// and users pass their own with `--dialect FILE`.
+// becomes a real main(). Dialects are data: TOML files under rules/dialects/
+// (format in rules/dialects/README.md), and users pass their own with
+// `--dialect FILE`.
 #pragma once
 
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "diag/diagnostic.h"
+#include "source/source_file.h"
 
 namespace shaderport::rule {
 
+// How a provided variable is declared when the code is ported to WebGL2.
+enum class ProvidedStorage {
+  kUniform,  // `uniform vec3 iResolution;`
+  kInput,    // `in vec2 uv;` (a varying the harness's vertex shader writes)
+  kOutput,   // `out vec4 color;` (the harness reads it as the colour)
+};
+
 struct ProvidedVariable {
   std::string name;
-  std::string type;         // GLSL spelling: "vec3", "float[4]", "sampler2D"
-  std::string storage;      // "uniform" (declared as a uniform when porting) or "local"
-                            // (computed in the generated main(), see `init`)
-  std::string init;         // for "local": the GLSL expression that computes it
+  std::string type;       // GLSL spelling, optionally with one array size: "vec3", "float[4]"
+  ProvidedStorage storage = ProvidedStorage::kUniform;
+  std::string precision;  // "", "lowp", "mediump" or "highp"
+  int channel = -1;       // 0..3 for a texture channel whose sampler type the port chooses
+};
+
+// One function the user writes instead of main(), and the main() that calls it.
+struct EntryPoint {
+  std::string function;  // "mainImage"
+  // Body of the generated main(), one statement a line. Placeholders: `{entry}` is
+  // the function, `{out}` the generated output variable, `{fresh:NAME}` a local
+  // named NAME, or NAME_1, NAME_2... when the code already uses NAME.
+  std::string main_body;
+  std::string output_name = "fragColor";  // base name of the generated `out highp vec4`
+  // Extra variables this entry point's harness provides (e.g. mainCubemap's unCorners).
+  std::vector<ProvidedVariable> provides;
+};
+
+// Which provided variables a port declares.
+enum class DeclareMode {
+  kAll,   // every one, as the host does (ShaderToy: redeclaring one is an error there)
+  kUsed,  // only those the code uses and does not declare itself (glslsandbox code
+          // usually declares `uniform float time;` itself)
 };
 
 struct HarnessDialect {
-  std::string name;                        // "shadertoy", "glslsandbox", ...
+  std::string name;                  // "shadertoy", "glslsandbox", ...
+  std::vector<std::string> aliases;  // other names accepted by --dialect
   std::string description;
+  DeclareMode declare = DeclareMode::kUsed;
   std::vector<ProvidedVariable> provides;  // uniforms and values the harness supplies
-  std::vector<std::string> defines;        // e.g. "HW_PERFORMANCE 1"
-  // Entry point the user writes ("mainImage"), empty when the user writes main().
-  std::string entry_point;
-  // The generated main() body when porting; `{entry}` is replaced by entry_point
-  // and `{out}` by the declared fragment output's name.
-  std::string main_body;
-  // Variables the harness reads back as the colour (e.g. "color"), if the code
-  // writes a global instead of an out parameter.
-  std::string output_variable;
+  std::vector<std::string> defines;        // "HW_PERFORMANCE 1": `#define` lines it adds
+  // Functions the user may write instead of main(), in preference order. Empty when
+  // the user writes main() (glslsandbox, raymarch blog).
+  std::vector<EntryPoint> entry_points;
   // Old names the harness still accepts, renamed when porting: {"iGlobalTime", "iTime"}.
   std::vector<std::pair<std::string, std::string>> renames;
-  // Detection hints: identifiers whose use suggests this dialect.
+  // Detection hints: identifiers whose use suggests this dialect beyond `provides`.
   std::vector<std::string> hints;
+
+  bool NameMatches(std::string_view name_or_alias) const;
+  const ProvidedVariable* FindProvided(std::string_view variable) const;
+  const EntryPoint* FindEntryPoint(std::string_view function) const;
 };
 
 struct DialectLoadResult {
-  std::optional<HarnessDialect> dialect;
-  DiagnosticList diagnostics;  // errors in the TOML, located in the file
+  std::optional<HarnessDialect> dialect;  // absent when the file has errors
+  DiagnosticList diagnostics;             // errors in the TOML, located in the file
 };
+
+// Parses a dialect from TOML text. Errors are `dialect/...` diagnostics at the
+// offending line and column of `file`; unknown keys are warnings.
+DialectLoadResult ParseDialect(const SourceFile& file);
+
+// `uniform highp vec3 iResolution;`, `in vec2 uv;`, `uniform float iChannelTime[4];`.
+// `type_override` replaces the type (a channel's chosen sampler type).
+std::string DeclarationOf(const ProvidedVariable& variable, std::string_view type_override = {});
+
+// Spellings of ProvidedStorage and DeclareMode in the TOML.
+std::string_view StorageName(ProvidedStorage storage);
 
 }  // namespace shaderport::rule

@@ -12,6 +12,7 @@
 #include "glsl/sema/semantic_model.h"
 #include "glsl/syntax/ast.h"
 #include "rule/harness_dialect.h"
+#include "rule/macro_fixes.h"
 #include "source/source_file.h"
 
 namespace shaderport::rule {
@@ -72,7 +73,9 @@ class RuleContext {
   // agreement itself and set `allow_in_macro`.
   void Report(Diagnostic diagnostic, bool allow_in_macro = false);
 
-  DiagnosticList TakeDiagnostics() { return std::move(diagnostics_); }
+  // Called by the engine after the rule ran: settles the fixes that edit macro
+  // bodies (see MacroFixAgreement) and hands over everything reported.
+  DiagnosticList TakeDiagnostics();
   const DiagnosticList& Diagnostics() const { return diagnostics_; }
 
  private:
@@ -83,6 +86,8 @@ class RuleContext {
   const glsl::SemanticModel& model_;
   const PortSettings& settings_;
   DiagnosticList diagnostics_;
+  MacroFixAgreement macro_fixes_{preprocessed_};
+  bool over_limit_ = false;
 };
 
 }  // namespace shaderport::rule

@@ -33,10 +33,10 @@ struct EmitOptions {
 };
 
 struct EmitResult {
-  std::string output;        // text, or the raw SPIR-V bytes (little endian) for kSpirv
-  bool binary = false;       // true for kSpirv
-  size_t words_before = 0;   // SPIR-V words glslang produced (0 for kEssl)
-  size_t words_after = 0;    // after the optimiser (== words_before without `optimize`)
+  std::string output;          // text, or the raw SPIR-V bytes (little endian) for kSpirv
+  bool binary = false;         // true for kSpirv
+  size_t words_before = 0;     // SPIR-V words glslang produced (0 for kEssl)
+  size_t words_after = 0;      // after the optimiser (== words_before without `optimize`)
   DiagnosticList diagnostics;  // pointing into `file`; output is empty when HasErrors()
 };
 

@@ -25,6 +25,7 @@ constexpr auto kRules = std::to_array<std::pair<std::string_view, std::string_vi
     {"are reserved", "glslang/reserved-word"},             // identifiers starting with "gl_"
     {"reserved for future use", "glslang/reserved-word"},  // "__" in identifiers
     {"syntax error", "glslang/syntax-error"},
+    {"End of input in comment", "glslang/unterminated-comment"},
     {"Missing entry point", "glslang/missing-entry-point"},
     {"No function definition (body) found", "glslang/missing-entry-point"},
     {"redefinition", "glslang/redefinition"},

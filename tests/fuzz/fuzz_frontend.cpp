@@ -9,6 +9,8 @@
 #include "base/limits.h"
 #include "glsl/lex/lexer.h"
 #include "glsl/lex/preprocessor.h"
+#include "glsl/syntax/parser.h"
+#include "glsl/syntax/visit.h"
 #include "source/source_manager.h"
 
 namespace {
@@ -87,7 +89,21 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   Check(pp.diagnostics.size() <= limits::kMaxDiagnosticsPerFile + 1, "diagnostic cap");
 
-  // The parser joins here: parse `pp.tokens` and check the syntax tree's ranges.
   (void)DumpPpTokens(pp, sources);
+
+  // The parser: every node lies inside the files, and the tree is well formed
+  // (VisitPreorder reaches every node once: no cycles, no sharing).
+  glsl::ParseOptions parse_options;
+  parse_options.version = pp.version.number;
+  const glsl::ParseResult parsed = glsl::Parse(pp, parse_options);
+  std::vector<bool> seen(parsed.tree.NodeCount(), false);
+  glsl::VisitPreorder(parsed.tree, [&](const glsl::Node& node, uint32_t /*depth*/) {
+    Check(node.id < seen.size() && !seen[node.id], "each node reached once");
+    seen[node.id] = true;
+    if (node.range.Valid()) CheckRange(sources, node.range, "syntax node");
+    return true;
+  });
+  for (const auto& d : parsed.diagnostics) CheckRange(sources, d.range, "parser diagnostic");
+  (void)DumpAst(parsed.tree, sources);
   return 0;
 }

@@ -268,7 +268,6 @@ Expr* Parser::ParsePostfix() {
     } else {
       return expr;
     }
-    expr = expr;
   }
 }
 

@@ -1,0 +1,40 @@
+// Small helpers shared by the webgl2/* rules: fresh names, whole-line ranges,
+// fix-it construction and the top-of-file insertion point.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "diag/diagnostic.h"
+#include "rule/rule_context.h"
+
+namespace shaderport::rules::webgl2 {
+
+// True when `range` lies in the file being ported (not Common, not a header).
+bool InThisFile(const rule::RuleContext& context, const SourceRange& range);
+
+// True when `name` is spelled anywhere in the shader (file, Common, macros), is a
+// keyword or reserved word of GLSL ES 3.00, starts with "gl_" or names a built-in.
+bool NameTaken(const rule::RuleContext& context, std::string_view name);
+
+// `first` when it is free, else `first` + "_1", "_2", ... (never with "__", which
+// GLSL reserves).
+std::string FreshName(const rule::RuleContext& context, std::string_view first);
+
+// From the start of the line holding `range.begin` to the start of the line after
+// `range.end` (or the end of the text): deleting it removes the lines entirely.
+SourceRange WholeLines(const SourceFile& file, const SourceRange& range);
+
+// Offset just after the leading `#version` and `#extension` lines (and blank or
+// comment lines between them) of the file: where a declaration that must come
+// before any code is inserted. `saw_version` tells whether a #version was seen.
+uint32_t AfterLeadingDirectives(const rule::RuleContext& context, bool* saw_version);
+
+FixIt Replace(const SourceRange& range, std::string text);
+FixIt Insert(FileId file, uint32_t offset, std::string text);
+
+Diagnostic MakeDiagnostic(std::string_view rule_id, Severity severity, const SourceRange& range,
+                          std::string message);
+
+}  // namespace shaderport::rules::webgl2

@@ -1,0 +1,88 @@
+// What to draw and what came back. The request is plain data so that it can be
+// handed to a forked child; the outcome is what the child sends back through a pipe.
+#pragma once
+
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "render/gl_backend.h"
+
+namespace shaderport::render {
+
+// 8-bit RGBA, rows top-down (as PNG stores them).
+struct ImageRgba8 {
+  uint32_t width = 0;
+  uint32_t height = 0;
+  std::vector<uint8_t> pixels;  // width * height * 4
+};
+
+enum class ChannelKind : uint8_t { k2D, kCube, k3D };
+
+struct ChannelInput {
+  ChannelKind kind = ChannelKind::k2D;
+  ImageRgba8 image;  // used for k2D when non-empty, else a procedural texture
+};
+
+// Deterministic values for the ShaderToy uniforms (set only where the program has them).
+struct ShaderToyInputs {
+  float time = 1.0f;                             // iTime of the first frame
+  int frame = 0;                                 // iFrame of the first frame
+  float frame_rate = 60.0f;                      // frames advance iTime by 1/frame_rate
+  std::array<float, 4> mouse = {0, 0, 0, 0};     // iMouse, pixels
+  std::array<float, 4> date = {2025, 0, 1, 43200};  // iDate: fixed, so renders repeat
+  std::array<ChannelInput, 4> channels;
+};
+
+struct RenderRequest {
+  // Complete GLSL texts (`#version 300 es`). An empty vertex shader means the
+  // built-in full-screen triangle; an empty fragment shader a built-in flat shader,
+  // for smoke-testing a vertex shader on the generated mesh.
+  std::string vertex_source;
+  std::string fragment_source;
+  uint32_t width = 64;
+  uint32_t height = 64;
+  int frames = 1;  // frames drawn; the last one is read back
+  ShaderToyInputs inputs;
+};
+
+struct RenderOptions {
+  BackendKind backend = DefaultBackend();
+  std::chrono::milliseconds timeout{10'000};
+  uint64_t address_space_limit = uint64_t{4} << 30;  // RLIMIT_AS of the child; 0: none
+  bool hermetic = false;   // disable Mesa's shader cache
+  std::string cache_dir;   // Mesa shader cache; empty: $XDG_CACHE_HOME/shaderport/mesa
+};
+
+enum class RenderStatus : uint8_t {
+  kOk,
+  kCompileFailed,
+  kLinkFailed,
+  kContextFailed,
+  kTimeout,
+  kCrashed,
+  kInternal,
+};
+
+// The value the framebuffer is cleared to: a pixel still holding it was never written.
+inline constexpr std::array<float, 4> kSentinel = {-7777.0f, 1234.5f, -4321.0f, 9876.5f};
+
+struct RenderOutcome {
+  RenderStatus status = RenderStatus::kInternal;
+  std::string message;  // context failure, crash or timeout description
+  std::string vertex_log;
+  std::string fragment_log;
+  std::string link_log;
+  std::vector<std::string> gl_errors;  // "GL_INVALID_OPERATION after glDrawArrays"
+  uint32_t width = 0;
+  uint32_t height = 0;
+  std::vector<float> pixels;  // RGBA32F, rows bottom-up as glReadPixels returns them
+  double milliseconds = 0;    // wall time of the whole render, child start to result
+};
+
+// Maximum render size per side; larger requests are clamped by the caller's checks.
+inline constexpr uint32_t kMaxRenderSide = 4096;
+
+}  // namespace shaderport::render

@@ -1,0 +1,268 @@
+#include "render/uniform_values.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <string_view>
+
+#include "render/channel_textures.h"
+
+namespace shaderport::render {
+namespace {
+
+constexpr int kMaxTextureUnits = 16;
+
+struct UniformInfo {
+  std::string name;  // without a trailing "[0]"
+  GLint size = 1;
+  GLenum type = 0;
+  GLint location = -1;
+};
+
+std::string Lower(std::string_view text) {
+  std::string out(text);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+bool Contains(std::string_view haystack, std::string_view needle) {
+  return haystack.find(needle) != std::string_view::npos;
+}
+
+bool IsSampler(GLenum type) {
+  switch (type) {
+    case GL_SAMPLER_2D:
+    case GL_SAMPLER_3D:
+    case GL_SAMPLER_CUBE:
+    case GL_SAMPLER_2D_SHADOW:
+    case GL_SAMPLER_CUBE_SHADOW:
+    case GL_SAMPLER_2D_ARRAY:
+    case GL_SAMPLER_2D_ARRAY_SHADOW:
+    case GL_INT_SAMPLER_2D:
+    case GL_INT_SAMPLER_3D:
+    case GL_INT_SAMPLER_CUBE:
+    case GL_INT_SAMPLER_2D_ARRAY:
+    case GL_UNSIGNED_INT_SAMPLER_2D:
+    case GL_UNSIGNED_INT_SAMPLER_3D:
+    case GL_UNSIGNED_INT_SAMPLER_CUBE:
+    case GL_UNSIGNED_INT_SAMPLER_2D_ARRAY:
+      return true;
+    default:
+      return false;
+  }
+}
+
+std::vector<float> Identity(int n) {
+  std::vector<float> m(static_cast<size_t>(n * n), 0.0f);
+  for (int i = 0; i < n; ++i) m[static_cast<size_t>(i * n + i)] = 1.0f;
+  return m;
+}
+
+// Fills `count` elements of `components` floats each with the generic default.
+void SetGenericFloats(const GlFunctions& gl, const UniformInfo& u, int components,
+                      const RenderRequest& request, float time) {
+  const std::string name = Lower(u.name);
+  std::array<float, 4> value = {0.5f, 0.5f, 0.5f, 1.0f};
+  const float w = static_cast<float>(request.width);
+  const float h = static_cast<float>(request.height);
+  if (Contains(name, "texel")) {
+    value = {1.0f / w, 1.0f / h, 0.0f, 0.0f};
+  } else if (Contains(name, "resolution") || Contains(name, "viewport") ||
+             Contains(name, "size")) {
+    value = {w, h, 1.0f, 1.0f};
+  } else if (Contains(name, "time")) {
+    value = {time, time, time, time};
+  }
+  std::vector<float> data;
+  for (GLint i = 0; i < u.size; ++i) data.insert(data.end(), value.begin(), value.begin() + components);
+  switch (components) {
+    case 1:
+      gl.Uniform1fv(u.location, u.size, data.data());
+      break;
+    case 2:
+      gl.Uniform2fv(u.location, u.size, data.data());
+      break;
+    case 3:
+      gl.Uniform3fv(u.location, u.size, data.data());
+      break;
+    default:
+      gl.Uniform4fv(u.location, u.size, data.data());
+      break;
+  }
+}
+
+void SetMatrix(const GlFunctions& gl, const UniformInfo& u, int n, float aspect) {
+  const std::string name = Lower(u.name);
+  std::vector<float> m = Identity(n);
+  if (n == 4 && Contains(name, "proj")) {
+    m = PerspectiveMatrix(aspect);
+  } else if (n == 4 && Contains(name, "view")) {
+    m = ViewMatrix();
+  }
+  std::vector<float> data;
+  for (GLint i = 0; i < u.size; ++i) data.insert(data.end(), m.begin(), m.end());
+  if (n == 2) gl.UniformMatrix2fv(u.location, u.size, GL_FALSE, data.data());
+  if (n == 3) gl.UniformMatrix3fv(u.location, u.size, GL_FALSE, data.data());
+  if (n == 4) gl.UniformMatrix4fv(u.location, u.size, GL_FALSE, data.data());
+}
+
+void SetInts(const GlFunctions& gl, const UniformInfo& u, int components, int value) {
+  std::vector<GLint> data(static_cast<size_t>(u.size * components), value);
+  if (components == 1) gl.Uniform1iv(u.location, u.size, data.data());
+  if (components == 2) gl.Uniform2iv(u.location, u.size, data.data());
+  if (components == 3) gl.Uniform3iv(u.location, u.size, data.data());
+  if (components == 4) gl.Uniform4iv(u.location, u.size, data.data());
+}
+
+void SetUints(const GlFunctions& gl, const UniformInfo& u, int components) {
+  std::vector<GLuint> data(static_cast<size_t>(u.size * components), 1u);
+  if (components == 1) gl.Uniform1uiv(u.location, u.size, data.data());
+  if (components == 2) gl.Uniform2uiv(u.location, u.size, data.data());
+  if (components == 3) gl.Uniform3uiv(u.location, u.size, data.data());
+  if (components == 4) gl.Uniform4uiv(u.location, u.size, data.data());
+}
+
+// ShaderToy's uniforms; false when `u` is not one of them.
+bool SetShaderToyUniform(const GlFunctions& gl, const UniformInfo& u, const RenderRequest& request,
+                         int frame_index, const std::array<std::array<float, 3>, 4>& channel_res) {
+  const ShaderToyInputs& in = request.inputs;
+  const float delta = in.frame_rate > 0 ? 1.0f / in.frame_rate : 0.0f;
+  const float time = in.time + delta * static_cast<float>(frame_index);
+  const float w = static_cast<float>(request.width);
+  const float h = static_cast<float>(request.height);
+  const std::string& n = u.name;
+  if (n == "iResolution") {
+    const float v[3] = {w, h, 1.0f};
+    gl.Uniform3fv(u.location, 1, v);
+  } else if (n == "iTime" || n == "iGlobalTime" || n == "iTimeOffset") {
+    gl.Uniform1fv(u.location, 1, &time);
+  } else if (n == "iTimeDelta") {
+    gl.Uniform1fv(u.location, 1, &delta);
+  } else if (n == "iFrameRate") {
+    gl.Uniform1fv(u.location, 1, &in.frame_rate);
+  } else if (n == "iFrame") {
+    const GLint frame = in.frame + frame_index;
+    gl.Uniform1iv(u.location, 1, &frame);
+  } else if (n == "iMouse") {
+    gl.Uniform4fv(u.location, 1, in.mouse.data());
+  } else if (n == "iDate") {
+    gl.Uniform4fv(u.location, 1, in.date.data());
+  } else if (n == "iSampleRate") {
+    const float rate = 44100.0f;
+    gl.Uniform1fv(u.location, 1, &rate);
+  } else if (n == "iSampleOffset") {
+    const GLint zero = 0;
+    gl.Uniform1iv(u.location, 1, &zero);
+  } else if (n == "iChannelTime") {
+    const float times[4] = {time, time, time, time};
+    gl.Uniform1fv(u.location, std::min(u.size, 4), times);
+  } else if (n == "iChannelResolution") {
+    float res[12];
+    for (size_t i = 0; i < 4; ++i) std::copy_n(channel_res[i].data(), 3, &res[i * 3]);
+    gl.Uniform3fv(u.location, std::min(u.size, 4), res);
+  } else if (n == "unViewport") {
+    const float v[4] = {0.0f, 0.0f, w, h};
+    gl.Uniform4fv(u.location, 1, v);
+  } else if (n == "unCorners") {
+    // The +Z face seen from the origin: bottom-left, bottom-right, top-right,
+    // top-left, then the ray origin (the order the site's main() mixes them in).
+    const float corners[15] = {-1, -1, 1, 1, -1, 1, 1, 1, 1, -1, 1, 1, 0, 0, 0};
+    gl.Uniform3fv(u.location, std::min(u.size, 5), corners);
+  } else {
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::vector<float> PerspectiveMatrix(float aspect) {
+  const float fov = 60.0f * 3.14159265f / 180.0f;
+  const float f = 1.0f / std::tan(fov / 2.0f);
+  const float near_plane = 0.1f;
+  const float far_plane = 100.0f;
+  std::vector<float> m(16, 0.0f);
+  m[0] = f / aspect;
+  m[5] = f;
+  m[10] = (far_plane + near_plane) / (near_plane - far_plane);
+  m[11] = -1.0f;
+  m[14] = 2.0f * far_plane * near_plane / (near_plane - far_plane);
+  return m;
+}
+
+std::vector<float> ViewMatrix() {
+  std::vector<float> m = Identity(4);
+  m[14] = -3.0f;  // camera 3 units back along +Z, looking at the origin
+  return m;
+}
+
+void SetUniforms(const GlFunctions& gl, GLuint program, const RenderRequest& request,
+                 int frame_index, std::vector<GLuint>& textures) {
+  GLint count = 0;
+  gl.GetProgramiv(program, GL_ACTIVE_UNIFORMS, &count);
+  std::vector<UniformInfo> uniforms;
+  for (GLint i = 0; i < count; ++i) {
+    char buffer[256] = {};
+    GLsizei length = 0;
+    UniformInfo u;
+    gl.GetActiveUniform(program, static_cast<GLuint>(i), sizeof(buffer), &length, &u.size, &u.type,
+                        buffer);
+    u.name.assign(buffer, static_cast<size_t>(length));
+    u.location = gl.GetUniformLocation(program, u.name.c_str());
+    if (u.location < 0) continue;  // a uniform block member
+    if (u.name.size() > 3 && u.name.ends_with("[0]")) u.name.resize(u.name.size() - 3);
+    uniforms.push_back(std::move(u));
+  }
+  // Samplers first, so iChannelResolution knows the texture sizes.
+  std::array<std::array<float, 3>, 4> channel_res{};
+  int unit = 0;
+  const bool first_frame = textures.empty();
+  for (const UniformInfo& u : uniforms) {
+    if (!IsSampler(u.type)) continue;
+    if (unit >= kMaxTextureUnits) break;
+    const GLint this_unit = unit++;
+    gl.Uniform1iv(u.location, 1, &this_unit);
+    int channel = -1;
+    if (u.name.size() == 9 && u.name.starts_with("iChannel") && u.name[8] >= '0' &&
+        u.name[8] <= '3') {
+      channel = u.name[8] - '0';
+    }
+    if (!first_frame) continue;  // textures stay bound to their units across frames
+    gl.ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(this_unit));
+    static const ImageRgba8 kNoImage;
+    const ImageRgba8& image =
+        channel >= 0 ? request.inputs.channels[static_cast<size_t>(channel)].image : kNoImage;
+    const BoundTexture bound = CreateChannelTexture(gl, u.type, image);
+    textures.push_back(bound.name);
+    if (channel >= 0) channel_res[static_cast<size_t>(channel)] = {bound.width, bound.height, bound.depth};
+  }
+  gl.ActiveTexture(GL_TEXTURE0);
+  const float aspect = static_cast<float>(request.width) / static_cast<float>(request.height);
+  const float delta = request.inputs.frame_rate > 0 ? 1.0f / request.inputs.frame_rate : 0.0f;
+  const float time = request.inputs.time + delta * static_cast<float>(frame_index);
+  for (const UniformInfo& u : uniforms) {
+    if (IsSampler(u.type)) continue;
+    if (SetShaderToyUniform(gl, u, request, frame_index, channel_res)) continue;
+    switch (u.type) {
+      case GL_FLOAT: SetGenericFloats(gl, u, 1, request, time); break;
+      case GL_FLOAT_VEC2: SetGenericFloats(gl, u, 2, request, time); break;
+      case GL_FLOAT_VEC3: SetGenericFloats(gl, u, 3, request, time); break;
+      case GL_FLOAT_VEC4: SetGenericFloats(gl, u, 4, request, time); break;
+      case GL_INT: case GL_BOOL: SetInts(gl, u, 1, 1); break;
+      case GL_INT_VEC2: case GL_BOOL_VEC2: SetInts(gl, u, 2, 1); break;
+      case GL_INT_VEC3: case GL_BOOL_VEC3: SetInts(gl, u, 3, 1); break;
+      case GL_INT_VEC4: case GL_BOOL_VEC4: SetInts(gl, u, 4, 1); break;
+      case GL_UNSIGNED_INT: SetUints(gl, u, 1); break;
+      case GL_UNSIGNED_INT_VEC2: SetUints(gl, u, 2); break;
+      case GL_UNSIGNED_INT_VEC3: SetUints(gl, u, 3); break;
+      case GL_UNSIGNED_INT_VEC4: SetUints(gl, u, 4); break;
+      case GL_FLOAT_MAT2: SetMatrix(gl, u, 2, aspect); break;
+      case GL_FLOAT_MAT3: SetMatrix(gl, u, 3, aspect); break;
+      case GL_FLOAT_MAT4: SetMatrix(gl, u, 4, aspect); break;
+      default: break;  // non-square matrices keep their zero default
+    }
+  }
+}
+
+}  // namespace shaderport::render

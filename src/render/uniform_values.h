@@ -1,0 +1,23 @@
+// Values for every active uniform of a linked program: ShaderToy's by name, and
+// sensible defaults by name and type for others (perspective for *Projection*,
+// a camera a few units back for *View*, identity for other matrices).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "render/gl_functions.h"
+#include "render/render_request.h"
+
+namespace shaderport::render {
+
+// Sets all active uniforms for frame `frame_index` (0-based). Samplers get texture
+// units; textures are created on first use and kept in `textures` for deletion.
+void SetUniforms(const GlFunctions& gl, GLuint program, const RenderRequest& request,
+                 int frame_index, std::vector<GLuint>& textures);
+
+// Column-major 4x4 matrices, exposed for tests.
+std::vector<float> PerspectiveMatrix(float aspect);
+std::vector<float> ViewMatrix();
+
+}  // namespace shaderport::render

@@ -1,0 +1,165 @@
+#include "rule/fix_engine.h"
+
+#include <algorithm>
+#include <exception>
+
+#include "glsl/syntax/parser.h"
+#include "rule/fix_selection.h"
+
+namespace shaderport::rule {
+namespace {
+
+struct PlainAnalysis {
+  glsl::LexedFile lexed;
+  glsl::PreprocessResult preprocessed;
+  glsl::ParseResult parsed;
+  glsl::SemanticModel model;
+};
+
+SourceRange MapRange(const SourceRange& range, const SourceMap& map, FileId file) {
+  if (range.file != file) return range;
+  const auto [begin, end] = map.ToOriginalRange(range.begin, range.end);
+  return {file, begin, end};
+}
+
+// Runs every rule on one analysed text; diagnostics come back in registry order.
+DiagnosticList RunRules(const SourceFile& file, const AnalyzedShader& analysis,
+                        const FixEngineOptions& options) {
+  DiagnosticList all;
+  for (const Rule* rule : options.rules) {
+    RuleContext context(file, *analysis.lexed, *analysis.preprocessed, *analysis.tree,
+                        *analysis.model, options.settings);
+    try {
+      rule->Run(context);
+    } catch (const std::exception& e) {
+      Diagnostic failure;
+      failure.rule_id = "internal/error";
+      failure.range = {file.Id(), 0, 0};
+      failure.message = "rule '" + std::string(rule->Info().id) + "' failed: " + e.what();
+      context.Report(std::move(failure));
+    }
+    for (Diagnostic& d : context.TakeDiagnostics()) {
+      if (d.rule_id.empty()) d.rule_id = std::string(rule->Info().id);
+      all.push_back(std::move(d));
+    }
+  }
+  return all;
+}
+
+std::string FightingRules(const DiagnosticList& diagnostics, const std::vector<size_t>& applied) {
+  std::vector<std::string> ids;
+  for (size_t i : applied) {
+    if (std::find(ids.begin(), ids.end(), diagnostics[i].rule_id) == ids.end()) {
+      ids.push_back(diagnostics[i].rule_id);
+    }
+  }
+  std::string joined;
+  for (const std::string& id : ids) joined += (joined.empty() ? "" : ", ") + id;
+  return joined;
+}
+
+}  // namespace
+
+AnalyzedShader AnalyzePlain(const SourceFile& file, int version, ShaderStage stage,
+                            std::vector<std::string> predefined) {
+  auto analysis = std::make_shared<PlainAnalysis>();
+  analysis->lexed = glsl::Lex(file);
+  const SourceFile* files[] = {&file};
+  glsl::PreprocessOptions pp_options;
+  pp_options.predefined = std::move(predefined);
+  analysis->preprocessed = glsl::Preprocess(files, pp_options);
+  glsl::ParseOptions parse_options;
+  parse_options.version = version != 0 ? version : analysis->preprocessed.version.number;
+  analysis->parsed = glsl::Parse(analysis->preprocessed, parse_options);
+  glsl::AnalyzeOptions analyze_options;
+  analyze_options.version = parse_options.version;
+  analyze_options.stage =
+      stage == ShaderStage::kVertex ? glsl::ShaderStage::kVertex : glsl::ShaderStage::kFragment;
+  analysis->model = glsl::Analyze(analysis->parsed.tree, analyze_options);
+
+  AnalyzedShader shader;
+  shader.lexed = &analysis->lexed;
+  shader.preprocessed = &analysis->preprocessed;
+  shader.tree = &analysis->parsed.tree;
+  shader.model = &analysis->model;
+  shader.diagnostics = analysis->lexed.diagnostics;
+  for (const auto* list : {&analysis->preprocessed.diagnostics, &analysis->parsed.diagnostics}) {
+    shader.diagnostics.insert(shader.diagnostics.end(), list->begin(), list->end());
+  }
+  shader.owner = analysis;
+  return shader;
+}
+
+Diagnostic MapToOriginal(Diagnostic diagnostic, const SourceMap& map, FileId file) {
+  diagnostic.range = MapRange(diagnostic.range, map, file);
+  for (DiagnosticNote& note : diagnostic.notes) note.range = MapRange(note.range, map, file);
+  std::vector<FixIt> kept;
+  for (FixIt& fix : diagnostic.fixes) {
+    if (fix.range.file == file && !map.IsCopied(fix.range.begin, fix.range.end)) continue;
+    fix.range = MapRange(fix.range, map, file);
+    kept.push_back(std::move(fix));
+  }
+  diagnostic.fixes = std::move(kept);
+  return diagnostic;
+}
+
+FixEngineResult RunFixEngine(const SourceFile& original, const FixEngineOptions& options) {
+  const Analyzer analyze = options.analyze ? options.analyze : [&](const SourceFile& file) {
+    return AnalyzePlain(file, 0, options.settings.stage);
+  };
+  const FileId id = original.Id();
+  FixEngineResult result;
+  result.text = std::string(original.Text());
+  result.map = SourceMap::Identity(static_cast<uint32_t>(result.text.size()));
+
+  for (int round = 0;; ++round) {
+    // The edited text keeps the original's id: its ranges are mapped back below.
+    const SourceFile current(id, original.Name(), result.text);
+    const AnalyzedShader analysis = analyze(current);
+    DiagnosticList found = RunRules(current, analysis, options);
+
+    FixSelectionOptions selection_options;
+    selection_options.file = id;
+    selection_options.apply_suggestions = options.apply_suggestions;
+    selection_options.refused_note = options.refused_note;
+    if (options.allow_fix) {
+      selection_options.allow = [&](const Diagnostic& d) {
+        return options.allow_fix(MapToOriginal(d, result.map, id));
+      };
+    }
+    const FixSelection selection = SelectFixes(found, selection_options);
+    const bool last_round = round >= options.max_rounds;
+    std::optional<EditResult> edited;
+    if (!selection.edits.empty() && !last_round) edited = ApplyEdits(result.text, selection.edits);
+
+    if (!edited) {
+      if (!selection.edits.empty()) {
+        result.converged = !last_round;
+        Diagnostic fight;
+        fight.rule_id = "internal/error";
+        fight.range = {id, 0, 0};
+        fight.message = last_round ? "rules still wanted changes after " +
+                                         std::to_string(options.max_rounds) +
+                                         " rounds; they undo each other's fixes: " +
+                                         FightingRules(found, selection.applied)
+                                   : "the chosen fixes could not be applied";
+        result.remaining.push_back(fight);
+      }
+      for (Diagnostic& d : found) result.remaining.push_back(MapToOriginal(d, result.map, id));
+      for (const Diagnostic& d : analysis.diagnostics) {
+        result.front_end.push_back(MapToOriginal(d, result.map, id));
+      }
+      return result;
+    }
+    for (size_t i : selection.applied) {
+      Diagnostic fixed = MapToOriginal(found[i], result.map, id);
+      fixed.fixes.clear();  // already applied; their ranges pointed into an older text
+      result.fixed.push_back(std::move(fixed));
+    }
+    result.map = SourceMap::Compose(result.map, edited->map);
+    result.text = std::move(edited->text);
+    ++result.rounds;
+  }
+}
+
+}  // namespace shaderport::rule

@@ -1,0 +1,61 @@
+#include "rule/harness_dialect.h"
+
+namespace shaderport::rule {
+
+bool HarnessDialect::NameMatches(std::string_view name_or_alias) const {
+  if (name == name_or_alias) return true;
+  for (const std::string& alias : aliases) {
+    if (alias == name_or_alias) return true;
+  }
+  return false;
+}
+
+const ProvidedVariable* HarnessDialect::FindProvided(std::string_view variable) const {
+  for (const ProvidedVariable& provided : provides) {
+    if (provided.name == variable) return &provided;
+  }
+  for (const EntryPoint& entry : entry_points) {
+    for (const ProvidedVariable& provided : entry.provides) {
+      if (provided.name == variable) return &provided;
+    }
+  }
+  return nullptr;
+}
+
+const EntryPoint* HarnessDialect::FindEntryPoint(std::string_view function) const {
+  for (const EntryPoint& entry : entry_points) {
+    if (entry.function == function) return &entry;
+  }
+  return nullptr;
+}
+
+std::string_view StorageName(ProvidedStorage storage) {
+  switch (storage) {
+    case ProvidedStorage::kInput:
+      return "in";
+    case ProvidedStorage::kOutput:
+      return "out";
+    case ProvidedStorage::kUniform:
+      break;
+  }
+  return "uniform";
+}
+
+std::string DeclarationOf(const ProvidedVariable& variable, std::string_view type_override) {
+  const std::string_view type = type_override.empty() ? variable.type : type_override;
+  // GLSL ES writes the array size after the name: `uniform float iChannelTime[4];`.
+  const size_t bracket = type.find('[');
+  const std::string_view base = type.substr(0, bracket);
+  const std::string_view array = bracket == std::string_view::npos ? "" : type.substr(bracket);
+  std::string text(StorageName(variable.storage));
+  text += ' ';
+  if (!variable.precision.empty()) text += variable.precision + " ";
+  text += base;
+  text += ' ';
+  text += variable.name;
+  text += array;
+  text += ';';
+  return text;
+}
+
+}  // namespace shaderport::rule

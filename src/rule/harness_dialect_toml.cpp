@@ -1,0 +1,327 @@
+// Reads a harness dialect from TOML (format: rules/dialects/README.md). Every
+// problem is a diagnostic at its line and column; nothing throws out of here.
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <array>
+#include <set>
+
+#include "rule/harness_dialect.h"
+
+namespace shaderport::rule {
+namespace {
+
+// Dialect files are a few KiB; anything much larger is not one.
+constexpr size_t kMaxDialectBytes = 1u << 20;
+
+bool IsIdentifier(std::string_view text) {
+  if (text.empty() || text.size() > 1024) return false;
+  auto alpha = [](char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_'; };
+  if (!alpha(text[0])) return false;
+  return std::all_of(text.begin(), text.end(),
+                     [&](char c) { return alpha(c) || (c >= '0' && c <= '9'); });
+}
+
+bool IsKnownTypeName(std::string_view type) {
+  static const std::set<std::string_view> kTypes = {
+      "float",          "int",          "uint",          "bool",           "vec2",
+      "vec3",           "vec4",         "ivec2",         "ivec3",          "ivec4",
+      "uvec2",          "uvec3",        "uvec4",         "bvec2",          "bvec3",
+      "bvec4",          "mat2",         "mat3",          "mat4",           "mat2x2",
+      "mat2x3",         "mat2x4",       "mat3x2",        "mat3x3",         "mat3x4",
+      "mat4x2",         "mat4x3",       "mat4x4",        "sampler2D",      "samplerCube",
+      "sampler3D",      "sampler2DArray", "isampler2D",  "usampler2D",     "sampler2DShadow"};
+  return kTypes.contains(type);
+}
+
+// "vec3" or "float[4]": a known type and at most one positive array size.
+bool IsValidType(std::string_view type) {
+  const size_t bracket = type.find('[');
+  if (bracket == std::string_view::npos) return IsKnownTypeName(type);
+  if (type.back() != ']' || bracket + 2 >= type.size()) return false;
+  const std::string_view size = type.substr(bracket + 1, type.size() - bracket - 2);
+  if (size.size() > 4 || size[0] == '0') return false;
+  if (!std::all_of(size.begin(), size.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+    return false;
+  }
+  return IsKnownTypeName(type.substr(0, bracket));
+}
+
+class DialectParser {
+ public:
+  explicit DialectParser(const SourceFile& file) : file_(file) {}
+
+  DialectLoadResult Run() {
+    if (file_.Text().size() > kMaxDialectBytes) {
+      Error({}, "the dialect file is larger than 1 MiB");
+      return Finish();
+    }
+    toml::table root;
+    try {
+      root = toml::parse(file_.Text(), std::string_view(file_.Name()));
+    } catch (const toml::parse_error& error) {
+      Report(Severity::kError, "dialect/syntax-error", RangeOf(error.source()),
+             "invalid TOML: " + std::string(error.description()));
+      return Finish();
+    }
+    for (auto&& [key, value] : root) ReadTopLevel(key, value);
+    if (dialect_.name.empty() && !saw_name_) {
+      Report(Severity::kError, "dialect/missing-key", {file_.Id(), 0, 0},
+             "the dialect has no 'name'");
+    }
+    return Finish();
+  }
+
+ private:
+  DialectLoadResult Finish() {
+    // toml++ tables iterate in key order: report in file order instead.
+    std::stable_sort(
+        result_.diagnostics.begin(), result_.diagnostics.end(),
+        [](const Diagnostic& a, const Diagnostic& b) { return a.range.begin < b.range.begin; });
+    if (!HasErrors(result_.diagnostics)) result_.dialect = std::move(dialect_);
+    return std::move(result_);
+  }
+
+  // toml++ counts columns in characters; SourceFile offsets are bytes.
+  uint32_t OffsetOf(const toml::source_position& position) const {
+    const uint32_t line_start = file_.LineStart(position.line);
+    const std::string_view line = file_.LineText(position.line);
+    uint32_t characters = 1;
+    size_t i = 0;
+    for (; i < line.size() && characters < position.column; ++i) {
+      if ((static_cast<unsigned char>(line[i]) & 0xC0) != 0x80) ++characters;
+      while (i + 1 < line.size() && (static_cast<unsigned char>(line[i + 1]) & 0xC0) == 0x80) ++i;
+    }
+    return line_start + static_cast<uint32_t>(i);
+  }
+
+  SourceRange RangeOf(const toml::source_region& region) const {
+    if (!region.begin) return {file_.Id(), 0, 0};
+    const uint32_t begin = OffsetOf(region.begin);
+    const uint32_t end = region.end ? std::max(begin, OffsetOf(region.end)) : begin;
+    return {file_.Id(), begin, end};
+  }
+
+  void Report(Severity severity, std::string rule, SourceRange range, std::string message) {
+    Diagnostic d;
+    d.severity = severity;
+    d.rule_id = std::move(rule);
+    d.range = range;
+    d.message = std::move(message);
+    result_.diagnostics.push_back(std::move(d));
+  }
+  void Error(const toml::source_region& where, std::string message) {
+    Report(Severity::kError, "dialect/invalid-value", RangeOf(where), std::move(message));
+  }
+  void UnknownKey(const toml::key& key, std::string_view where) {
+    Report(Severity::kWarning, "dialect/unknown-key", RangeOf(key.source()),
+           "unknown key '" + std::string(key.str()) + "' in " + std::string(where) +
+               "; it is ignored");
+  }
+  void Missing(const toml::node& table, std::string_view key, std::string_view where) {
+    Report(Severity::kError, "dialect/missing-key", RangeOf(table.source()),
+           std::string(where) + " needs '" + std::string(key) + "'");
+  }
+
+  std::optional<std::string> String(const toml::key& key, const toml::node& node) {
+    if (const auto* value = node.as_string()) return value->get();
+    Error(node.source(), "'" + std::string(key.str()) + "' must be a string");
+    return std::nullopt;
+  }
+  std::optional<std::string> Identifier(const toml::key& key, const toml::node& node) {
+    auto text = String(key, node);
+    if (text && !IsIdentifier(*text)) {
+      Error(node.source(), "'" + std::string(key.str()) + "' must be a GLSL identifier, not '" +
+                               *text + "'");
+      return std::nullopt;
+    }
+    return text;
+  }
+  std::vector<std::string> Strings(const toml::key& key, const toml::node& node) {
+    std::vector<std::string> out;
+    const toml::array* array = node.as_array();
+    if (array == nullptr) {
+      Error(node.source(), "'" + std::string(key.str()) + "' must be an array of strings");
+      return out;
+    }
+    for (const toml::node& item : *array) {
+      if (auto text = String(key, item)) out.push_back(std::move(*text));
+    }
+    return out;
+  }
+  const toml::array* TableArray(const toml::key& key, const toml::node& node) {
+    const toml::array* array = node.as_array();
+    if (array != nullptr && array->is_array_of_tables()) return array;
+    Error(node.source(), "'" + std::string(key.str()) + "' must be an array of tables ([[" +
+                             std::string(key.str()) + "]])");
+    return nullptr;
+  }
+
+  void ReadTopLevel(const toml::key& key, const toml::node& value) {
+    if (key == "name") {
+      saw_name_ = true;
+      auto name = String(key, value);
+      if (name && (name->empty() || name->find_first_of(" \t\n/\\") != std::string::npos)) {
+        Error(value.source(), "'name' must be a non-empty word such as \"shadertoy\"");
+      } else if (name) {
+        dialect_.name = std::move(*name);
+      }
+    } else if (key == "aliases") {
+      dialect_.aliases = Strings(key, value);
+    } else if (key == "description") {
+      if (auto text = String(key, value)) dialect_.description = std::move(*text);
+    } else if (key == "declare") {
+      auto mode = String(key, value);
+      if (mode == "all") {
+        dialect_.declare = DeclareMode::kAll;
+      } else if (mode == "used") {
+        dialect_.declare = DeclareMode::kUsed;
+      } else if (mode) {
+        Error(value.source(), "'declare' must be \"all\" or \"used\", not '" + *mode + "'");
+      }
+    } else if (key == "defines") {
+      ReadDefines(key, value);
+    } else if (key == "hints") {
+      dialect_.hints = Strings(key, value);
+    } else if (key == "renames") {
+      ReadRenames(key, value);
+    } else if (key == "provides") {
+      if (const toml::array* array = TableArray(key, value)) {
+        for (const toml::node& item : *array) ReadProvided(*item.as_table(), dialect_.provides);
+      }
+    } else if (key == "entry_points") {
+      if (const toml::array* array = TableArray(key, value)) {
+        for (const toml::node& item : *array) ReadEntryPoint(*item.as_table());
+      }
+    } else {
+      UnknownKey(key, "the dialect");
+    }
+  }
+
+  void ReadDefines(const toml::key& key, const toml::node& value) {
+    const toml::array* array = value.as_array();
+    dialect_.defines = Strings(key, value);
+    for (size_t i = 0; array != nullptr && i < dialect_.defines.size(); ++i) {
+      const std::string& define = dialect_.defines[i];
+      const std::string_view name = std::string_view(define).substr(0, define.find(' '));
+      if (!IsIdentifier(name) || define.find('\n') != std::string::npos) {
+        Error((*array)[i].source(), "a define is \"NAME\" or \"NAME value\" on one line, not '" +
+                                        define + "'");
+      }
+    }
+  }
+
+  void ReadRenames(const toml::key& key, const toml::node& value) {
+    const toml::table* table = value.as_table();
+    if (table == nullptr) {
+      Error(value.source(), "'renames' must be a table of old = \"new\" names");
+      return;
+    }
+    for (auto&& [from, to] : *table) {
+      auto target = Identifier(key, to);
+      if (!IsIdentifier(from.str())) {
+        Error(from.source(), "renamed name '" + std::string(from.str()) +
+                                 "' must be a GLSL identifier");
+      } else if (target) {
+        dialect_.renames.emplace_back(std::string(from.str()), std::move(*target));
+      }
+    }
+  }
+
+  void ReadProvided(const toml::table& table, std::vector<ProvidedVariable>& out) {
+    ProvidedVariable variable;
+    bool has_name = false;
+    bool has_type = false;
+    for (auto&& [key, value] : table) {
+      if (key == "name") {
+        if (auto name = Identifier(key, value)) variable.name = std::move(*name), has_name = true;
+      } else if (key == "type") {
+        auto type = String(key, value);
+        if (type && !IsValidType(*type)) {
+          Error(value.source(), "unknown GLSL type '" + *type +
+                                    "' (expected e.g. \"vec3\", \"float[4]\", \"sampler2D\")");
+        } else if (type) {
+          variable.type = std::move(*type);
+          has_type = true;
+        }
+      } else if (key == "storage") {
+        auto storage = String(key, value);
+        if (storage == "uniform") {
+          variable.storage = ProvidedStorage::kUniform;
+        } else if (storage == "in") {
+          variable.storage = ProvidedStorage::kInput;
+        } else if (storage == "out") {
+          variable.storage = ProvidedStorage::kOutput;
+        } else if (storage) {
+          Error(value.source(),
+                "'storage' must be \"uniform\", \"in\" or \"out\", not '" + *storage + "'");
+        }
+      } else if (key == "precision") {
+        auto precision = String(key, value);
+        if (precision == "lowp" || precision == "mediump" || precision == "highp") {
+          variable.precision = std::move(*precision);
+        } else if (precision) {
+          Error(value.source(), "'precision' must be lowp, mediump or highp");
+        }
+      } else if (key == "channel") {
+        const auto* number = value.as_integer();
+        if (number == nullptr || number->get() < 0 || number->get() > 3) {
+          Error(value.source(), "'channel' must be an integer from 0 to 3");
+        } else {
+          variable.channel = static_cast<int>(number->get());
+        }
+      } else {
+        UnknownKey(key, "[[provides]]");
+      }
+    }
+    if (!has_name) return Missing(table, "name", "[[provides]]");
+    if (!has_type) return Missing(table, "type", "[[provides]] '" + variable.name + "'");
+    if (variable.channel >= 0 && variable.type.rfind("sampler", 0) != 0) {
+      Error(table.source(), "channel '" + variable.name + "' must have a sampler type");
+    }
+    auto named = [&](const ProvidedVariable& v) { return v.name == variable.name; };
+    if (std::any_of(dialect_.provides.begin(), dialect_.provides.end(), named) ||
+        std::any_of(out.begin(), out.end(), named)) {
+      Error(table.source(), "'" + variable.name + "' is provided twice");
+    }
+    out.push_back(std::move(variable));
+  }
+
+  void ReadEntryPoint(const toml::table& table) {
+    EntryPoint entry;
+    bool has_function = false;
+    bool has_main = false;
+    for (auto&& [key, value] : table) {
+      if (key == "function") {
+        if (auto name = Identifier(key, value)) entry.function = std::move(*name), has_function = true;
+      } else if (key == "main") {
+        if (auto body = String(key, value)) entry.main_body = std::move(*body), has_main = true;
+      } else if (key == "output") {
+        if (auto name = Identifier(key, value)) entry.output_name = std::move(*name);
+      } else if (key == "provides") {
+        if (const toml::array* array = TableArray(key, value)) {
+          for (const toml::node& item : *array) ReadProvided(*item.as_table(), entry.provides);
+        }
+      } else {
+        UnknownKey(key, "[[entry_points]]");
+      }
+    }
+    if (!has_function) return Missing(table, "function", "[[entry_points]]");
+    if (!has_main) return Missing(table, "main", "[[entry_points]] '" + entry.function + "'");
+    if (entry.function == "main") {
+      Error(table.source(), "the entry point is the function the user writes instead of main()");
+    }
+    dialect_.entry_points.push_back(std::move(entry));
+  }
+
+  const SourceFile& file_;
+  HarnessDialect dialect_;
+  DialectLoadResult result_;
+  bool saw_name_ = false;
+};
+
+}  // namespace
+
+DialectLoadResult ParseDialect(const SourceFile& file) { return DialectParser(file).Run(); }
+
+}  // namespace shaderport::rule
