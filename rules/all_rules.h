@@ -11,6 +11,17 @@ namespace shaderport::rules {
 
 // clang-format off
 // ---- rule factories (sorted by rule id; one line per rule) ----
+const rule::Rule& ShadertoyChannelTypesRule();  // shadertoy/channel-types
+const rule::Rule& ShadertoyGlobalTimeRule();  // shadertoy/global-time
+const rule::Rule& ShadertoyMainWrapperRule();  // shadertoy/main-wrapper
+const rule::Rule& ShadertoyUniformsRule();  // shadertoy/uniforms
+const rule::Rule& Webgl2ExtensionsRule();  // webgl2/extensions
+const rule::Rule& Webgl2FragOutputsRule();  // webgl2/frag-outputs
+const rule::Rule& Webgl2InterfaceRule();  // webgl2/interface
+const rule::Rule& Webgl2PrecisionRule();  // webgl2/precision
+const rule::Rule& Webgl2ReservedNamesRule();  // webgl2/reserved-names
+const rule::Rule& Webgl2TextureFunctionsRule();  // webgl2/texture-functions
+const rule::Rule& Webgl2VersionRule();  // webgl2/version
 // ---- end of rule factories ----
 // clang-format on
 

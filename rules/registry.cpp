@@ -11,6 +11,17 @@ std::vector<const rule::Rule*> BuildRegistry() {
   std::vector<const rule::Rule*> list = {
       // clang-format off
       // ---- rules (sorted by rule id; one line per rule: &FooRule(),) ----
+      &ShadertoyChannelTypesRule(),  // shadertoy/channel-types
+      &ShadertoyGlobalTimeRule(),  // shadertoy/global-time
+      &ShadertoyMainWrapperRule(),  // shadertoy/main-wrapper
+      &ShadertoyUniformsRule(),  // shadertoy/uniforms
+      &Webgl2ExtensionsRule(),  // webgl2/extensions
+      &Webgl2FragOutputsRule(),  // webgl2/frag-outputs
+      &Webgl2InterfaceRule(),  // webgl2/interface
+      &Webgl2PrecisionRule(),  // webgl2/precision
+      &Webgl2ReservedNamesRule(),  // webgl2/reserved-names
+      &Webgl2TextureFunctionsRule(),  // webgl2/texture-functions
+      &Webgl2VersionRule(),  // webgl2/version
       // ---- end of rules ----
       // clang-format on
   };

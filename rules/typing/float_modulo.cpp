@@ -30,7 +30,8 @@ class FloatModuloRule final : public rule::Rule {
   void Run(rule::RuleContext& context) const override {
     if (context.Tree().Root() == nullptr) return;
     glsl::VisitPreorder(context.Tree(), [&](const glsl::Node& node, uint32_t) {
-      if (const auto* b = node.As<glsl::BinaryExpr>(); b != nullptr && b->op == glsl::BinaryOp::kMod) {
+      if (const auto* b = node.As<glsl::BinaryExpr>();
+          b != nullptr && b->op == glsl::BinaryOp::kMod) {
         CheckBinary(context, *b);
       } else if (const auto* a = node.As<glsl::AssignmentExpr>();
                  a != nullptr && a->op == glsl::AssignOp::kMod) {
@@ -44,10 +45,10 @@ class FloatModuloRule final : public rule::Rule {
   static void CheckBinary(rule::RuleContext& context, const glsl::BinaryExpr& b) {
     const typing::FloatOperands operands = typing::ClassifyModOperands(context, *b.lhs, *b.rhs);
     if (!operands.floating) return;
-    auto diagnostic = typing::MakeDiagnostic(
-        kId, Severity::kError, b.range,
-        "'%' is not defined for " + operands.lhs_type + " and " + operands.rhs_type +
-            " in GLSL ES; use mod()");
+    auto diagnostic =
+        typing::MakeDiagnostic(kId, Severity::kError, b.range,
+                               "'%' is not defined for " + operands.lhs_type + " and " +
+                                   operands.rhs_type + " in GLSL ES; use mod()");
     const SourceRange lhs = typing::WrittenRange(context, *b.lhs);
     const SourceRange rhs = typing::WrittenRange(context, *b.rhs);
     if (operands.fixable && typing::InThisFile(context, lhs) && typing::InThisFile(context, rhs) &&
@@ -63,7 +64,8 @@ class FloatModuloRule final : public rule::Rule {
   }
 
   static void CheckCompound(rule::RuleContext& context, const glsl::AssignmentExpr& a) {
-    const typing::FloatOperands operands = typing::ClassifyModOperands(context, *a.lhs, *a.rhs);
+    const typing::FloatOperands operands =
+        typing::ClassifyModOperands(context, *a.lhs, *a.rhs, true);
     if (!operands.floating) return;
     auto diagnostic = typing::MakeDiagnostic(
         kId, Severity::kError, a.range,
@@ -75,14 +77,14 @@ class FloatModuloRule final : public rule::Rule {
         typing::InThisFile(context, rhs) && lhs.file == rhs.file && lhs.end <= a.op_range.begin &&
         a.op_range.end <= rhs.begin && !context.InMacro(lhs)) {
       // `a %= b` -> `a = mod(a, b)`: `a` is evaluated twice, so it must be pure.
-      diagnostic.fixes.push_back(
-          {a.op_range, "= mod(" + std::string(context.TextOf(lhs)) + ","});
+      diagnostic.fixes.push_back({a.op_range, "= mod(" + std::string(context.TextOf(lhs)) + ","});
       typing::AppendOperandFixes(context, operands, *a.lhs, *a.rhs, diagnostic.fixes);
       diagnostic.fixes.push_back({{rhs.file, rhs.end, rhs.end}, ")"});
     } else if (!pure) {
       diagnostic.notes.push_back(
-          {{}, "not fixed automatically: the left operand has side effects; write "
-               "'x = mod(x, y)' with a temporary"});
+          {{},
+           "not fixed automatically: the left operand has side effects; write "
+           "'x = mod(x, y)' with a temporary"});
     } else if (!operands.fixable) {
       diagnostic.notes.push_back({{}, "not fixed automatically: " + operands.why_not});
     }

@@ -104,9 +104,8 @@ const Expr* StripParensAndSign(const Expr* e) {
 }
 
 const glsl::LiteralExpr* AsIntLiteral(const Expr* e) {
-  const auto* literal = StripParensAndSign(e) == nullptr
-                            ? nullptr
-                            : StripParensAndSign(e)->As<glsl::LiteralExpr>();
+  const auto* literal =
+      StripParensAndSign(e) == nullptr ? nullptr : StripParensAndSign(e)->As<glsl::LiteralExpr>();
   if (literal == nullptr || literal->literal_kind != glsl::LiteralKind::kInt) return nullptr;
   return literal;
 }

@@ -47,10 +47,10 @@ class ExtensionsRule final : public rule::Rule {
     for (const auto& directive : context.Preprocessed().extensions) {
       const CoreExtension* core = FindCoreExtension(directive.name);
       if (core == nullptr || !webgl2::InThisFile(context, directive.range)) continue;
-      auto diagnostic = webgl2::MakeDiagnostic(
-          kId, Severity::kWarning, directive.range,
-          "'" + directive.name + "' is core in GLSL ES 3.00 (" + std::string(core->what) +
-              "); its #extension line goes");
+      auto diagnostic =
+          webgl2::MakeDiagnostic(kId, Severity::kWarning, directive.range,
+                                 "'" + directive.name + "' is core in GLSL ES 3.00 (" +
+                                     std::string(core->what) + "); its #extension line goes");
       diagnostic.fixes.push_back(
           webgl2::Replace(webgl2::WholeLines(context.File(), directive.range), ""));
       context.Report(std::move(diagnostic));

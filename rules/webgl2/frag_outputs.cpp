@@ -100,7 +100,9 @@ class FragOutputsRule final : public rule::Rule {
       diagnostic.fixes.push_back(
           webgl2::Insert(context.File().Id(), *point, "out highp vec4 " + name + ";\n"));
       for (uint32_t use : uses) {
-        diagnostic.fixes.push_back(webgl2::Replace(tree.NodeAt(use).range, name));
+        const glsl::Node& node = tree.NodeAt(use);
+        diagnostic.fixes.push_back(
+            webgl2::Replace(webgl2::NameFixRange(context, node, node.range, "gl_FragColor"), name));
       }
     }
     context.Report(std::move(diagnostic));
@@ -143,8 +145,8 @@ class FragOutputsRule final : public rule::Rule {
     if (point) {
       std::string declarations;
       for (const auto& [n, name] : outputs) {
-        declarations += "layout(location = " + std::to_string(n) + ") out highp vec4 " + name +
-                        ";\n";
+        declarations +=
+            "layout(location = " + std::to_string(n) + ") out highp vec4 " + name + ";\n";
       }
       diagnostic.fixes.push_back(webgl2::Insert(context.File().Id(), *point, declarations));
       for (const auto& [index, n] : renames) {
@@ -156,10 +158,11 @@ class FragOutputsRule final : public rule::Rule {
 
   static void FragDepth(rule::RuleContext& context) {
     for (uint32_t use : BuiltinUses(context, "gl_FragDepthEXT")) {
-      const SourceRange range = context.Tree().NodeAt(use).range;
-      auto diagnostic = webgl2::MakeDiagnostic(kId, Severity::kWarning, range,
+      const glsl::Node& node = context.Tree().NodeAt(use);
+      auto diagnostic = webgl2::MakeDiagnostic(kId, Severity::kWarning, node.range,
                                                "gl_FragDepthEXT is gl_FragDepth in GLSL ES 3.00");
-      diagnostic.fixes.push_back(webgl2::Replace(range, "gl_FragDepth"));
+      diagnostic.fixes.push_back(webgl2::Replace(
+          webgl2::NameFixRange(context, node, node.range, "gl_FragDepthEXT"), "gl_FragDepth"));
       context.Report(std::move(diagnostic));
     }
   }

@@ -18,10 +18,10 @@ constexpr std::string_view kId = "webgl2/interface";
 class InterfaceRule final : public rule::Rule {
  public:
   const rule::RuleInfo& Info() const override {
-    static const rule::RuleInfo info{
-        kId, "Replace `attribute` and `varying` with `in` and `out`",
-        "attribute vec3 position;\nvarying vec2 uv;  // vertex shader",
-        "in vec3 position;\nout vec2 uv;  // vertex shader", rule::RuleScope::kPort};
+    static const rule::RuleInfo info{kId, "Replace `attribute` and `varying` with `in` and `out`",
+                                     "attribute vec3 position;\nvarying vec2 uv;  // vertex shader",
+                                     "in vec3 position;\nout vec2 uv;  // vertex shader",
+                                     rule::RuleScope::kPort};
     return info;
   }
 

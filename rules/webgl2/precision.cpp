@@ -25,9 +25,10 @@ constexpr std::string_view kId = "webgl2/precision";
 // GLSL ES 3.00 section 4.5.4: these types have no default precision in any stage.
 bool NeedsSamplerPrecision(std::string_view type) {
   static const std::set<std::string_view> kTypes = {
-      "sampler3D",       "samplerCubeShadow", "sampler2DShadow", "sampler2DArray",
-      "sampler2DArrayShadow", "isampler2D",   "isampler3D",      "isamplerCube",
-      "isampler2DArray", "usampler2D",        "usampler3D",      "usamplerCube",
+      "sampler3D",      "samplerCubeShadow",    "sampler2DShadow",
+      "sampler2DArray", "sampler2DArrayShadow", "isampler2D",
+      "isampler3D",     "isamplerCube",         "isampler2DArray",
+      "usampler2D",     "usampler3D",           "usamplerCube",
       "usampler2DArray"};
   return kTypes.contains(type);
 }
@@ -36,9 +37,8 @@ class PrecisionRule final : public rule::Rule {
  public:
   const rule::RuleInfo& Info() const override {
     static const rule::RuleInfo info{
-        kId, "Give fragment shaders a default float precision",
-        "#version 300 es\nout vec4 color;", "#version 300 es\nprecision highp float;\nout vec4 color;",
-        rule::RuleScope::kPort};
+        kId, "Give fragment shaders a default float precision", "#version 300 es\nout vec4 color;",
+        "#version 300 es\nprecision highp float;\nout vec4 color;", rule::RuleScope::kPort};
     return info;
   }
 
@@ -55,7 +55,8 @@ class PrecisionRule final : public rule::Rule {
       }
     }
     std::vector<std::string> missing;
-    if (context.Settings().stage == rule::ShaderStage::kFragment && !has_default.contains("float")) {
+    if (context.Settings().stage == rule::ShaderStage::kFragment &&
+        !has_default.contains("float")) {
       missing.push_back("float");
     }
     std::set<std::string> samplers;

@@ -55,11 +55,13 @@ class TextureFunctionsRule final : public rule::Rule {
       const TextureRename* rename = FindRename(call->callee.text);
       if (rename == nullptr || !IsBuiltinCall(model, id)) continue;
       if (!webgl2::InThisFile(context, call->callee.range)) continue;
-      auto diagnostic = webgl2::MakeDiagnostic(
-          kId, Severity::kWarning, call->callee.range,
-          "'" + call->callee.text + "' does not exist in GLSL ES 3.00; use '" +
-              std::string(rename->to) + "'");
-      diagnostic.fixes.push_back(webgl2::Replace(call->callee.range, std::string(rename->to)));
+      auto diagnostic = webgl2::MakeDiagnostic(kId, Severity::kWarning, call->callee.range,
+                                               "'" + call->callee.text +
+                                                   "' does not exist in GLSL ES 3.00; use '" +
+                                                   std::string(rename->to) + "'");
+      diagnostic.fixes.push_back(webgl2::Replace(
+          webgl2::NameFixRange(context, *call, call->callee.range, call->callee.text),
+          std::string(rename->to)));
       context.Report(std::move(diagnostic));
     }
   }

@@ -31,10 +31,10 @@ class VersionRule final : public rule::Rule {
       // ANGLE (so WebGL 2) wants `#version 300 es` on the very first line.
       const bool first_line = context.File().LocationOf(version.range.begin).line == 1;
       if (version.number >= 300 && version.profile == "es" && first_line) return;
-      auto diagnostic = webgl2::MakeDiagnostic(
-          kId, Severity::kWarning, version.range,
-          "'" + std::string(context.TextOf(version.range)) + "' becomes '#version 300 es'" +
-              (first_line ? "" : " on the first line"));
+      auto diagnostic = webgl2::MakeDiagnostic(kId, Severity::kWarning, version.range,
+                                               "'" + std::string(context.TextOf(version.range)) +
+                                                   "' becomes '#version 300 es'" +
+                                                   (first_line ? "" : " on the first line"));
       if (first_line) {
         diagnostic.fixes.push_back(webgl2::Replace(version.range, std::string(kDirective)));
       } else {

@@ -69,6 +69,20 @@ uint32_t AfterLeadingDirectives(const rule::RuleContext& context, bool* saw_vers
   return offset;
 }
 
+SourceRange NameFixRange(const rule::RuleContext& context, const glsl::Node& node,
+                         const SourceRange& name_range, std::string_view name) {
+  if (!context.InMacro(name_range) || !node.HasTokens()) return name_range;
+  const auto& tokens = context.Preprocessed().tokens;
+  for (uint32_t i = node.first_token; i <= node.last_token && i < tokens.size(); ++i) {
+    const glsl::PpToken& token = tokens[i];
+    if (token.text == name && token.in_macro_body && token.spelling.file == context.File().Id() &&
+        token.expansion.Contains(name_range)) {
+      return token.spelling;
+    }
+  }
+  return name_range;
+}
+
 FixIt Replace(const SourceRange& range, std::string text) {
   return FixIt{range, std::move(text), FixSafety::kSafe};
 }

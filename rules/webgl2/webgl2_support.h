@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "diag/diagnostic.h"
+#include "glsl/syntax/ast.h"
 #include "rule/rule_context.h"
 
 namespace shaderport::rules::webgl2 {
@@ -30,6 +31,13 @@ SourceRange WholeLines(const SourceFile& file, const SourceRange& range);
 // comment lines between them) of the file: where a declaration that must come
 // before any code is inserted. `saw_version` tells whether a #version was seen.
 uint32_t AfterLeadingDirectives(const rule::RuleContext& context, bool* saw_version);
+
+// The range a fix should edit to rename `name` written by `node`: `name_range`
+// itself in plain code; the token's spelling inside a #define body when the name
+// comes from one (RuleContext::Report then applies it only when every expansion
+// agrees); `name_range` otherwise (Report drops fixes at macro use sites).
+SourceRange NameFixRange(const rule::RuleContext& context, const glsl::Node& node,
+                         const SourceRange& name_range, std::string_view name);
 
 FixIt Replace(const SourceRange& range, std::string text);
 FixIt Insert(FileId file, uint32_t offset, std::string text);

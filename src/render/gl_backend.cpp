@@ -2,9 +2,7 @@
 
 namespace shaderport::render {
 
-const char* BackendName(BackendKind kind) {
-  return kind == BackendKind::kEgl ? "egl" : "osmesa";
-}
+const char* BackendName(BackendKind kind) { return kind == BackendKind::kEgl ? "egl" : "osmesa"; }
 
 std::optional<BackendKind> BackendFromName(std::string_view name) {
   if (name == "osmesa") return BackendKind::kOsMesa;

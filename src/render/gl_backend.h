@@ -3,12 +3,11 @@
 // object, so a backend only has to make a core 3.3+ context current.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
-
-#include "render/gl_functions.h"
 
 namespace shaderport::render {
 

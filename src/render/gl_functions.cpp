@@ -3,11 +3,11 @@
 namespace shaderport::render {
 
 bool LoadGlFunctions(GetProcFunction get_proc, GlFunctions& gl, std::string& missing) {
-#define SHADERPORT_GL_LOAD(type, name)                                 \
-  gl.name = reinterpret_cast<type>(get_proc("gl" #name));              \
-  if (gl.name == nullptr) {                                            \
-    missing = "gl" #name;                                              \
-    return false;                                                      \
+#define SHADERPORT_GL_LOAD(type, name)                    \
+  gl.name = reinterpret_cast<type>(get_proc("gl" #name)); \
+  if (gl.name == nullptr) {                               \
+    missing = "gl" #name;                                 \
+    return false;                                         \
   }
   SHADERPORT_GL_FUNCTIONS(SHADERPORT_GL_LOAD)
 #undef SHADERPORT_GL_LOAD

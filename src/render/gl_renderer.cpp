@@ -27,6 +27,10 @@ const char* const kFlatFragmentShader =
 
 namespace {
 
+// A render process has one context; GetProcAddress needs a plain function.
+GlBackend* current_backend = nullptr;
+void* CurrentBackendProc(const char* name) { return current_backend->GetProc(name); }
+
 std::string ShaderLog(const GlFunctions& gl, GLuint shader) {
   GLint length = 0;
   gl.GetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
@@ -79,12 +83,8 @@ RenderOutcome RenderInThisProcess(const RenderRequest& request, BackendKind back
   }
   GlFunctions gl;
   std::string missing;
-  if (!LoadGlFunctions([&] {
-        static GlBackend* current = nullptr;
-        current = backend.get();
-        return +[](const char* name) { return current->GetProc(name); };
-      }(),
-                       gl, missing)) {
+  current_backend = backend.get();
+  if (!LoadGlFunctions(&CurrentBackendProc, gl, missing)) {
     outcome.status = RenderStatus::kContextFailed;
     outcome.message = std::string(BackendName(backend_kind)) + ": no entry point " + missing;
     return outcome;

@@ -3,6 +3,7 @@
 // map with a distinct tint per face, and a 3D value-noise volume.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 

@@ -28,10 +28,10 @@ struct ChannelInput {
 
 // Deterministic values for the ShaderToy uniforms (set only where the program has them).
 struct ShaderToyInputs {
-  float time = 1.0f;                             // iTime of the first frame
-  int frame = 0;                                 // iFrame of the first frame
-  float frame_rate = 60.0f;                      // frames advance iTime by 1/frame_rate
-  std::array<float, 4> mouse = {0, 0, 0, 0};     // iMouse, pixels
+  float time = 1.0f;                                // iTime of the first frame
+  int frame = 0;                                    // iFrame of the first frame
+  float frame_rate = 60.0f;                         // frames advance iTime by 1/frame_rate
+  std::array<float, 4> mouse = {0, 0, 0, 0};        // iMouse, pixels
   std::array<float, 4> date = {2025, 0, 1, 43200};  // iDate: fixed, so renders repeat
   std::array<ChannelInput, 4> channels;
 };
@@ -52,8 +52,8 @@ struct RenderOptions {
   BackendKind backend = DefaultBackend();
   std::chrono::milliseconds timeout{10'000};
   uint64_t address_space_limit = uint64_t{4} << 30;  // RLIMIT_AS of the child; 0: none
-  bool hermetic = false;   // disable Mesa's shader cache
-  std::string cache_dir;   // Mesa shader cache; empty: $XDG_CACHE_HOME/shaderport/mesa
+  bool hermetic = false;                             // disable Mesa's shader cache
+  std::string cache_dir;  // Mesa shader cache; empty: $XDG_CACHE_HOME/shaderport/mesa
 };
 
 enum class RenderStatus : uint8_t {

@@ -68,14 +68,14 @@ void SetGenericFloats(const GlFunctions& gl, const UniformInfo& u, int component
   const float h = static_cast<float>(request.height);
   if (Contains(name, "texel")) {
     value = {1.0f / w, 1.0f / h, 0.0f, 0.0f};
-  } else if (Contains(name, "resolution") || Contains(name, "viewport") ||
-             Contains(name, "size")) {
+  } else if (Contains(name, "resolution") || Contains(name, "viewport") || Contains(name, "size")) {
     value = {w, h, 1.0f, 1.0f};
   } else if (Contains(name, "time")) {
     value = {time, time, time, time};
   }
   std::vector<float> data;
-  for (GLint i = 0; i < u.size; ++i) data.insert(data.end(), value.begin(), value.begin() + components);
+  for (GLint i = 0; i < u.size; ++i)
+    data.insert(data.end(), value.begin(), value.begin() + components);
   switch (components) {
     case 1:
       gl.Uniform1fv(u.location, u.size, data.data());
@@ -235,7 +235,8 @@ void SetUniforms(const GlFunctions& gl, GLuint program, const RenderRequest& req
         channel >= 0 ? request.inputs.channels[static_cast<size_t>(channel)].image : kNoImage;
     const BoundTexture bound = CreateChannelTexture(gl, u.type, image);
     textures.push_back(bound.name);
-    if (channel >= 0) channel_res[static_cast<size_t>(channel)] = {bound.width, bound.height, bound.depth};
+    if (channel >= 0)
+      channel_res[static_cast<size_t>(channel)] = {bound.width, bound.height, bound.depth};
   }
   gl.ActiveTexture(GL_TEXTURE0);
   const float aspect = static_cast<float>(request.width) / static_cast<float>(request.height);
@@ -245,22 +246,57 @@ void SetUniforms(const GlFunctions& gl, GLuint program, const RenderRequest& req
     if (IsSampler(u.type)) continue;
     if (SetShaderToyUniform(gl, u, request, frame_index, channel_res)) continue;
     switch (u.type) {
-      case GL_FLOAT: SetGenericFloats(gl, u, 1, request, time); break;
-      case GL_FLOAT_VEC2: SetGenericFloats(gl, u, 2, request, time); break;
-      case GL_FLOAT_VEC3: SetGenericFloats(gl, u, 3, request, time); break;
-      case GL_FLOAT_VEC4: SetGenericFloats(gl, u, 4, request, time); break;
-      case GL_INT: case GL_BOOL: SetInts(gl, u, 1, 1); break;
-      case GL_INT_VEC2: case GL_BOOL_VEC2: SetInts(gl, u, 2, 1); break;
-      case GL_INT_VEC3: case GL_BOOL_VEC3: SetInts(gl, u, 3, 1); break;
-      case GL_INT_VEC4: case GL_BOOL_VEC4: SetInts(gl, u, 4, 1); break;
-      case GL_UNSIGNED_INT: SetUints(gl, u, 1); break;
-      case GL_UNSIGNED_INT_VEC2: SetUints(gl, u, 2); break;
-      case GL_UNSIGNED_INT_VEC3: SetUints(gl, u, 3); break;
-      case GL_UNSIGNED_INT_VEC4: SetUints(gl, u, 4); break;
-      case GL_FLOAT_MAT2: SetMatrix(gl, u, 2, aspect); break;
-      case GL_FLOAT_MAT3: SetMatrix(gl, u, 3, aspect); break;
-      case GL_FLOAT_MAT4: SetMatrix(gl, u, 4, aspect); break;
-      default: break;  // non-square matrices keep their zero default
+      case GL_FLOAT:
+        SetGenericFloats(gl, u, 1, request, time);
+        break;
+      case GL_FLOAT_VEC2:
+        SetGenericFloats(gl, u, 2, request, time);
+        break;
+      case GL_FLOAT_VEC3:
+        SetGenericFloats(gl, u, 3, request, time);
+        break;
+      case GL_FLOAT_VEC4:
+        SetGenericFloats(gl, u, 4, request, time);
+        break;
+      case GL_INT:
+      case GL_BOOL:
+        SetInts(gl, u, 1, 1);
+        break;
+      case GL_INT_VEC2:
+      case GL_BOOL_VEC2:
+        SetInts(gl, u, 2, 1);
+        break;
+      case GL_INT_VEC3:
+      case GL_BOOL_VEC3:
+        SetInts(gl, u, 3, 1);
+        break;
+      case GL_INT_VEC4:
+      case GL_BOOL_VEC4:
+        SetInts(gl, u, 4, 1);
+        break;
+      case GL_UNSIGNED_INT:
+        SetUints(gl, u, 1);
+        break;
+      case GL_UNSIGNED_INT_VEC2:
+        SetUints(gl, u, 2);
+        break;
+      case GL_UNSIGNED_INT_VEC3:
+        SetUints(gl, u, 3);
+        break;
+      case GL_UNSIGNED_INT_VEC4:
+        SetUints(gl, u, 4);
+        break;
+      case GL_FLOAT_MAT2:
+        SetMatrix(gl, u, 2, aspect);
+        break;
+      case GL_FLOAT_MAT3:
+        SetMatrix(gl, u, 3, aspect);
+        break;
+      case GL_FLOAT_MAT4:
+        SetMatrix(gl, u, 4, aspect);
+        break;
+      default:
+        break;  // non-square matrices keep their zero default
     }
   }
 }

@@ -46,13 +46,16 @@ DiagnosticList RunRules(const SourceFile& file, const AnalyzedShader& analysis,
   return all;
 }
 
-std::string FightingRules(const DiagnosticList& diagnostics, const std::vector<size_t>& applied) {
+// The rules that changed the text in any round, plus those that still want to.
+std::string FightingRules(const DiagnosticList& fixed, const DiagnosticList& diagnostics,
+                          const std::vector<size_t>& applied) {
   std::vector<std::string> ids;
-  for (size_t i : applied) {
-    if (std::find(ids.begin(), ids.end(), diagnostics[i].rule_id) == ids.end()) {
-      ids.push_back(diagnostics[i].rule_id);
-    }
-  }
+  auto add = [&](const std::string& id) {
+    if (std::find(ids.begin(), ids.end(), id) == ids.end()) ids.push_back(id);
+  };
+  for (const Diagnostic& d : fixed) add(d.rule_id);
+  for (size_t i : applied) add(diagnostics[i].rule_id);
+  std::sort(ids.begin(), ids.end());
   std::string joined;
   for (const std::string& id : ids) joined += (joined.empty() ? "" : ", ") + id;
   return joined;
@@ -141,7 +144,7 @@ FixEngineResult RunFixEngine(const SourceFile& original, const FixEngineOptions&
         fight.message = last_round ? "rules still wanted changes after " +
                                          std::to_string(options.max_rounds) +
                                          " rounds; they undo each other's fixes: " +
-                                         FightingRules(found, selection.applied)
+                                         FightingRules(result.fixed, found, selection.applied)
                                    : "the chosen fixes could not be applied";
         result.remaining.push_back(fight);
       }

@@ -41,6 +41,15 @@ std::string_view StorageName(ProvidedStorage storage) {
   return "uniform";
 }
 
+std::string_view DefaultPrecision(std::string_view type) {
+  const std::string_view base = type.substr(0, type.find('['));
+  if (base == "sampler2D" || base == "samplerCube" || base.starts_with("bvec") || base == "bool") {
+    return "";  // sampler2D and samplerCube default to lowp everywhere, as on the hosts
+  }
+  if (base.find("sampler") != std::string_view::npos) return "mediump";  // as ShaderToy's sampler3D
+  return "highp";
+}
+
 std::string DeclarationOf(const ProvidedVariable& variable, std::string_view type_override) {
   const std::string_view type = type_override.empty() ? variable.type : type_override;
   // GLSL ES writes the array size after the name: `uniform float iChannelTime[4];`.
@@ -49,7 +58,12 @@ std::string DeclarationOf(const ProvidedVariable& variable, std::string_view typ
   const std::string_view array = bracket == std::string_view::npos ? "" : type.substr(bracket);
   std::string text(StorageName(variable.storage));
   text += ' ';
-  if (!variable.precision.empty()) text += variable.precision + " ";
+  const std::string_view precision =
+      variable.precision.empty() ? DefaultPrecision(type) : std::string_view(variable.precision);
+  if (!precision.empty()) {
+    text += precision;
+    text += ' ';
+  }
   text += base;
   text += ' ';
   text += variable.name;

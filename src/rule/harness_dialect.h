@@ -79,9 +79,15 @@ struct DialectLoadResult {
 // offending line and column of `file`; unknown keys are warnings.
 DialectLoadResult ParseDialect(const SourceFile& file);
 
-// `uniform highp vec3 iResolution;`, `in vec2 uv;`, `uniform float iChannelTime[4];`.
-// `type_override` replaces the type (a channel's chosen sampler type).
+// `uniform highp vec3 iResolution;`, `in highp vec2 uv;`, `uniform highp float
+// iChannelTime[4];`. `type_override` replaces the type (a channel's chosen sampler).
+// Without a precision in the dialect, numeric types get highp (the hosts' default:
+// ShaderToy says `precision highp float; precision highp int;`), samplers other
+// than sampler2D/samplerCube mediump (ShaderToy's sampler3D): the declaration is
+// then valid before or after any default precision statement.
 std::string DeclarationOf(const ProvidedVariable& variable, std::string_view type_override = {});
+
+std::string_view DefaultPrecision(std::string_view type);
 
 // Spellings of ProvidedStorage and DeclareMode in the TOML.
 std::string_view StorageName(ProvidedStorage storage);

@@ -47,6 +47,25 @@ bool IsValidType(std::string_view type) {
   return IsKnownTypeName(type.substr(0, bracket));
 }
 
+// The first `{word}` of a main() template that is not {entry}, {out} or
+// {fresh:NAME}. Other braces are GLSL blocks.
+std::optional<std::string> BadPlaceholder(std::string_view body) {
+  for (size_t open = body.find('{'); open != std::string_view::npos;
+       open = body.find('{', open + 1)) {
+    const size_t close = body.find('}', open);
+    if (close == std::string_view::npos) break;
+    const std::string_view inside = body.substr(open + 1, close - open - 1);
+    const bool word = !inside.empty() && std::all_of(inside.begin(), inside.end(), [](char c) {
+      return c == ':' || c == '_' || (c >= '0' && c <= '9') || (c >= 'a' && c <= 'z') ||
+             (c >= 'A' && c <= 'Z');
+    });
+    if (!word || inside == "entry" || inside == "out") continue;
+    if (inside.starts_with("fresh:") && IsIdentifier(inside.substr(6))) continue;
+    return std::string(inside);
+  }
+  return std::nullopt;
+}
+
 class DialectParser {
  public:
   explicit DialectParser(const SourceFile& file) : file_(file) {}
@@ -308,6 +327,10 @@ class DialectParser {
     }
     if (!has_function) return Missing(table, "function", "[[entry_points]]");
     if (!has_main) return Missing(table, "main", "[[entry_points]] '" + entry.function + "'");
+    if (auto bad = BadPlaceholder(entry.main_body)) {
+      Error(table.source(), "unknown placeholder '{" + *bad + "}' in main of '" + entry.function +
+                                "' (use {entry}, {out} or {fresh:NAME})");
+    }
     if (entry.function == "main") {
       Error(table.source(), "the entry point is the function the user writes instead of main()");
     }

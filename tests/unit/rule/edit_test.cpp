@@ -9,7 +9,7 @@ namespace {
 
 TEST(ApplyEdits, ReplacesInsertsAndDeletesInAnyOrder) {
   const std::string original = "float x = 1;";
-  const std::vector<Edit> edits = {{10, 11, "1.0"}, {0, 0, "const "}, {5, 6, ""}};
+  const std::vector<Edit> edits = {{10, 11, "1.0"}, {0, 0, "const "}, {6, 7, ""}};
   const auto result = ApplyEdits(original, edits);
   ASSERT_TRUE(result);
   EXPECT_EQ(result->text, "const float  = 1.0;");
@@ -35,11 +35,11 @@ TEST(SourceMap, MapsCopiedAndInsertedBytes) {
   ASSERT_TRUE(result);
   ASSERT_EQ(result->text, "float a = 1.0;");
   const SourceMap& map = result->map;
-  EXPECT_EQ(map.ToOriginal(0), 0u);   // inside "float" -> start of "int"
+  EXPECT_EQ(map.ToOriginal(0), 0u);  // inside "float" -> start of "int"
   EXPECT_EQ(map.ToOriginal(3), 0u);
-  EXPECT_EQ(map.ToOriginal(6), 4u);   // 'a'
-  EXPECT_EQ(map.ToOriginal(10), 8u);  // "1.0" -> "1"
-  EXPECT_EQ(map.ToOriginal(13), 9u);  // ';'
+  EXPECT_EQ(map.ToOriginal(6), 4u);    // 'a'
+  EXPECT_EQ(map.ToOriginal(10), 8u);   // "1.0" -> "1"
+  EXPECT_EQ(map.ToOriginal(13), 9u);   // ';'
   EXPECT_EQ(map.ToOriginal(14), 10u);  // end
   EXPECT_EQ(map.ToOriginalRange(0, 7), (std::pair<uint32_t, uint32_t>{0, 5}));
   EXPECT_EQ(map.ToOriginalRange(10, 13), (std::pair<uint32_t, uint32_t>{8, 9}));
@@ -56,9 +56,9 @@ TEST(SourceMap, ComposesRounds) {
   ASSERT_EQ(second->text, "// x\naaa B C");
   const SourceMap map = SourceMap::Compose(first->map, second->map);
   EXPECT_EQ(map.OutputSize(), second->text.size());
-  EXPECT_EQ(map.ToOriginal(0), 0u);   // inserted header anchors at 0
-  EXPECT_EQ(map.ToOriginal(6), 1u);   // second 'a'
-  EXPECT_EQ(map.ToOriginal(9), 4u);   // 'B' stands for "bbb"
+  EXPECT_EQ(map.ToOriginal(0), 0u);  // inserted header anchors at 0
+  EXPECT_EQ(map.ToOriginal(6), 1u);  // second 'a'
+  EXPECT_EQ(map.ToOriginal(9), 4u);  // 'B' stands for "bbb"
   EXPECT_EQ(map.ToOriginalRange(9, 10), (std::pair<uint32_t, uint32_t>{4, 7}));
   EXPECT_EQ(map.ToOriginalRange(11, 12), (std::pair<uint32_t, uint32_t>{8, 11}));
 }

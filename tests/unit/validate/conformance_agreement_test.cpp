@@ -35,6 +35,9 @@ struct Verdict {
   bool crashed = false;
   bool accepted = true;
   std::set<uint32_t> error_lines;
+  // Every error's line as shaderport reports it, including messages glslang gives
+  // no line, which shaderport places at the start of the file.
+  std::set<uint32_t> all_error_lines;
 };
 
 std::string FindOnPath(const std::string& program) {
@@ -162,9 +165,10 @@ Verdict OurVerdict(const StageCase& c) {
   }
   for (size_t i = 0; i < result.diagnostics.size() && i < result.messages.size(); ++i) {
     const Diagnostic& d = result.diagnostics[i];
-    if (d.severity == Severity::kError && result.messages[i].message.line > 0) {
-      verdict.error_lines.insert(testing::Where(sources, d.range).line);
-    }
+    if (d.severity != Severity::kError) continue;
+    const uint32_t line = testing::Where(sources, d.range).line;
+    verdict.all_error_lines.insert(line);
+    if (result.messages[i].message.line > 0) verdict.error_lines.insert(line);
   }
   return verdict;
 }
@@ -173,6 +177,34 @@ std::string Lines(const std::set<uint32_t>& lines) {
   std::string out;
   for (uint32_t line : lines) out += std::to_string(line) + " ";
   return out;
+}
+
+// Runs the real `shaderport check` binary over the directory and reads its JSON.
+std::map<std::string, Verdict> CheckVerdicts(const fs::path& dir) {
+  const std::string command = "cd '" + dir.string() + "' && '" + SHADERPORT_BINARY +
+                              "' check --no-config --format json -j 2 . 2>/dev/null";
+  FILE* pipe = popen(command.c_str(), "r");
+  std::string output;
+  char buffer[65536];
+  size_t n;
+  while (pipe != nullptr && (n = fread(buffer, 1, sizeof buffer, pipe)) > 0) {
+    output.append(buffer, n);
+  }
+  if (pipe != nullptr) pclose(pipe);
+  std::map<std::string, Verdict> verdicts;
+  const auto json = nlohmann::json::parse(output, nullptr, false);
+  if (json.is_discarded()) return verdicts;
+  for (const auto& file : json.at("files")) {
+    Verdict& verdict = verdicts[fs::path(file.at("path").get<std::string>()).filename().string()];
+    verdict.ran = true;
+    for (const auto& d : file.at("diagnostics")) {
+      if (d.at("severity") != "error") continue;
+      verdict.accepted = false;
+      verdict.all_error_lines.insert(
+          d.at("location").at("range").at("start").at("line").get<uint32_t>());
+    }
+  }
+  return verdicts;
 }
 
 TEST(ConformanceAgreementTest, VerdictsAndErrorLinesMatchGlslangValidator) {
@@ -201,9 +233,11 @@ TEST(ConformanceAgreementTest, VerdictsAndErrorLinesMatchGlslangValidator) {
   helper.join();
   std::printf("in-process validation done after %.2f s\n", seconds_since_start());
   const auto theirs = cli_future.get();
+  const std::map<std::string, Verdict> checked = CheckVerdicts(dir);
+  std::printf("shaderport check done after %.2f s\n", seconds_since_start());
   fs::remove_all(dir);
 
-  size_t agreed = 0, accepted = 0, cli_crashes = 0;
+  size_t agreed = 0, accepted = 0, cli_crashes = 0, check_agreed = 0;
   for (size_t i = 0; i < cases.size(); ++i) {
     const auto it = theirs.find(cases[i].file);
     ASSERT_NE(it, theirs.end()) << cases[i].id;
@@ -225,9 +259,21 @@ TEST(ConformanceAgreementTest, VerdictsAndErrorLinesMatchGlslangValidator) {
       ++agreed;
     }
     accepted += ours[i].accepted ? 1 : 0;
+    // The whole `check` pipeline (detection, limits, suppressions) must give the
+    // same verdict and lines as validation alone.
+    const auto check_it = checked.find(fs::path(cases[i].file).filename().string());
+    ASSERT_NE(check_it, checked.end()) << cases[i].id;
+    EXPECT_EQ(check_it->second.accepted, ours[i].accepted) << cases[i].id;
+    EXPECT_EQ(Lines(check_it->second.all_error_lines), Lines(ours[i].all_error_lines))
+        << cases[i].id;
+    if (check_it->second.accepted == ours[i].accepted &&
+        check_it->second.all_error_lines == ours[i].all_error_lines) {
+      ++check_agreed;
+    }
   }
-  std::printf("%zu stages: %zu agree with glslangValidator (%zu accepted), %zu crash it\n",
-              cases.size(), agreed, accepted, cli_crashes);
+  std::printf("%zu stages: %zu agree with glslangValidator (%zu accepted), %zu crash it; "
+              "shaderport check agrees on %zu\n",
+              cases.size(), agreed, accepted, cli_crashes, check_agreed);
   EXPECT_EQ(cli_crashes, 1u);  // macro-expansion-tricky.html#0 fragment
 }
 

@@ -1,0 +1,80 @@
+#include "rules/shadertoy/builtin_dialects.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include "base/limits.h"
+
+namespace shaderport::rules {
+namespace {
+
+std::optional<std::string> ReadSmallFile(const std::filesystem::path& path) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) return std::nullopt;
+  const auto size = std::filesystem::file_size(path, error);
+  if (error || size > limits::kMaxFileBytes) return std::nullopt;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::ostringstream text;
+  text << in.rdbuf();
+  return std::move(text).str();
+}
+
+std::vector<rule::HarnessDialect> LoadShipped() {
+  std::vector<rule::HarnessDialect> dialects;
+  std::error_code error;
+  std::vector<std::filesystem::path> paths;
+  for (const auto& entry : std::filesystem::directory_iterator(DialectsDirectory(), error)) {
+    if (entry.path().extension() == ".toml") paths.push_back(entry.path());
+  }
+  std::sort(paths.begin(), paths.end());
+  for (const auto& path : paths) {
+    const auto text = ReadSmallFile(path);
+    if (!text) continue;
+    const SourceFile file(0, path.string(), *text);
+    rule::DialectLoadResult loaded = rule::ParseDialect(file);
+    if (loaded.dialect) dialects.push_back(std::move(*loaded.dialect));
+  }
+  std::sort(dialects.begin(), dialects.end(),
+            [](const auto& a, const auto& b) { return a.name < b.name; });
+  return dialects;
+}
+
+}  // namespace
+
+std::string_view DialectsDirectory() { return SHADERPORT_DIALECTS_DIR; }
+
+std::span<const rule::HarnessDialect> BuiltinDialects() {
+  static const std::vector<rule::HarnessDialect> dialects = LoadShipped();
+  return dialects;
+}
+
+const rule::HarnessDialect* FindBuiltinDialect(std::string_view name) {
+  for (const rule::HarnessDialect& dialect : BuiltinDialects()) {
+    if (dialect.NameMatches(name)) return &dialect;
+  }
+  return nullptr;
+}
+
+rule::DialectLoadResult LoadDialect(std::string_view name_or_path, SourceManager& sources) {
+  if (const rule::HarnessDialect* shipped = FindBuiltinDialect(name_or_path)) {
+    return {*shipped, {}};
+  }
+  rule::DialectLoadResult result;
+  const auto text = ReadSmallFile(std::filesystem::path(name_or_path));
+  if (!text) {
+    Diagnostic diagnostic;
+    diagnostic.rule_id = "dialect/not-found";
+    diagnostic.message = "'" + std::string(name_or_path) +
+                         "' is neither a known dialect (bookofshaders, glslsandbox, "
+                         "raymarch-blog, shadertoy) nor a readable dialect file";
+    result.diagnostics.push_back(std::move(diagnostic));
+    return result;
+  }
+  return rule::ParseDialect(sources.Add(std::string(name_or_path), *text));
+}
+
+}  // namespace shaderport::rules

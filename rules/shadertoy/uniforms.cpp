@@ -1,0 +1,94 @@
+// shadertoy/uniforms: declares what the harness provides (ShaderToy's uniforms,
+// exactly as the site declares them, with each channel's sampler type; a dialect
+// file's uniforms, inputs and outputs) and its #defines, after the #version line.
+//
+// Before:                                  After:
+//   #version 300 es                          #version 300 es
+//   void mainImage(out vec4 c, in vec2 p) {  uniform highp vec3 iResolution;
+//     c = vec4(p / iResolution.xy, 0, 1);    uniform highp float iTime;
+//   }                                        ... (every uniform of the site)
+//                                            uniform sampler2D iChannel0;
+//                                            ...
+//                                            #define HW_PERFORMANCE 1
+//                                            void mainImage(out vec4 c, in vec2 p) {
+//
+// Declarations carry their precision (highp, as the hosts' defaults) so that they
+// are valid wherever webgl2/precision puts its statement. Without a #version the
+// rule waits a round for webgl2/version, which inserts at offset 0.
+#include "rules/all_rules.h"
+#include "rules/shadertoy/harness_support.h"
+
+namespace shaderport::rules {
+namespace {
+
+constexpr std::string_view kId = "shadertoy/uniforms";
+
+class UniformsRule final : public rule::Rule {
+ public:
+  const rule::RuleInfo& Info() const override {
+    static const rule::RuleInfo info{
+        kId, "Declare the uniforms, inputs and defines the harness provides",
+        "void mainImage(out vec4 c, in vec2 p) { c = vec4(p / iResolution.xy, 0, 1); }",
+        "uniform highp vec3 iResolution;\nuniform highp float iTime;\n...\n"
+        "#define HW_PERFORMANCE 1\n"
+        "void mainImage(out vec4 c, in vec2 p) { c = vec4(p / iResolution.xy, 0, 1); }",
+        rule::RuleScope::kPort};
+    return info;
+  }
+
+  void Run(rule::RuleContext& context) const override {
+    const rule::HarnessDialect* dialect = context.Settings().harness;
+    if (dialect == nullptr || context.Settings().stage != rule::ShaderStage::kFragment) return;
+    const std::optional<uint32_t> offset = harness::AfterVersionLines(context);
+    if (!offset) return;  // webgl2/version adds the #version first
+    const rule::CodeInterface code = rule::ReadCodeInterface(context.Tree(), context.Model());
+    const auto channels = harness::ChooseChannels(context, *dialect);
+
+    std::vector<const rule::ProvidedVariable*> provided;
+    for (const rule::ProvidedVariable& variable : dialect->provides) provided.push_back(&variable);
+    if (const rule::EntryPoint* entry = harness::DefinedEntryPoint(*dialect, code)) {
+      for (const rule::ProvidedVariable& variable : entry->provides) provided.push_back(&variable);
+    }
+    std::string text;
+    std::string names;
+    for (const rule::ProvidedVariable* variable : provided) {
+      // The code's own declaration wins (and a second one would not compile).
+      if (code.globals.contains(variable->name) || code.functions.contains(variable->name)) {
+        continue;
+      }
+      if (dialect->declare == rule::DeclareMode::kUsed &&
+          !code.free_identifiers.contains(variable->name)) {
+        continue;
+      }
+      text += rule::DeclarationOf(*variable, harness::TypeFor(*variable, channels)) + "\n";
+      names += (names.empty() ? "" : ", ") + variable->name;
+    }
+    const auto macros = harness::DefinedMacros(context);
+    for (const std::string& define : dialect->defines) {
+      const std::string name = define.substr(0, define.find(' '));
+      if (macros.contains(name)) continue;
+      text += "#define " + define + "\n";
+      names += (names.empty() ? "" : ", ") + name;
+    }
+    if (text.empty()) return;
+
+    Diagnostic diagnostic;
+    diagnostic.severity = Severity::kWarning;
+    diagnostic.rule_id = std::string(kId);
+    diagnostic.range = {context.File().Id(), *offset, *offset};
+    diagnostic.message = "the " + dialect->name + " harness provides " + names +
+                         "; WebGL2 code must declare them: adding the declarations";
+    diagnostic.fixes.push_back(
+        FixIt{{context.File().Id(), *offset, *offset}, std::move(text), FixSafety::kSafe});
+    context.Report(std::move(diagnostic));
+  }
+};
+
+}  // namespace
+
+const rule::Rule& ShadertoyUniformsRule() {
+  static const UniformsRule rule;
+  return rule;
+}
+
+}  // namespace shaderport::rules

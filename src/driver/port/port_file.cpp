@@ -1,0 +1,238 @@
+#include "driver/port/port_file.h"
+
+#include <algorithm>
+#include <memory>
+#include <set>
+#include <tuple>
+
+#include "driver/front_end.h"
+#include "driver/read_input.h"
+#include "rule/fix_engine.h"
+#include "rules/registry.h"
+#include "validate/glslang_validator.h"
+#include "validate/shadertoy_contract.h"
+
+namespace shaderport::driver {
+namespace {
+
+// Beyond this many applied fixes, narrowing tries whole rules instead of single fixes.
+constexpr size_t kMaxSingleFixTrials = 24;
+
+validate::ChannelTypes ToChannelTypes(const PortOptions& options) {
+  validate::ChannelTypes types{};
+  for (size_t i = 0; i < types.size(); ++i) {
+    switch (options.channels[i]) {
+      case rule::ChannelKind::kCube:
+        types[i] = validate::ChannelType::kCube;
+        break;
+      case rule::ChannelKind::k3D:
+        types[i] = validate::ChannelType::k3D;
+        break;
+      case rule::ChannelKind::kAuto:
+      case rule::ChannelKind::k2D:
+        types[i] = validate::ChannelType::k2D;
+        break;
+    }
+  }
+  return types;
+}
+
+validate::PassType ToPassType(ShaderToyPass pass) {
+  switch (pass) {
+    case ShaderToyPass::kCubemap:
+      return validate::PassType::kCube;
+    case ShaderToyPass::kSound:
+      return validate::PassType::kSound;
+    case ShaderToyPass::kBuffer:
+      return validate::PassType::kBuffer;
+    case ShaderToyPass::kImage:
+    case ShaderToyPass::kCommon:
+      return validate::PassType::kImage;
+  }
+  return validate::PassType::kImage;
+}
+
+validate::Stage ToValidateStage(Stage stage) {
+  return stage == Stage::kVertex ? validate::Stage::kVertex : validate::Stage::kFragment;
+}
+
+size_t ErrorCount(const DiagnosticList& diagnostics) {
+  return static_cast<size_t>(std::count_if(diagnostics.begin(), diagnostics.end(),
+                                           [](auto& d) { return d.severity == Severity::kError; }));
+}
+
+class Porter {
+ public:
+  Porter(const SourceFile& file, const SourceFile* common, const PortOptions& options,
+         SourceManager& sources)
+      : file_(file), common_(common), options_(options), sources_(sources) {
+    kind_ = DetectKind(file.Text(), file.Name());
+    if (options.dialect) kind_.dialect = *options.dialect;
+    if (options.stage) kind_.stage = *options.stage;
+    if (kind_.dialect != Dialect::kShaderToy) common_ = nullptr;
+    rules_ = options.rules;
+    if (rules_.empty()) rules_ = rules::RulesForMode(options.mode);
+    settings_.mode = options.mode;
+    settings_.stage =
+        kind_.stage == Stage::kVertex ? rule::ShaderStage::kVertex : rule::ShaderStage::kFragment;
+    settings_.harness = options.harness;
+    settings_.source_version = kind_.dialect == Dialect::kWebGL1 ? 100 : 300;
+    for (int i = 0; i < 4; ++i) settings_.channels[i] = options.channels[i];
+  }
+
+  PortResult Run() {
+    PortResult result;
+    result.file = &file_;
+    result.kind = kind_;
+    result.output_stage = kind_.stage;
+    rule::FixEngineResult engine = RunEngine({});
+    DiagnosticList validation;
+    if (options_.validate && !engine.fixed.empty()) {
+      const size_t baseline = ErrorCount(Validate(file_.Text(), /*as_output=*/false));
+      validation = Validate(engine.text, IsPort());
+      if (ErrorCount(validation) > baseline) {
+        engine = Narrow(engine, baseline, validation);
+        result.narrowed = true;
+      }
+    } else if (options_.validate) {
+      validation = Validate(engine.text, IsPort());
+    }
+    result.text = std::move(engine.text);
+    result.map = std::move(engine.map);
+    result.rounds = engine.rounds;
+    result.fixed = std::move(engine.fixed);
+    result.validated = options_.validate && ErrorCount(validation) == 0;
+    result.diagnostics = std::move(engine.remaining);
+    const DiagnosticList& extra = options_.validate ? validation : engine.front_end;
+    for (const Diagnostic& d : extra) {
+      result.diagnostics.push_back(rule::MapToOriginal(d, result.map, file_.Id()));
+    }
+    std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(),
+                     [](const Diagnostic& a, const Diagnostic& b) {
+                       return std::tie(a.range.file, a.range.begin) <
+                              std::tie(b.range.file, b.range.begin);
+                     });
+    return result;
+  }
+
+ private:
+  bool IsPort() const { return options_.mode == rule::PortMode::kPort; }
+
+  rule::FixEngineResult RunEngine(std::function<bool(const Diagnostic&)> allow) {
+    rule::FixEngineOptions engine;
+    engine.settings = settings_;
+    engine.rules = rules_;
+    engine.allow_fix = std::move(allow);
+    engine.analyze = [this](const SourceFile& current) {
+      DetectedKind kind = kind_;
+      // Once a port changed the text, it is read as what it has become (WebGL2).
+      if (IsPort() && current.Text() != file_.Text()) {
+        kind = DetectKind(current.Text(), file_.Name());
+        kind.stage = kind_.stage;
+      }
+      FrontEndOptions front_options;
+      front_options.analyze = true;
+      front_options.channels = ToChannelTypes(options_);
+      auto front = std::make_shared<FrontEndResult>(
+          RunFrontEnd(current, kind.dialect == Dialect::kShaderToy ? common_ : nullptr, kind,
+                      sources_, front_options));
+      rule::AnalyzedShader shader;
+      shader.lexed = &front->lexed;
+      shader.preprocessed = &front->preprocessed;
+      shader.tree = &front->parsed.tree;
+      shader.model = &*front->model;
+      shader.diagnostics = front->diagnostics;
+      shader.owner = front;
+      return shader;
+    };
+    return rule::RunFixEngine(file_, engine);
+  }
+
+  // glslang on `text` (located as the original file): as plain WebGL2 output, or
+  // in the original's own dialect.
+  DiagnosticList Validate(std::string_view text, bool as_output) {
+    const SourceFile current(file_.Id(), file_.Name(), std::string(text));
+    validate::ValidationRequest request;
+    if (!as_output && kind_.dialect == Dialect::kShaderToy) {
+      const bool is_common = kind_.pass == ShaderToyPass::kCommon;
+      request = validate::ComposeShaderToyRequest(sources_, ToPassType(kind_.pass),
+                                                  ToChannelTypes(options_),
+                                                  is_common ? nullptr : common_, current);
+      if (is_common) request.link = false;
+    } else {
+      request.parts.push_back({file_.Name(), current.Text(), file_.Id()});
+      request.stage = ToValidateStage(kind_.stage);
+      request.default_version = 100;
+    }
+    return validate::ValidateWithGlslang(request).diagnostics;
+  }
+
+  // Keeps the applied fixes one at a time (or rule by rule when there are many)
+  // as long as they do not add validation errors.
+  rule::FixEngineResult Narrow(const rule::FixEngineResult& full, size_t baseline,
+                               DiagnosticList& validation) {
+    using Key = std::tuple<std::string, uint32_t, uint32_t>;
+    const bool by_rule = full.fixed.size() > kMaxSingleFixTrials;
+    auto key_of = [by_rule](const Diagnostic& d) {
+      return by_rule ? Key{d.rule_id, 0, 0} : Key{d.rule_id, d.range.begin, d.range.end};
+    };
+    std::vector<Key> units;
+    for (const Diagnostic& d : full.fixed) {
+      if (std::find(units.begin(), units.end(), key_of(d)) == units.end()) {
+        units.push_back(key_of(d));
+      }
+    }
+    std::set<Key> kept;
+    size_t best = baseline;
+    for (const Key& unit : units) {
+      std::set<Key> trial = kept;
+      trial.insert(unit);
+      rule::FixEngineResult attempt =
+          RunEngine([&](const Diagnostic& d) { return trial.count(key_of(d)) > 0; });
+      const size_t errors = ErrorCount(Validate(attempt.text, IsPort()));
+      if (errors <= best) {
+        kept = std::move(trial);
+        best = errors;
+      }
+    }
+    rule::FixEngineResult narrowed =
+        RunEngine([&](const Diagnostic& d) { return kept.count(key_of(d)) > 0; });
+    validation = Validate(narrowed.text, IsPort());
+    return narrowed;
+  }
+
+  const SourceFile& file_;
+  const SourceFile* common_;
+  const PortOptions& options_;
+  SourceManager& sources_;
+  DetectedKind kind_;
+  std::vector<const rule::Rule*> rules_;
+  rule::PortSettings settings_;
+};
+
+}  // namespace
+
+PortResult PortSource(const SourceFile& file, const SourceFile* common, const PortOptions& options,
+                      SourceManager& sources) {
+  return Porter(file, common, options, sources).Run();
+}
+
+PortResult PortFile(const std::filesystem::path& path, const PortOptions& options,
+                    SourceManager& sources) {
+  InputText input = ReadInputFile(path);
+  if (!input.text) {
+    PortResult result;
+    result.file = &sources.Add(path.string(), "");
+    result.read_failed = true;
+    Diagnostic error;
+    error.rule_id = std::move(input.rule_id);
+    error.range = {result.file->Id(), 0, 0};
+    error.message = std::move(input.message);
+    result.diagnostics.push_back(std::move(error));
+    return result;
+  }
+  const SourceFile& file = sources.Add(path.string(), std::move(*input.text));
+  return PortSource(file, nullptr, options, sources);
+}
+
+}  // namespace shaderport::driver

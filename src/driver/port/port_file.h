@@ -1,0 +1,62 @@
+// Porting (`shaderport port`) and fixing (`shaderport fix`) one file: the rule
+// engine, then glslang on the result. A fix set that makes validation worse is
+// narrowed; errors in the result are located in the user's original text.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "diag/diagnostic.h"
+#include "driver/dialect.h"
+#include "rule/rule.h"
+#include "source/edit.h"
+#include "source/source_manager.h"
+
+namespace shaderport::driver {
+
+struct PortOptions {
+  rule::PortMode mode = rule::PortMode::kPort;
+  std::optional<Dialect> dialect;  // forced; else detected from the code
+  std::optional<Stage> stage;
+  const rule::HarnessDialect* harness = nullptr;  // --dialect FILE
+  rule::ChannelKind channels[4] = {rule::ChannelKind::kAuto, rule::ChannelKind::kAuto,
+                                   rule::ChannelKind::kAuto, rule::ChannelKind::kAuto};
+  // Rules to run; empty: the registry's rules for `mode`.
+  std::vector<const rule::Rule*> rules;
+  bool validate = true;  // run glslang on the result (and narrow bad fix sets)
+};
+
+struct PortResult {
+  const SourceFile* file = nullptr;  // the original, in the SourceManager
+  std::string text;                  // the result
+  SourceMap map;                     // text -> original
+  DetectedKind kind;                 // how the original was read
+  Stage output_stage = Stage::kFragment;
+  DiagnosticList diagnostics;  // what remains, located in the original
+  DiagnosticList fixed;        // findings whose fixes were applied
+  int rounds = 0;
+  bool read_failed = false;  // the input could not be read: no text
+  bool validated = false;    // glslang accepted the result
+  bool narrowed = false;     // some fixes were dropped because they broke validation
+
+  bool Changed() const { return file != nullptr && text != file->Text(); }
+};
+
+// `file` (and `common`, ShaderToy's Common code) must live in `sources`.
+PortResult PortSource(const SourceFile& file, const SourceFile* common, const PortOptions& options,
+                      SourceManager& sources);
+
+// Reads `path` (within the input limits) and ports or fixes it.
+PortResult PortFile(const std::filesystem::path& path, const PortOptions& options,
+                    SourceManager& sources);
+
+// The fix-mode shorthand.
+inline PortResult FixFile(const std::filesystem::path& path, PortOptions options,
+                          SourceManager& sources) {
+  options.mode = rule::PortMode::kFix;
+  return PortFile(path, options, sources);
+}
+
+}  // namespace shaderport::driver

@@ -1,0 +1,132 @@
+#include "driver/render_check/render_file.h"
+
+#include "driver/dialect.h"
+#include "driver/read_input.h"
+#include "driver/render_check/composed_text.h"
+#include "render/isolated_render.h"
+#include "render/loop_cap.h"
+#include "render/png_io.h"
+
+namespace shaderport::driver {
+namespace {
+
+Diagnostic Make(Severity severity, std::string rule, SourceRange range, std::string message) {
+  Diagnostic d;
+  d.severity = severity;
+  d.rule_id = std::move(rule);
+  d.range = range;
+  d.message = std::move(message);
+  return d;
+}
+
+std::optional<validate::PassType> RenderablePass(ShaderToyPass pass) {
+  switch (pass) {
+    case ShaderToyPass::kImage:
+      return validate::PassType::kImage;
+    case ShaderToyPass::kBuffer:
+      return validate::PassType::kBuffer;
+    case ShaderToyPass::kCubemap:
+      return validate::PassType::kCube;
+    case ShaderToyPass::kSound:
+      return validate::PassType::kSound;
+    case ShaderToyPass::kCommon:
+      break;
+  }
+  return std::nullopt;
+}
+
+render::ChannelKind KindOf(validate::ChannelType type) {
+  if (type == validate::ChannelType::kCube) return render::ChannelKind::kCube;
+  if (type == validate::ChannelType::k3D) return render::ChannelKind::k3D;
+  return render::ChannelKind::k2D;
+}
+
+}  // namespace
+
+void RenderPrepared(const PreparedShader& shader, const RenderFileOptions& options,
+                    RenderFileResult& result) {
+  render::RenderRequest request = options.base;
+  request.vertex_source = shader.vertex_text;
+  request.fragment_source = shader.fragment_text;
+  for (size_t i = 0; i < 4; ++i) {
+    request.inputs.channels[i].kind = KindOf(options.channel_types[i]);
+    if (options.channel_images[i].empty()) continue;
+    std::string error;
+    if (!render::ReadPng(options.channel_images[i], request.inputs.channels[i].image, error)) {
+      result.diagnostics.push_back(
+          Make(Severity::kError, "render/channel-image", shader.anchor, error));
+      return;
+    }
+  }
+  const render::RenderOutcome outcome = render::RenderIsolated(request, options.render);
+  result.milliseconds = outcome.milliseconds;
+  render::CheckContext context;
+  context.anchor = shader.anchor;
+  context.map_line = shader.map_line;
+  context.expect_full_coverage = !shader.fragment_text.empty();
+  DiagnosticList found = render::CheckOutcome(outcome, context);
+  result.diagnostics.insert(result.diagnostics.end(), found.begin(), found.end());
+  if (outcome.status == render::RenderStatus::kOk) {
+    result.image = render::ToImage(outcome);
+    if (shader.user != nullptr) {
+      DiagnosticList notes = render::LoopCapNotes(*shader.user);
+      result.diagnostics.insert(result.diagnostics.end(), notes.begin(), notes.end());
+    }
+  }
+}
+
+RenderFileResult RenderFile(const std::filesystem::path& path, SourceManager& sources,
+                            const RenderFileOptions& options) {
+  RenderFileResult result;
+  InputText input = ReadInputFile(path);
+  if (!input.text) {
+    const SourceFile& empty = sources.Add(path.string(), "");
+    result.file = &empty;
+    result.diagnostics.push_back(
+        Make(Severity::kError, input.rule_id, empty.WholeRange(), input.message));
+    return result;
+  }
+  const SourceFile& file = sources.Add(path.string(), std::move(*input.text));
+  result.file = &file;
+  const DetectedKind kind = DetectKind(file.Text(), path);
+  result.dialect = std::string(DialectName(kind.dialect));
+  result.stage = std::string(StageName(kind.stage));
+  const SourceRange anchor{file.Id(), 0, 0};
+
+  PreparedShader shader;
+  shader.anchor = anchor;
+  shader.user = &file;
+  if (kind.dialect == Dialect::kShaderToy) {
+    const std::optional<validate::PassType> pass = RenderablePass(kind.pass);
+    if (!pass) {
+      result.diagnostics.push_back(Make(Severity::kNote, "render/not-rendered", anchor,
+                                        "a Common file is rendered with the passes using it"));
+      return result;
+    }
+    auto composed = std::make_shared<ComposedText>();
+    composed->Append(validate::ShaderToyHeader(*pass, options.channel_types), nullptr);
+    if (options.common != nullptr) composed->Append(options.common->Text(), options.common);
+    composed->Append(file.Text(), &file);
+    composed->Append(validate::ShaderToyEpilogue(*pass), nullptr);
+    shader.fragment_text = composed->Text();
+    shader.map_line = [composed](render::ShaderStage, uint32_t line) {
+      return composed->MapLine(line);
+    };
+  } else if (kind.dialect == Dialect::kWebGL2) {
+    auto composed = std::make_shared<ComposedText>();
+    composed->Append(file.Text(), &file);
+    (kind.stage == Stage::kVertex ? shader.vertex_text : shader.fragment_text) = composed->Text();
+    shader.map_line = [composed](render::ShaderStage, uint32_t line) {
+      return composed->MapLine(line);
+    };
+  } else {
+    result.diagnostics.push_back(Make(Severity::kNote, "render/not-rendered", anchor,
+                                      "WebGL1 (GLSL ES 1.00) code is rendered after `shaderport "
+                                      "port` turns it into WebGL2"));
+    return result;
+  }
+  RenderPrepared(shader, options, result);
+  return result;
+}
+
+}  // namespace shaderport::driver

@@ -1,0 +1,54 @@
+// Driver glue for smoke rendering: composes what the browser or shadertoy.com would
+// compile (validate/shadertoy_contract.h for ShaderToy passes), renders it in an
+// isolated child (render/isolated_render.h) and turns the outcome into diagnostics
+// on the user's lines. Used by `shaderport render` and the check pipeline.
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "diag/diagnostic.h"
+#include "render/render_checks.h"
+#include "render/render_request.h"
+#include "source/source_manager.h"
+#include "validate/shadertoy_contract.h"
+
+namespace shaderport::driver {
+
+struct RenderFileOptions {
+  render::RenderOptions render;  // backend, timeout, address-space limit, cache
+  render::RenderRequest base;    // size, frames and ShaderToy inputs; sources are ignored
+  std::array<std::string, 4> channel_images;  // PNG paths for iChannel0..3 ("" = procedural)
+  validate::ChannelTypes channel_types{};     // sampler kind per channel (ShaderToy)
+  const SourceFile* common = nullptr;         // ShaderToy Common code, if any
+};
+
+struct RenderFileResult {
+  const SourceFile* file = nullptr;         // null when the file could not be read
+  std::string dialect;                      // "shadertoy", "webgl1", "webgl2"
+  std::string stage;                        // "vertex", "fragment"
+  DiagnosticList diagnostics;               // render/* (and input/* when unreadable)
+  std::optional<render::ImageRgba8> image;  // the final frame, when something was drawn
+  double milliseconds = 0;
+};
+
+// Reads, detects the dialect and stage, renders and checks one file.
+RenderFileResult RenderFile(const std::filesystem::path& path, SourceManager& sources,
+                            const RenderFileOptions& options);
+
+// For callers that compose the text themselves (the port pipeline): complete
+// `#version 300 es` texts and a map from their lines to the user's source.
+struct PreparedShader {
+  std::string vertex_text;    // empty: built-in full-screen triangle
+  std::string fragment_text;  // empty: built-in flat shader (vertex drawn on a mesh)
+  std::function<std::optional<SourceRange>(render::ShaderStage, uint32_t)> map_line;
+  SourceRange anchor;                // where picture-level findings point
+  const SourceFile* user = nullptr;  // scanned for loops over llvmpipe's cap
+};
+void RenderPrepared(const PreparedShader& shader, const RenderFileOptions& options,
+                    RenderFileResult& result);
+
+}  // namespace shaderport::driver

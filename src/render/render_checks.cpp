@@ -1,0 +1,203 @@
+#include "render/render_checks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "render/mesa_log.h"
+
+namespace shaderport::render {
+namespace {
+
+// The site initialises the output to vec4(1e20): a pixel still this bright was
+// never assigned by mainImage.
+constexpr float kSiteInitialValue = 1e19f;
+
+Diagnostic Make(Severity severity, std::string rule, SourceRange range, std::string message) {
+  Diagnostic d;
+  d.severity = severity;
+  d.rule_id = std::move(rule);
+  d.range = range;
+  d.message = std::move(message);
+  return d;
+}
+
+void AddCompileDiagnostics(const std::string& log, ShaderStage stage, const CheckContext& context,
+                           DiagnosticList& out) {
+  const char* stage_name = stage == ShaderStage::kVertex ? "vertex" : "fragment";
+  bool any = false;
+  for (const MesaLogEntry& entry : ParseMesaLog(log)) {
+    if (!entry.is_error) continue;
+    any = true;
+    std::optional<SourceRange> range;
+    if (entry.line > 0 && context.map_line) range = context.map_line(stage, entry.line);
+    std::string message =
+        "Mesa rejects the " + std::string(stage_name) + " shader: " + entry.message;
+    if (!range && entry.line > 0) {
+      message += " (line " + std::to_string(entry.line) + " of the generated text)";
+    }
+    out.push_back(Make(Severity::kError, "render/compile-error", range.value_or(context.anchor),
+                       std::move(message)));
+  }
+  if (!any) {
+    out.push_back(Make(Severity::kError, "render/compile-error", context.anchor,
+                       "Mesa rejects the " + std::string(stage_name) +
+                           " shader: " + (log.empty() ? std::string("(no log)") : log)));
+  }
+}
+
+bool IsSentinel(const float* p) {
+  return p[0] == kSentinel[0] && p[1] == kSentinel[1] && p[2] == kSentinel[2] &&
+         p[3] == kSentinel[3];
+}
+
+uint8_t ToByte(float value) {
+  if (!(value > 0.0f)) return 0;  // also NaN
+  if (value >= 1.0f) return 255;
+  return static_cast<uint8_t>(std::lround(value * 255.0f));
+}
+
+std::string At(const RenderOutcome& outcome, size_t pixel) {
+  // Report in top-down picture coordinates, as the PNG shows them.
+  const size_t x = pixel % outcome.width;
+  const size_t y = outcome.height - 1 - pixel / outcome.width;
+  return "(" + std::to_string(x) + ", " + std::to_string(y) + ")";
+}
+
+}  // namespace
+
+ImageRgba8 ToImage(const RenderOutcome& outcome) {
+  ImageRgba8 image;
+  image.width = outcome.width;
+  image.height = outcome.height;
+  image.pixels.resize(size_t{outcome.width} * outcome.height * 4);
+  const size_t row = size_t{outcome.width} * 4;
+  for (uint32_t y = 0; y < outcome.height; ++y) {
+    const float* src = &outcome.pixels[(outcome.height - 1 - y) * row];
+    uint8_t* dst = &image.pixels[y * row];
+    for (size_t i = 0; i < row; ++i) dst[i] = ToByte(src[i]);
+  }
+  return image;
+}
+
+DiagnosticList CheckPixels(const RenderOutcome& outcome, const CheckContext& context) {
+  DiagnosticList out;
+  const size_t count = size_t{outcome.width} * outcome.height;
+  if (count == 0 || outcome.pixels.size() != count * 4) return out;
+  size_t non_finite = 0, first_non_finite = 0;
+  size_t sentinel = 0, first_sentinel = 0;
+  size_t initial = 0, first_initial = 0;
+  size_t valid = 0, black = 0, white = 0, zero = 0;
+  bool single = true;
+  uint8_t first_colour[4] = {};
+  for (size_t i = 0; i < count; ++i) {
+    const float* p = &outcome.pixels[i * 4];
+    if (IsSentinel(p)) {
+      if (sentinel++ == 0) first_sentinel = i;
+      continue;
+    }
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]) ||
+        !std::isfinite(p[3])) {
+      if (non_finite++ == 0) first_non_finite = i;
+      continue;
+    }
+    if (p[0] >= kSiteInitialValue && p[1] >= kSiteInitialValue && p[2] >= kSiteInitialValue) {
+      if (initial++ == 0) first_initial = i;
+      continue;
+    }
+    const uint8_t c[4] = {ToByte(p[0]), ToByte(p[1]), ToByte(p[2]), ToByte(p[3])};
+    if (valid++ == 0) {
+      std::copy(c, c + 4, first_colour);
+    } else if (!std::equal(c, c + 4, first_colour)) {
+      single = false;
+    }
+    if (c[0] == 0 && c[1] == 0 && c[2] == 0) ++black;
+    if (p[0] == 0.0f && p[1] == 0.0f && p[2] == 0.0f && p[3] == 0.0f) ++zero;
+    if (c[0] == 255 && c[1] == 255 && c[2] == 255) ++white;
+  }
+  const std::string of_total = " of " + std::to_string(count) + " pixels";
+  if (non_finite > 0) {
+    out.push_back(Make(Severity::kError, "render/nan-or-inf", context.anchor,
+                       std::to_string(non_finite) + of_total + " are NaN or infinite, first at " +
+                           At(outcome, first_non_finite)));
+  }
+  if (initial > 0) {
+    out.push_back(Make(Severity::kError, "render/unwritten-pixels", context.anchor,
+                       std::to_string(initial) + of_total +
+                           " keep the site's initial value 1e20: the output was never assigned "
+                           "there, first at " +
+                           At(outcome, first_initial)));
+  }
+  if (context.expect_full_coverage && sentinel > 0) {
+    out.push_back(Make(Severity::kError, "render/unwritten-pixels", context.anchor,
+                       std::to_string(sentinel) + of_total +
+                           " were never written (discarded or not covered), first at " +
+                           At(outcome, first_sentinel)));
+  } else if (!context.expect_full_coverage && sentinel == count) {
+    out.push_back(Make(Severity::kError, "render/unwritten-pixels", context.anchor,
+                       "the vertex shader drew nothing on the generated mesh: every pixel "
+                       "still holds the clear value"));
+  }
+  // Colour checks only on a picture that is not already reported as broken.
+  const size_t drawn = count - sentinel;
+  if (valid == 0 || valid != drawn || !context.expect_full_coverage) return out;
+  if (zero == valid) {
+    // Mesa gives an output that is never assigned the value zero, alpha included.
+    out.push_back(Make(Severity::kError, "render/unwritten-pixels", context.anchor,
+                       "every pixel is (0, 0, 0, 0): the output is probably never written"));
+  } else if (black == valid) {
+    out.push_back(Make(Severity::kWarning, "render/all-black", context.anchor,
+                       "the picture is entirely black (is fragColor assigned? Mesa leaves an "
+                       "unassigned output at zero)"));
+  } else if (white == valid) {
+    out.push_back(Make(Severity::kWarning, "render/blown-out", context.anchor,
+                       "the picture is entirely white (blown out: values of 1.0 or more)"));
+  } else if (single) {
+    out.push_back(Make(Severity::kWarning, "render/single-colour", context.anchor,
+                       "every pixel has the same colour rgba(" + std::to_string(first_colour[0]) +
+                           ", " + std::to_string(first_colour[1]) + ", " +
+                           std::to_string(first_colour[2]) + ", " +
+                           std::to_string(first_colour[3]) + ")"));
+  }
+  return out;
+}
+
+DiagnosticList CheckOutcome(const RenderOutcome& outcome, const CheckContext& context) {
+  DiagnosticList out;
+  switch (outcome.status) {
+    case RenderStatus::kCompileFailed:
+      if (outcome.vertex_log.find("error") != std::string::npos) {
+        AddCompileDiagnostics(outcome.vertex_log, ShaderStage::kVertex, context, out);
+      }
+      if (outcome.fragment_log.find("error") != std::string::npos || out.empty()) {
+        AddCompileDiagnostics(outcome.fragment_log, ShaderStage::kFragment, context, out);
+      }
+      return out;
+    case RenderStatus::kLinkFailed:
+      out.push_back(Make(Severity::kError, "render/link-error", context.anchor,
+                         "Mesa cannot link the program: " + outcome.link_log));
+      return out;
+    case RenderStatus::kContextFailed:
+      out.push_back(Make(Severity::kError, "render/backend-unavailable", context.anchor,
+                         "no GL context to render with: " + outcome.message));
+      return out;
+    case RenderStatus::kTimeout:
+      out.push_back(Make(Severity::kError, "render/timeout", context.anchor, outcome.message));
+      return out;
+    case RenderStatus::kCrashed:
+    case RenderStatus::kInternal:
+      out.push_back(Make(Severity::kError, "render/crashed", context.anchor,
+                         "the render failed: " + outcome.message));
+      return out;
+    case RenderStatus::kOk:
+      break;
+  }
+  for (const std::string& error : outcome.gl_errors) {
+    out.push_back(Make(Severity::kError, "render/gl-error", context.anchor, error));
+  }
+  DiagnosticList pixels = CheckPixels(outcome, context);
+  out.insert(out.end(), pixels.begin(), pixels.end());
+  return out;
+}
+
+}  // namespace shaderport::render

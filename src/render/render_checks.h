@@ -1,0 +1,35 @@
+// Turns a render outcome into diagnostics: Mesa compile/link errors mapped back to
+// the user's lines, GL errors, killed or crashed renders, and picture checks (NaN or
+// Inf, pixels never written, a single colour, all black, blown out to white).
+#pragma once
+
+#include <functional>
+#include <optional>
+
+#include "diag/diagnostic.h"
+#include "render/render_request.h"
+
+namespace shaderport::render {
+
+enum class ShaderStage : uint8_t { kVertex, kFragment };
+
+struct CheckContext {
+  // Where diagnostics without a line point: normally the whole user file.
+  SourceRange anchor;
+  // Maps a 1-based line of the text given to Mesa to the user's source; nullopt
+  // when the line is generated (a header or wrapper). Unset: everything at anchor.
+  std::function<std::optional<SourceRange>(ShaderStage stage, uint32_t line)> map_line;
+  // False for a vertex shader drawn on the generated mesh, which covers only part
+  // of the picture: then only an empty picture counts as unwritten.
+  bool expect_full_coverage = true;
+};
+
+DiagnosticList CheckOutcome(const RenderOutcome& outcome, const CheckContext& context);
+
+// Picture checks alone (part of CheckOutcome), on RGBA32F pixels.
+DiagnosticList CheckPixels(const RenderOutcome& outcome, const CheckContext& context);
+
+// The picture as the site would show it: clamped, rounded to 8 bits, rows top-down.
+ImageRgba8 ToImage(const RenderOutcome& outcome);
+
+}  // namespace shaderport::render

@@ -1,0 +1,163 @@
+#include "rule/fix_engine.h"
+
+#include <gtest/gtest.h>
+
+#include "rule/fix_selection.h"
+#include "test_rules.h"
+
+namespace shaderport::rule {
+namespace {
+
+using testing::FlagRule;
+using testing::RenameRule;
+
+FixEngineResult RunEngine(const std::string& text, std::vector<const Rule*> rules,
+                          int max_rounds = 3) {
+  const SourceFile file(0, "test.frag", text);
+  FixEngineOptions options;
+  options.rules = std::move(rules);
+  options.max_rounds = max_rounds;
+  return RunFixEngine(file, options);
+}
+
+bool HasNote(const Diagnostic& d, std::string_view part) {
+  for (const auto& note : d.notes) {
+    if (note.message.find(part) != std::string::npos) return true;
+  }
+  return false;
+}
+
+TEST(FixEngine, AppliesFixesAndStopsWhenNothingChanges) {
+  const RenameRule rename("test/rename", "foo", "bar");
+  const auto result = RunEngine("float foo; void main() { foo = 1.0; }", {&rename});
+  EXPECT_EQ(result.text, "float bar; void main() { bar = 1.0; }");
+  EXPECT_EQ(result.rounds, 1);
+  EXPECT_TRUE(result.converged);
+  EXPECT_EQ(result.fixed.size(), 2u);
+  EXPECT_TRUE(result.remaining.empty());
+}
+
+TEST(FixEngine, ChainsRoundsAndMapsLaterFindingsToTheOriginal) {
+  // Round 1: aaa -> bbb; round 2: bbb -> cc; then the flag rule sees cc.
+  const RenameRule first("test/a", "aaa", "bbb");
+  const RenameRule second("test/b", "bbb", "cc");
+  const FlagRule flag("cc");
+  const std::string original = "float x;\nfloat aaa;";
+  const auto result = RunEngine(original, {&first, &second, &flag});
+  EXPECT_EQ(result.text, "float x;\nfloat cc;");
+  EXPECT_EQ(result.rounds, 2);
+  ASSERT_EQ(result.remaining.size(), 1u);
+  EXPECT_EQ(result.remaining[0].rule_id, "test/flag");
+  EXPECT_EQ(result.remaining[0].range.begin, original.find("aaa"));
+  EXPECT_EQ(result.remaining[0].range.end, original.find("aaa") + 3);
+  EXPECT_EQ(result.map.ToOriginal(static_cast<uint32_t>(result.text.find("cc"))),
+            original.find("aaa"));
+}
+
+TEST(FixEngine, FightingRulesStopAfterMaxRoundsWithInternalError) {
+  const RenameRule there("test/there", "x", "y");
+  const RenameRule back("test/back", "y", "x");
+  const auto result = RunEngine("float x;", {&there, &back});
+  EXPECT_FALSE(result.converged);
+  EXPECT_EQ(result.rounds, 3);
+  bool internal = false;
+  for (const auto& d : result.remaining) {
+    if (d.rule_id == "internal/error") {
+      internal = true;
+      EXPECT_NE(d.message.find("test/there"), std::string::npos) << d.message;
+    }
+  }
+  EXPECT_TRUE(internal);
+}
+
+TEST(FixEngine, UnterminatedMacroDoesNotCrash) {
+  const RenameRule rename("test/rename", "foo", "bar");
+  const auto result = RunEngine("#define foo(\nfoo(", {&rename});
+  EXPECT_TRUE(result.converged);
+}
+
+TEST(FixEngine, IsIdempotent) {
+  const RenameRule first("test/a", "aaa", "bbb");
+  const RenameRule second("test/b", "bbb", "cc");
+  const auto once = RunEngine("float aaa; float bbb; // aaa\n", {&first, &second});
+  const auto twice = RunEngine(once.text, {&first, &second});
+  EXPECT_EQ(twice.text, once.text);
+  EXPECT_EQ(twice.rounds, 0);
+}
+
+TEST(FixEngine, OverlappingFixesEarlierRuleWins) {
+  const RenameRule winner("test/a-first", "foo", "bar");
+  const RenameRule loser("test/b-second", "foo", "baz");
+  const auto result = RunEngine("float foo;", {&winner, &loser});
+  EXPECT_EQ(result.text, "float bar;");
+}
+
+TEST(FixSelection, LoserGetsANoteAndDuplicatesMerge) {
+  DiagnosticList list;
+  list.push_back({Severity::kWarning, "test/a", {0, 0, 3}, "a", {}, {{{0, 0, 3}, "X"}}});
+  list.push_back({Severity::kWarning, "test/b", {0, 1, 2}, "b", {}, {{{0, 1, 2}, "Y"}}});
+  list.push_back({Severity::kWarning, "test/c", {0, 0, 3}, "c", {}, {{{0, 0, 3}, "X"}}});
+  list.push_back({Severity::kWarning,
+                  "test/d",
+                  {0, 5, 6},
+                  "d",
+                  {},
+                  {{{0, 5, 6}, "Z", FixSafety::kSuggestion}}});
+  list.push_back({Severity::kWarning, "test/e", {1, 5, 6}, "other file", {}, {{{1, 5, 6}, "Z"}}});
+  FixSelectionOptions options;
+  options.file = 0;
+  const FixSelection selection = SelectFixes(list, options);
+  ASSERT_EQ(selection.edits.size(), 1u);
+  EXPECT_EQ(selection.edits[0].text, "X");
+  EXPECT_EQ(selection.applied, (std::vector<size_t>{0, 2}));
+  EXPECT_TRUE(HasNote(list[1], "test/a"));
+  EXPECT_TRUE(list[3].notes.empty());  // suggestions are shown, not applied, not noted
+}
+
+TEST(FixSelection, RefusedFixesGetTheNote) {
+  DiagnosticList list;
+  list.push_back({Severity::kWarning, "test/a", {0, 0, 3}, "a", {}, {{{0, 0, 3}, "X"}}});
+  FixSelectionOptions options;
+  options.file = 0;
+  options.allow = [](const Diagnostic&) { return false; };
+  options.refused_note = "not applied: the result did not validate";
+  EXPECT_TRUE(SelectFixes(list, options).edits.empty());
+  EXPECT_TRUE(HasNote(list[0], "did not validate"));
+}
+
+TEST(MacroFixes, BodyEditAppliesWhenEveryExpansionAgrees) {
+  const RenameRule rename("test/rename", "foo", "bar");
+  const auto result = RunEngine("#define ONE foo\nfloat a = ONE;\nfloat b = ONE;\n", {&rename});
+  EXPECT_EQ(result.text, "#define ONE bar\nfloat a = ONE;\nfloat b = ONE;\n");
+}
+
+TEST(MacroFixes, BodyEditIsRefusedWhenExpansionsDisagree) {
+  const RenameRule rename("test/rename", "foo", "bar", /*only_line=*/2);
+  const std::string text = "#define ONE foo\nfloat a = ONE;\nfloat b = ONE;\n";
+  const auto result = RunEngine(text, {&rename});
+  EXPECT_EQ(result.text, text);
+  ASSERT_EQ(result.remaining.size(), 1u);
+  EXPECT_TRUE(result.remaining[0].fixes.empty());
+  EXPECT_TRUE(HasNote(result.remaining[0], "macro 'ONE'"));
+}
+
+TEST(MacroFixes, EditsOfMacroArgumentsAreNotApplied) {
+  const RenameRule rename("test/rename", "foo", "bar");
+  const std::string text = "#define ID(x) x\nfloat foo;\nfloat a = ID(foo);\n";
+  const auto result = RunEngine(text, {&rename});
+  EXPECT_EQ(result.text, "#define ID(x) x\nfloat bar;\nfloat a = ID(foo);\n");
+  ASSERT_EQ(result.remaining.size(), 1u);
+  EXPECT_TRUE(HasNote(result.remaining[0], "inside macro 'ID'"));
+}
+
+TEST(FixEngine, BrokenInputDoesNotCrash) {
+  const RenameRule rename("test/rename", "foo", "bar");
+  for (const char* text : {"", "foo", "void main( { foo", "\x01\xff foo"}) {
+    const auto result = RunEngine(text, {&rename});
+    EXPECT_EQ(result.text.find("foo"), std::string::npos) << text;
+    EXPECT_TRUE(result.converged);
+  }
+}
+
+}  // namespace
+}  // namespace shaderport::rule

@@ -1,0 +1,115 @@
+// Golden cases of the webgl2/* rules, under tests/rules/webgl2-<rule>/:
+//   <case>.frag|.vert        the input (GLSL ES 1.00 unless it says otherwise)
+//   <case>.diag              what the rule alone reports, with its fix-its
+//   <case>.out.frag|.vert    the input ported by every webgl2/* rule (fix engine)
+// Every output must compile as GLSL ES 3.00 with glslang, and porting it again
+// must change nothing. Cases named keep-* expect no finding from the rule;
+// unfixable-* cases are not expected to compile. SHADERPORT_UPDATE_GOLDENS=1
+// rewrites the expected files.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "rules/registry.h"
+#include "webgl2_test_support.h"
+
+namespace shaderport::webgl2_test {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string ReadFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+bool Updating() {
+  const char* value = std::getenv("SHADERPORT_UPDATE_GOLDENS");
+  return value != nullptr && std::string(value) == "1";
+}
+
+void CheckGolden(const fs::path& path, const std::string& actual) {
+  if (Updating()) {
+    std::ofstream(path, std::ios::binary) << actual;
+    return;
+  }
+  ASSERT_TRUE(fs::exists(path)) << path << " is missing; run with SHADERPORT_UPDATE_GOLDENS=1";
+  EXPECT_EQ(ReadFile(path), actual) << "golden " << path;
+}
+
+struct Case {
+  fs::path input;
+  std::string rule_id;
+};
+
+std::vector<Case> AllCases() {
+  std::vector<Case> cases;
+  const fs::path root = fs::path(SHADERPORT_SOURCE_DIR) / "tests" / "rules";
+  for (const auto& dir : fs::directory_iterator(root)) {
+    const std::string name = dir.path().filename().string();
+    if (!dir.is_directory() || !name.starts_with("webgl2-")) continue;
+    const std::string rule_id = "webgl2/" + name.substr(7);
+    for (const auto& file : fs::directory_iterator(dir.path())) {
+      const std::string file_name = file.path().filename().string();
+      const std::string ext = file.path().extension().string();
+      if ((ext == ".frag" || ext == ".vert") && file_name.find(".out.") == std::string::npos) {
+        cases.push_back({file.path(), rule_id});
+      }
+    }
+  }
+  std::sort(cases.begin(), cases.end(),
+            [](const Case& a, const Case& b) { return a.input < b.input; });
+  return cases;
+}
+
+TEST(Webgl2Golden, EveryRuleHasCases) {
+  const auto cases = AllCases();
+  for (const rule::Rule* r : Webgl2Rules()) {
+    int count = 0;
+    for (const Case& c : cases) count += c.rule_id == r->Info().id;
+    EXPECT_GE(count, 2) << r->Info().id << " needs golden cases";
+  }
+  EXPECT_EQ(Webgl2Rules().size(), 7u);
+}
+
+TEST(Webgl2Golden, Cases) {
+  const auto cases = AllCases();
+  ASSERT_GE(cases.size(), 20u);
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.input.string());
+    const rule::Rule* r = rules::FindRule(c.rule_id);
+    ASSERT_NE(r, nullptr) << c.rule_id;
+    const std::string text = ReadFile(c.input);
+    const std::string stem = c.input.stem().string();
+    const std::string ext = c.input.extension().string();
+    const auto stage = ext == ".vert" ? rule::ShaderStage::kVertex : rule::ShaderStage::kFragment;
+    const int version = text.find("#version 300 es") == std::string::npos ? 100 : 300;
+
+    const RuleRun run = RunOneRule(*r, text, stage, rule::PortMode::kPort, version);
+    if (stem.starts_with("keep-")) {
+      EXPECT_TRUE(run.diagnostics.empty()) << FormatDiagnostics(text, run.diagnostics);
+    } else {
+      EXPECT_FALSE(run.diagnostics.empty());
+    }
+    for (const Diagnostic& d : run.diagnostics) EXPECT_EQ(d.rule_id, c.rule_id);
+    CheckGolden(c.input.parent_path() / (stem + ".diag"), FormatDiagnostics(text, run.diagnostics));
+
+    const rule::FixEngineResult ported = PortWithWebgl2Rules(text, stage, version);
+    EXPECT_TRUE(ported.converged);
+    CheckGolden(c.input.parent_path() / (stem + ".out" + ext), ported.text);
+    if (!stem.starts_with("unfixable-")) {
+      const auto compiled = Compile(ported.text, stage);
+      EXPECT_TRUE(compiled.Accepted(false)) << ported.text << "\n" << Messages(compiled);
+      const rule::FixEngineResult again = PortWithWebgl2Rules(ported.text, stage, 300);
+      EXPECT_EQ(again.text, ported.text) << "porting twice changed the text";
+    }
+  }
+}
+
+}  // namespace
+}  // namespace shaderport::webgl2_test

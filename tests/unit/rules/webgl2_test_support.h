@@ -1,0 +1,117 @@
+// Helpers for the webgl2/* rule tests: run one rule on a text and apply its safe
+// fixes, port with every webgl2/* rule through the fix engine, compile with glslang.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "diag/diagnostic.h"
+#include "rule/fix_engine.h"
+#include "rule/rule.h"
+#include "rule/rule_context.h"
+#include "rules/registry.h"
+#include "source/edit.h"
+#include "source/source_file.h"
+#include "validate/glslang_validator.h"
+
+namespace shaderport::webgl2_test {
+
+struct RuleRun {
+  DiagnosticList diagnostics;
+  std::string fixed;  // the text with the rule's non-overlapping safe fixes applied
+};
+
+inline rule::PortSettings Settings(rule::ShaderStage stage, rule::PortMode mode, int version) {
+  rule::PortSettings settings;
+  settings.stage = stage;
+  settings.mode = mode;
+  settings.source_version = version;
+  return settings;
+}
+
+inline RuleRun RunOneRule(const rule::Rule& r, const std::string& text, rule::ShaderStage stage,
+                          rule::PortMode mode = rule::PortMode::kPort, int version = 100) {
+  const SourceFile file(0, "input", text);
+  const rule::AnalyzedShader analyzed = rule::AnalyzePlain(file, 0, stage);
+  const rule::PortSettings settings = Settings(stage, mode, version);
+  rule::RuleContext context(file, *analyzed.lexed, *analyzed.preprocessed, *analyzed.tree,
+                            *analyzed.model, settings);
+  r.Run(context);
+  RuleRun run;
+  run.diagnostics = context.TakeDiagnostics();
+  std::vector<Edit> edits;
+  for (const Diagnostic& d : run.diagnostics) {
+    std::vector<Edit> mine;
+    for (const FixIt& fix : d.fixes) {
+      if (fix.safety == FixSafety::kSafe) mine.push_back({fix.range.begin, fix.range.end, fix.replacement});
+    }
+    bool clash = false;
+    for (const Edit& a : mine) {
+      for (const Edit& b : edits) clash = clash || EditsOverlap(a, b);
+    }
+    if (!clash) edits.insert(edits.end(), mine.begin(), mine.end());
+  }
+  auto applied = ApplyEdits(text, edits);
+  run.fixed = applied ? applied->text : text;
+  return run;
+}
+
+inline std::string FormatDiagnostics(const std::string& text, const DiagnosticList& diagnostics) {
+  const SourceFile file(0, "input", text);
+  auto at = [&](uint32_t offset) {
+    const LineColumn lc = file.LocationOf(offset);
+    return std::to_string(lc.line) + ":" + std::to_string(lc.column);
+  };
+  std::string out;
+  for (const Diagnostic& d : diagnostics) {
+    out += at(d.range.begin) + ": " + SeverityName(d.severity) + " [" + d.rule_id + "] " +
+           d.message + "\n";
+    for (const DiagnosticNote& note : d.notes) {
+      out += "  note" + (note.range.Valid() ? " " + at(note.range.begin) : std::string()) + ": " +
+             note.message + "\n";
+    }
+    for (const FixIt& fix : d.fixes) {
+      std::string replacement;
+      for (char c : fix.replacement) replacement += c == '\n' ? std::string("\\n") : std::string(1, c);
+      out += "  fix " + at(fix.range.begin) + "-" + at(fix.range.end) + ": \"" + replacement +
+             "\"" + (fix.safety == FixSafety::kSafe ? "" : " (suggestion)") + "\n";
+    }
+  }
+  return out;
+}
+
+inline std::vector<const rule::Rule*> Webgl2Rules() {
+  std::vector<const rule::Rule*> selected;
+  for (const rule::Rule* r : rules::AllRules()) {
+    if (r->Info().id.starts_with("webgl2/")) selected.push_back(r);
+  }
+  return selected;
+}
+
+inline rule::FixEngineResult PortWithWebgl2Rules(const std::string& text, rule::ShaderStage stage,
+                                                 int version = 100) {
+  const SourceFile file(0, "input", text);
+  rule::FixEngineOptions options;
+  options.settings = Settings(stage, rule::PortMode::kPort, version);
+  options.rules = Webgl2Rules();
+  options.analyze = [stage](const SourceFile& f) { return rule::AnalyzePlain(f, 0, stage); };
+  return rule::RunFixEngine(file, options);
+}
+
+inline validate::ValidationResult Compile(const std::string& text, rule::ShaderStage stage) {
+  validate::ValidationRequest request;
+  request.parts.push_back({"input", text, 0, validate::PartKind::kUser});
+  request.stage = stage == rule::ShaderStage::kVertex ? validate::Stage::kVertex
+                                                      : validate::Stage::kFragment;
+  request.default_version = 100;
+  return validate::ValidateWithGlslang(request);
+}
+
+inline std::string Messages(const validate::ValidationResult& result) {
+  std::string out;
+  for (const Diagnostic& d : result.diagnostics) out += d.message + "\n";
+  return out;
+}
+
+}  // namespace shaderport::webgl2_test
