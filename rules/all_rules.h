@@ -15,6 +15,12 @@ const rule::Rule& ShadertoyChannelTypesRule();  // shadertoy/channel-types
 const rule::Rule& ShadertoyGlobalTimeRule();  // shadertoy/global-time
 const rule::Rule& ShadertoyMainWrapperRule();  // shadertoy/main-wrapper
 const rule::Rule& ShadertoyUniformsRule();  // shadertoy/uniforms
+const rule::Rule& TypingFloatIndexRule();  // typing/float-index
+const rule::Rule& TypingFloatModuloRule();  // typing/float-modulo
+const rule::Rule& TypingIntExpressionForFloatRule();  // typing/int-expression-for-float
+const rule::Rule& TypingIntLiteralForFloatRule();  // typing/int-literal-for-float
+const rule::Rule& TypingNonConstantGlobalInitializerRule();  // typing/non-constant-global-initializer
+const rule::Rule& TypingScalarToVectorRule();  // typing/scalar-to-vector
 const rule::Rule& Webgl2ExtensionsRule();  // webgl2/extensions
 const rule::Rule& Webgl2FragOutputsRule();  // webgl2/frag-outputs
 const rule::Rule& Webgl2InterfaceRule();  // webgl2/interface

@@ -15,6 +15,12 @@ std::vector<const rule::Rule*> BuildRegistry() {
       &ShadertoyGlobalTimeRule(),  // shadertoy/global-time
       &ShadertoyMainWrapperRule(),  // shadertoy/main-wrapper
       &ShadertoyUniformsRule(),  // shadertoy/uniforms
+      &TypingFloatIndexRule(),  // typing/float-index
+      &TypingFloatModuloRule(),  // typing/float-modulo
+      &TypingIntExpressionForFloatRule(),  // typing/int-expression-for-float
+      &TypingIntLiteralForFloatRule(),  // typing/int-literal-for-float
+      &TypingNonConstantGlobalInitializerRule(),  // typing/non-constant-global-initializer
+      &TypingScalarToVectorRule(),  // typing/scalar-to-vector
       &Webgl2ExtensionsRule(),  // webgl2/extensions
       &Webgl2FragOutputsRule(),  // webgl2/frag-outputs
       &Webgl2InterfaceRule(),  // webgl2/interface

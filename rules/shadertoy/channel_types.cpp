@@ -42,10 +42,10 @@ const glsl::TypeSpecifier* DeclaredType(const rule::RuleContext& context, std::s
 class ChannelTypesRule final : public rule::Rule {
  public:
   const rule::RuleInfo& Info() const override {
-    static const rule::RuleInfo info{
-        kId, "Give each ShaderToy channel the sampler type of its input",
-        "uniform sampler2D iChannel1; // --channel 1=cube",
-        "uniform samplerCube iChannel1;", rule::RuleScope::kPort};
+    static const rule::RuleInfo info{kId,
+                                     "Give each ShaderToy channel the sampler type of its input",
+                                     "uniform sampler2D iChannel1; // --channel 1=cube",
+                                     "uniform samplerCube iChannel1;", rule::RuleScope::kPort};
     return info;
   }
 
@@ -58,8 +58,9 @@ class ChannelTypesRule final : public rule::Rule {
       if (variable.channel < 0 || variable.channel > 3) continue;
       const harness::ChannelChoice& choice = channels[variable.channel];
       const std::string number = std::to_string(variable.channel);
-      if (const glsl::TypeSpecifier* declared = DeclaredType(context, variable.name)) {
-        if (!choice.told || declared->name.text == choice.type ||
+      const glsl::TypeSpecifier* declared = DeclaredType(context, variable.name);
+      if (declared != nullptr && choice.told) {
+        if (declared->name.text == choice.type ||
             declared->name.range.file != context.File().Id()) {
           continue;
         }
@@ -70,7 +71,7 @@ class ChannelTypesRule final : public rule::Rule {
         context.Report(std::move(diagnostic));
         continue;
       }
-      if (choice.use.Conflicting()) {
+      if (choice.use.Conflicting() && !choice.told) {
         Diagnostic diagnostic = Make(
             Severity::kWarning, tree.NodeAt(choice.use.first_cube).range,
             variable.name + " is sampled with both 2- and 3-component coordinates; declaring it " +
@@ -78,7 +79,7 @@ class ChannelTypesRule final : public rule::Rule {
         diagnostic.notes.push_back(
             {tree.NodeAt(choice.use.first_2d).range, "sampled as a 2D texture here"});
         context.Report(std::move(diagnostic));
-      } else if (!choice.told && choice.type == "samplerCube") {
+      } else if (!choice.told && choice.type == "samplerCube" && declared == nullptr) {
         context.Report(Make(Severity::kNote, tree.NodeAt(choice.use.first_cube).range,
                             variable.name +
                                 " is sampled with a 3-component coordinate: declaring it "

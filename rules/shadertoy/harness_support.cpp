@@ -108,7 +108,7 @@ int CoordinateSize(const rule::RuleContext& context, const glsl::CallExpr& call)
 }  // namespace
 
 std::array<ChannelChoice, 4> ChooseChannels(const rule::RuleContext& context,
-                                           const rule::HarnessDialect& dialect) {
+                                            const rule::HarnessDialect& dialect) {
   std::array<ChannelChoice, 4> choices;
   std::array<std::string, 4> names;
   for (const rule::ProvidedVariable& provided : dialect.provides) {

@@ -57,7 +57,7 @@ struct ChannelChoice {
   ChannelUse use;
 };
 std::array<ChannelChoice, 4> ChooseChannels(const rule::RuleContext& context,
-                                           const rule::HarnessDialect& dialect);
+                                            const rule::HarnessDialect& dialect);
 
 // The chosen type for one provided variable (its own type unless it is a channel).
 std::string TypeFor(const rule::ProvidedVariable& variable,

@@ -80,6 +80,18 @@ class UniformsRule final : public rule::Rule {
                          "; WebGL2 code must declare them: adding the declarations";
     diagnostic.fixes.push_back(
         FixIt{{context.File().Id(), *offset, *offset}, std::move(text), FixSafety::kSafe});
+    // Say why a channel is not a sampler2D (shadertoy/channel-types has the details).
+    for (const rule::ProvidedVariable* variable : provided) {
+      if (variable->channel < 0 || code.globals.contains(variable->name)) continue;
+      const harness::ChannelChoice& choice = channels[variable->channel];
+      if (choice.type == "sampler2D") continue;
+      diagnostic.notes.push_back(
+          {choice.told || choice.use.first_cube == glsl::kNoNode
+               ? SourceRange{}
+               : context.Tree().NodeAt(choice.use.first_cube).range,
+           variable->name + " is declared " + choice.type +
+               (choice.told ? " as told" : ": the code samples it with 3-component coordinates")});
+    }
     context.Report(std::move(diagnostic));
   }
 };

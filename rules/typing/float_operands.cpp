@@ -47,8 +47,7 @@ FloatOperands ClassifyModOperands(const rule::RuleContext& context, const glsl::
     return result;
   }
   if (!(lf == rf || rf == Type::Float())) {
-    result.why_not = "mod() takes a " + model.Spell(lf) + " with a float or a " + model.Spell(lf) +
-                     ", not a " + model.Spell(rf);
+    result.why_not = "mod() has no overload for (" + model.Spell(lf) + ", " + model.Spell(rf) + ")";
     return result;
   }
   if (compound && lt.base != glsl::BaseType::kFloat) {

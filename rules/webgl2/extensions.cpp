@@ -1,6 +1,7 @@
 // webgl2/extensions: `#extension` lines for GLSL ES 1.00 extensions that GLSL ES
 // 3.00 made core are removed, the whole line with its newline (table:
-// rules/data/webgl2_core_extensions.def). Other extensions are kept.
+// rules/data/webgl2_core_extensions.def). Other extensions are kept. Lines in
+// #if groups inactive here count too: a browser may define the guard macro.
 //
 // Before:                                             After:
 //   #extension GL_OES_standard_derivatives : enable     (line removed)
@@ -44,7 +45,7 @@ class ExtensionsRule final : public rule::Rule {
   }
 
   void Run(rule::RuleContext& context) const override {
-    for (const auto& directive : context.Preprocessed().extensions) {
+    for (const auto& directive : webgl2::ExtensionLines(context)) {
       const CoreExtension* core = FindCoreExtension(directive.name);
       if (core == nullptr || !webgl2::InThisFile(context, directive.range)) continue;
       auto diagnostic =

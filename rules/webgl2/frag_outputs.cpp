@@ -105,7 +105,7 @@ class FragOutputsRule final : public rule::Rule {
             webgl2::Replace(webgl2::NameFixRange(context, node, node.range, "gl_FragColor"), name));
       }
     }
-    context.Report(std::move(diagnostic));
+    webgl2::ReportSplittingMacroBodies(context, std::move(diagnostic));
   }
 
   static void FragData(rule::RuleContext& context, std::optional<uint32_t> point) {
@@ -153,7 +153,7 @@ class FragOutputsRule final : public rule::Rule {
         diagnostic.fixes.push_back(webgl2::Replace(index->range, outputs[n]));
       }
     }
-    context.Report(std::move(diagnostic));
+    webgl2::ReportSplittingMacroBodies(context, std::move(diagnostic));
   }
 
   static void FragDepth(rule::RuleContext& context) {
@@ -163,7 +163,7 @@ class FragOutputsRule final : public rule::Rule {
                                                "gl_FragDepthEXT is gl_FragDepth in GLSL ES 3.00");
       diagnostic.fixes.push_back(webgl2::Replace(
           webgl2::NameFixRange(context, node, node.range, "gl_FragDepthEXT"), "gl_FragDepth"));
-      context.Report(std::move(diagnostic));
+      webgl2::ReportSplittingMacroBodies(context, std::move(diagnostic));
     }
   }
 };

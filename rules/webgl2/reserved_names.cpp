@@ -154,7 +154,7 @@ class ReservedNamesRule final : public rule::Rule {
       diagnostic.notes.push_back(
           {at, "the host application must use the new name '" + name + "' for this input"});
     }
-    context.Report(std::move(diagnostic));
+    webgl2::ReportSplittingMacroBodies(context, std::move(diagnostic));
   }
 
   // A global the host application sees by name: uniform, attribute, varying, in, out.

@@ -2,6 +2,7 @@
 
 #include "glsl/sema/builtins.h"
 #include "glsl/syntax/keywords.h"
+#include "rule/macro_fixes.h"
 
 namespace shaderport::rules::webgl2 {
 
@@ -81,6 +82,51 @@ SourceRange NameFixRange(const rule::RuleContext& context, const glsl::Node& nod
     }
   }
   return name_range;
+}
+
+void ReportSplittingMacroBodies(rule::RuleContext& context, Diagnostic diagnostic) {
+  std::vector<FixIt> plain;
+  std::vector<FixIt> in_body;
+  for (FixIt& fix : diagnostic.fixes) {
+    const bool body =
+        rule::PlacementOf(context.Preprocessed(), fix.range) == rule::MacroPlacement::kBody;
+    (body ? in_body : plain).push_back(std::move(fix));
+  }
+  if (in_body.empty() || plain.empty()) {
+    diagnostic.fixes = in_body.empty() ? std::move(plain) : std::move(in_body);
+    context.Report(std::move(diagnostic));
+    return;
+  }
+  diagnostic.fixes = std::move(plain);
+  for (FixIt& fix : in_body) {
+    Diagnostic part = MakeDiagnostic(diagnostic.rule_id, diagnostic.severity, diagnostic.range,
+                                     diagnostic.message + " (in a macro body)");
+    part.fixes.push_back(std::move(fix));
+    context.Report(std::move(part));
+  }
+  context.Report(std::move(diagnostic));
+}
+
+std::vector<ExtensionLine> ExtensionLines(const rule::RuleContext& context) {
+  std::vector<ExtensionLine> lines;
+  const auto& tokens = context.Lexed().tokens;
+  for (size_t i = 0; i + 2 < tokens.size(); ++i) {
+    if (tokens[i].kind != glsl::TokenKind::kHash || tokens[i + 1].at_line_start ||
+        tokens[i + 1].text != "extension") {
+      continue;
+    }
+    size_t last = i + 1;
+    while (last + 1 < tokens.size() && !tokens[last + 1].at_line_start &&
+           tokens[last + 1].kind != glsl::TokenKind::kEndOfFile) {
+      ++last;
+    }
+    if (last >= i + 2 && tokens[i + 2].kind == glsl::TokenKind::kIdentifier) {
+      lines.push_back({std::string(tokens[i + 2].text),
+                       {context.File().Id(), tokens[i].begin, tokens[last].end}});
+    }
+    i = last;
+  }
+  return lines;
 }
 
 FixIt Replace(const SourceRange& range, std::string text) {

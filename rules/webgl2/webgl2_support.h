@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "diag/diagnostic.h"
 #include "glsl/syntax/ast.h"
@@ -38,6 +39,19 @@ uint32_t AfterLeadingDirectives(const rule::RuleContext& context, bool* saw_vers
 // agrees); `name_range` otherwise (Report drops fixes at macro use sites).
 SourceRange NameFixRange(const rule::RuleContext& context, const glsl::Node& node,
                          const SourceRange& name_range, std::string_view name);
+
+// Reports `diagnostic`; fix-its that edit a #define body are split off into
+// diagnostics of their own (same rule and message) because
+// RuleContext applies a body edit only when every expansion proposes it alone.
+void ReportSplittingMacroBodies(rule::RuleContext& context, Diagnostic diagnostic);
+
+// One `#extension` line as written, found in the lexed text (so also inside #if
+// groups that are inactive here but may be active in a browser).
+struct ExtensionLine {
+  std::string name;
+  SourceRange range;  // from '#' to the last token of the line
+};
+std::vector<ExtensionLine> ExtensionLines(const rule::RuleContext& context);
 
 FixIt Replace(const SourceRange& range, std::string text);
 FixIt Insert(FileId file, uint32_t offset, std::string text);

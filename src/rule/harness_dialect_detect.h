@@ -18,9 +18,9 @@ namespace shaderport::rule {
 
 // What the code declares at file scope and what it uses without a declaration.
 struct CodeInterface {
-  std::set<std::string, std::less<>> free_identifiers;  // used, declared nowhere
-  std::set<std::string, std::less<>> globals;           // file-scope variables, blocks, structs
-  std::set<std::string, std::less<>> functions;         // user functions, defined or declared
+  std::set<std::string, std::less<>> free_identifiers;   // used, declared nowhere
+  std::set<std::string, std::less<>> globals;            // file-scope variables, blocks, structs
+  std::set<std::string, std::less<>> functions;          // user functions, defined or declared
   std::set<std::string, std::less<>> defined_functions;  // with a body
 };
 

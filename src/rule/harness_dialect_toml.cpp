@@ -24,13 +24,15 @@ bool IsIdentifier(std::string_view text) {
 
 bool IsKnownTypeName(std::string_view type) {
   static const std::set<std::string_view> kTypes = {
-      "float",          "int",          "uint",          "bool",           "vec2",
-      "vec3",           "vec4",         "ivec2",         "ivec3",          "ivec4",
-      "uvec2",          "uvec3",        "uvec4",         "bvec2",          "bvec3",
-      "bvec4",          "mat2",         "mat3",          "mat4",           "mat2x2",
-      "mat2x3",         "mat2x4",       "mat3x2",        "mat3x3",         "mat3x4",
-      "mat4x2",         "mat4x3",       "mat4x4",        "sampler2D",      "samplerCube",
-      "sampler3D",      "sampler2DArray", "isampler2D",  "usampler2D",     "sampler2DShadow"};
+      "float",      "int",         "uint",           "bool",
+      "vec2",       "vec3",        "vec4",           "ivec2",
+      "ivec3",      "ivec4",       "uvec2",          "uvec3",
+      "uvec4",      "bvec2",       "bvec3",          "bvec4",
+      "mat2",       "mat3",        "mat4",           "mat2x2",
+      "mat2x3",     "mat2x4",      "mat3x2",         "mat3x3",
+      "mat3x4",     "mat4x2",      "mat4x3",         "mat4x4",
+      "sampler2D",  "samplerCube", "sampler3D",      "sampler2DArray",
+      "isampler2D", "usampler2D",  "sampler2DShadow"};
   return kTypes.contains(type);
 }
 
@@ -150,8 +152,8 @@ class DialectParser {
   std::optional<std::string> Identifier(const toml::key& key, const toml::node& node) {
     auto text = String(key, node);
     if (text && !IsIdentifier(*text)) {
-      Error(node.source(), "'" + std::string(key.str()) + "' must be a GLSL identifier, not '" +
-                               *text + "'");
+      Error(node.source(),
+            "'" + std::string(key.str()) + "' must be a GLSL identifier, not '" + *text + "'");
       return std::nullopt;
     }
     return text;
@@ -224,8 +226,8 @@ class DialectParser {
       const std::string& define = dialect_.defines[i];
       const std::string_view name = std::string_view(define).substr(0, define.find(' '));
       if (!IsIdentifier(name) || define.find('\n') != std::string::npos) {
-        Error((*array)[i].source(), "a define is \"NAME\" or \"NAME value\" on one line, not '" +
-                                        define + "'");
+        Error((*array)[i].source(),
+              "a define is \"NAME\" or \"NAME value\" on one line, not '" + define + "'");
       }
     }
   }
@@ -239,8 +241,8 @@ class DialectParser {
     for (auto&& [from, to] : *table) {
       auto target = Identifier(key, to);
       if (!IsIdentifier(from.str())) {
-        Error(from.source(), "renamed name '" + std::string(from.str()) +
-                                 "' must be a GLSL identifier");
+        Error(from.source(),
+              "renamed name '" + std::string(from.str()) + "' must be a GLSL identifier");
       } else if (target) {
         dialect_.renames.emplace_back(std::string(from.str()), std::move(*target));
       }
@@ -253,15 +255,16 @@ class DialectParser {
     bool has_type = false;
     for (auto&& [key, value] : table) {
       if (key == "name") {
-        if (auto name = Identifier(key, value)) variable.name = std::move(*name), has_name = true;
+        has_name = true;  // a bad value is reported once, not also as missing
+        if (auto name = Identifier(key, value)) variable.name = std::move(*name);
       } else if (key == "type") {
+        has_type = true;
         auto type = String(key, value);
         if (type && !IsValidType(*type)) {
           Error(value.source(), "unknown GLSL type '" + *type +
                                     "' (expected e.g. \"vec3\", \"float[4]\", \"sampler2D\")");
         } else if (type) {
           variable.type = std::move(*type);
-          has_type = true;
         }
       } else if (key == "storage") {
         auto storage = String(key, value);
@@ -312,7 +315,8 @@ class DialectParser {
     bool has_main = false;
     for (auto&& [key, value] : table) {
       if (key == "function") {
-        if (auto name = Identifier(key, value)) entry.function = std::move(*name), has_function = true;
+        has_function = true;
+        if (auto name = Identifier(key, value)) entry.function = std::move(*name);
       } else if (key == "main") {
         if (auto body = String(key, value)) entry.main_body = std::move(*body), has_main = true;
       } else if (key == "output") {

@@ -1,5 +1,6 @@
 #include "toolchain/reflect.h"
 
+#include <algorithm>
 #include <array>
 #include <exception>
 #include <nlohmann/json.hpp>
@@ -139,6 +140,18 @@ std::string BuiltinName(spv::BuiltIn builtin) {
   }
 }
 
+// SPIR-V keeps no declaration order (glslang numbers ids by first use), so lists are sorted:
+// by location where there is one, then by name.
+ordered_json Sorted(ordered_json list) {
+  std::stable_sort(list.begin(), list.end(), [](const ordered_json& a, const ordered_json& b) {
+    const int64_t la = a.value("location", int64_t{-1});
+    const int64_t lb = b.value("location", int64_t{-1});
+    if (la != lb) return la < lb;
+    return a["name"].get<std::string>() < b["name"].get<std::string>();
+  });
+  return list;
+}
+
 struct Context {
   const ReflectCompiler& compiler;
   std::unordered_set<spirv_cross::VariableID> active;
@@ -261,13 +274,14 @@ ordered_json BuildJson(const SpirvWords& words, Stage stage, bool shadertoy) {
   for (const spirv_cross::VariableID id : compiler.PlainUniforms()) {
     uniforms.push_back(Variable(context, id));
   }
+  uniforms = Sorted(std::move(uniforms));
   json["uniforms"] = uniforms;
-  json["uniformBlocks"] = UniformBlocks(context, resources.uniform_buffers);
+  json["uniformBlocks"] = Sorted(UniformBlocks(context, resources.uniform_buffers));
   const ordered_json samplers =
-      Samplers(context, resources.sampled_images, SamplerOperations(InlineAllCalls(words)));
+      Sorted(Samplers(context, resources.sampled_images, SamplerOperations(InlineAllCalls(words))));
   json["samplers"] = samplers;
-  json["inputs"] = Interface(context, resources.stage_inputs);
-  json["outputs"] = Interface(context, resources.stage_outputs);
+  json["inputs"] = Sorted(Interface(context, resources.stage_inputs));
+  json["outputs"] = Sorted(Interface(context, resources.stage_outputs));
   json["builtinInputs"] = Builtins(compiler, resources.builtin_inputs, spv::StorageClassInput);
   json["builtinOutputs"] = Builtins(compiler, resources.builtin_outputs, spv::StorageClassOutput);
   if (shadertoy) json["shadertoy"] = ShaderToy(uniforms, samplers);

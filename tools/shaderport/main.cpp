@@ -14,6 +14,11 @@ int main(int argc, char** argv) {
   AddCheckCommand(app, exit_code);
   AddDumpCommand(app, exit_code);
   AddSummaryCommand(app, exit_code);
+  AddRenderCommand(app, exit_code);
+  AddFixCommand(app, exit_code);
+  AddPortCommand(app, exit_code);
+  AddRulesCommand(app, exit_code);
+  AddExplainCommand(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

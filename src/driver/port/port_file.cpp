@@ -9,6 +9,7 @@
 #include "driver/read_input.h"
 #include "rule/fix_engine.h"
 #include "rules/registry.h"
+#include "rules/shadertoy/builtin_dialects.h"
 #include "validate/glslang_validator.h"
 #include "validate/shadertoy_contract.h"
 
@@ -76,6 +77,9 @@ class Porter {
     settings_.stage =
         kind_.stage == Stage::kVertex ? rule::ShaderStage::kVertex : rule::ShaderStage::kFragment;
     settings_.harness = options.harness;
+    if (settings_.harness == nullptr && kind_.dialect == Dialect::kShaderToy) {
+      settings_.harness = rules::FindBuiltinDialect("shadertoy");
+    }
     settings_.source_version = kind_.dialect == Dialect::kWebGL1 ? 100 : 300;
     for (int i = 0; i < 4; ++i) settings_.channels[i] = options.channels[i];
   }

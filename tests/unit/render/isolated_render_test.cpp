@@ -52,21 +52,21 @@ TEST(IsolatedRender, RendersAreBitIdenticalRunToRun) {
 }
 
 TEST(IsolatedRender, NanPixelsAreCaught) {
-  const RenderOutcome outcome = RenderIsolated(
-      FragmentRequest(ShaderToyText("void mainImage(out vec4 c, in vec2 p) {\n"
-                                    "  float z = p.x - p.x;\n"
-                                    "  c = vec4(vec3(z / z), 1.0);\n}\n")),
-      FastOptions());
+  const RenderOutcome outcome =
+      RenderIsolated(FragmentRequest(ShaderToyText("void mainImage(out vec4 c, in vec2 p) {\n"
+                                                   "  float z = p.x - p.x;\n"
+                                                   "  c = vec4(vec3(z / z), 1.0);\n}\n")),
+                     FastOptions());
   ASSERT_EQ(outcome.status, RenderStatus::kOk);
   EXPECT_TRUE(HasRule(CheckOutcome(outcome, {}), "render/nan-or-inf"));
 }
 
 TEST(IsolatedRender, NeverWrittenOutputIsCaught) {
   // A WebGL2 shader that never assigns its output: Mesa leaves it at zero.
-  const RenderOutcome outcome = RenderIsolated(
-      FragmentRequest("#version 300 es\nprecision highp float;\nout vec4 color;\n"
-                      "uniform float iTime;\nvoid main() { float t = iTime; }\n"),
-      FastOptions());
+  const RenderOutcome outcome =
+      RenderIsolated(FragmentRequest("#version 300 es\nprecision highp float;\nout vec4 color;\n"
+                                     "uniform float iTime;\nvoid main() { float t = iTime; }\n"),
+                     FastOptions());
   ASSERT_EQ(outcome.status, RenderStatus::kOk);
   EXPECT_TRUE(HasRule(CheckOutcome(outcome, {}), "render/unwritten-pixels"));
 }
@@ -74,10 +74,10 @@ TEST(IsolatedRender, NeverWrittenOutputIsCaught) {
 TEST(IsolatedRender, NeverWrittenShaderToyOutputIsCaught) {
   // mainImage forgets fragColor: on Mesa the out parameter reads as zero (on the
   // site it may keep the 1e20 initial value, which the checks also catch).
-  const RenderOutcome outcome = RenderIsolated(
-      FragmentRequest(ShaderToyText("void mainImage(out vec4 c, in vec2 p) {\n"
-                                    "  vec2 uv = p / iResolution.xy;\n}\n")),
-      FastOptions());
+  const RenderOutcome outcome =
+      RenderIsolated(FragmentRequest(ShaderToyText("void mainImage(out vec4 c, in vec2 p) {\n"
+                                                   "  vec2 uv = p / iResolution.xy;\n}\n")),
+                     FastOptions());
   ASSERT_EQ(outcome.status, RenderStatus::kOk);
   const DiagnosticList found = CheckOutcome(outcome, {});
   ASSERT_TRUE(HasRule(found, "render/all-black"));
@@ -97,10 +97,10 @@ TEST(IsolatedRender, DiscardedPixelsKeepTheSentinel) {
 }
 
 TEST(IsolatedRender, ConstantColourIsCaught) {
-  const RenderOutcome outcome = RenderIsolated(
-      FragmentRequest(ShaderToyText("void mainImage(out vec4 c, in vec2 p) {\n"
-                                    "  c = vec4(0.2, 0.4, 0.6, 1.0);\n}\n")),
-      FastOptions());
+  const RenderOutcome outcome =
+      RenderIsolated(FragmentRequest(ShaderToyText("void mainImage(out vec4 c, in vec2 p) {\n"
+                                                   "  c = vec4(0.2, 0.4, 0.6, 1.0);\n}\n")),
+                     FastOptions());
   ASSERT_EQ(outcome.status, RenderStatus::kOk);
   EXPECT_TRUE(HasRule(CheckOutcome(outcome, {}), "render/single-colour"));
 }
@@ -150,8 +150,7 @@ TEST(IsolatedRender, CompileErrorsAreMappedThroughTheCallersLineMap) {
 TEST(IsolatedRender, AddressSpaceLimitMakesAClearCrash) {
   RenderOptions options = FastOptions();
   options.address_space_limit = uint64_t{64} << 20;  // too small for llvmpipe
-  const RenderOutcome outcome =
-      RenderIsolated(FragmentRequest(ShaderToyText(kGradient)), options);
+  const RenderOutcome outcome = RenderIsolated(FragmentRequest(ShaderToyText(kGradient)), options);
   EXPECT_TRUE(outcome.status == RenderStatus::kCrashed ||
               outcome.status == RenderStatus::kContextFailed)
       << static_cast<int>(outcome.status) << outcome.message;
@@ -167,8 +166,8 @@ TEST(IsolatedRender, EglBackendMatchesOsMesaWhenAvailable) {
   ASSERT_EQ(egl.status, RenderStatus::kOk) << egl.message;
   const RenderOutcome osmesa = RenderIsolated(request, FastOptions());
   ASSERT_EQ(osmesa.status, RenderStatus::kOk);
-  EXPECT_EQ(0, std::memcmp(egl.pixels.data(), osmesa.pixels.data(),
-                           egl.pixels.size() * sizeof(float)));
+  EXPECT_EQ(
+      0, std::memcmp(egl.pixels.data(), osmesa.pixels.data(), egl.pixels.size() * sizeof(float)));
 }
 
 }  // namespace

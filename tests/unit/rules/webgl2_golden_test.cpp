@@ -103,8 +103,13 @@ TEST(Webgl2Golden, Cases) {
     EXPECT_TRUE(ported.converged);
     CheckGolden(c.input.parent_path() / (stem + ".out" + ext), ported.text);
     if (!stem.starts_with("unfixable-")) {
+      EXPECT_TRUE(ported.text.starts_with("#version 300 es\n")) << ported.text;
       const auto compiled = Compile(ported.text, stage);
-      EXPECT_TRUE(compiled.Accepted(false)) << ported.text << "\n" << Messages(compiled);
+      EXPECT_TRUE(compiled.Accepted(false))
+          << ported.text << "\n"
+          << Messages(compiled) << "remaining:\n"
+          << FormatDiagnostics(text, ported.remaining) << "front end:\n"
+          << FormatDiagnostics(text, ported.front_end);
       const rule::FixEngineResult again = PortWithWebgl2Rules(ported.text, stage, 300);
       EXPECT_EQ(again.text, ported.text) << "porting twice changed the text";
     }

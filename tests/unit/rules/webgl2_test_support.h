@@ -44,7 +44,8 @@ inline RuleRun RunOneRule(const rule::Rule& r, const std::string& text, rule::Sh
   for (const Diagnostic& d : run.diagnostics) {
     std::vector<Edit> mine;
     for (const FixIt& fix : d.fixes) {
-      if (fix.safety == FixSafety::kSafe) mine.push_back({fix.range.begin, fix.range.end, fix.replacement});
+      if (fix.safety == FixSafety::kSafe)
+        mine.push_back({fix.range.begin, fix.range.end, fix.replacement});
     }
     bool clash = false;
     for (const Edit& a : mine) {
@@ -73,7 +74,8 @@ inline std::string FormatDiagnostics(const std::string& text, const DiagnosticLi
     }
     for (const FixIt& fix : d.fixes) {
       std::string replacement;
-      for (char c : fix.replacement) replacement += c == '\n' ? std::string("\\n") : std::string(1, c);
+      for (char c : fix.replacement)
+        replacement += c == '\n' ? std::string("\\n") : std::string(1, c);
       out += "  fix " + at(fix.range.begin) + "-" + at(fix.range.end) + ": \"" + replacement +
              "\"" + (fix.safety == FixSafety::kSafe ? "" : " (suggestion)") + "\n";
     }
@@ -102,8 +104,8 @@ inline rule::FixEngineResult PortWithWebgl2Rules(const std::string& text, rule::
 inline validate::ValidationResult Compile(const std::string& text, rule::ShaderStage stage) {
   validate::ValidationRequest request;
   request.parts.push_back({"input", text, 0, validate::PartKind::kUser});
-  request.stage = stage == rule::ShaderStage::kVertex ? validate::Stage::kVertex
-                                                      : validate::Stage::kFragment;
+  request.stage =
+      stage == rule::ShaderStage::kVertex ? validate::Stage::kVertex : validate::Stage::kFragment;
   request.default_version = 100;
   return validate::ValidateWithGlslang(request);
 }

@@ -37,6 +37,7 @@ TEST(EmitDiagnostics, InvalidEsslIsInvalidInputNotALegLimitation) {
   const std::string text =
       "#version 300 es\nprecision highp float;\nout vec4 color;\n"
       "void main() {\n  float x = 1;\n  color = vec4(x);\n}\n";
+  ASSERT_NE(GlslangErrors(text, Stage::kFragment), "");  // the helper can say no
   const SourceFile file(0, "bad.frag", text);
   const EmitResult result = Emit(file, Stage::kFragment, OptionsFor(EmitKind::kSpirv));
   ASSERT_FALSE(result.diagnostics.empty());
@@ -89,6 +90,21 @@ TEST(EmitDiagnostics, SpirvCrossExceptionsBecomeDiagnostics) {
   EXPECT_TRUE(result.output.empty());
   options.hlsl_shader_model = 50;
   EXPECT_TRUE(EmitText(text, Stage::kFragment, options).diagnostics.empty());
+}
+
+// glslang 12 puts a plain bool uniform in UniformConstant, which SPIR-V forbids: the validator
+// must catch it rather than let an invalid module through.
+TEST(EmitDiagnostics, GlslangModulesTheValidatorRejectsAreInvalidModule) {
+  const std::string text =
+      "#version 300 es\nprecision highp float;\nuniform bool enabled;\nout vec4 color;\n"
+      "void main() { color = enabled ? vec4(1.0) : vec4(0.0); }\n";
+  ASSERT_EQ(GlslangErrors(text, Stage::kFragment), "");
+  const EmitResult result = EmitText(text, Stage::kFragment, OptionsFor(EmitKind::kSpirv));
+  ASSERT_EQ(result.diagnostics.size(), 1u) << result.output.size();
+  EXPECT_EQ(result.diagnostics[0].rule_id, "spirv/invalid-module");
+  EXPECT_NE(result.diagnostics[0].message.find("OpTypeBool"), std::string::npos)
+      << result.diagnostics[0].message;
+  EXPECT_TRUE(result.output.empty());
 }
 
 TEST(EmitDiagnostics, HostileInputNeverCrashes) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <thread>
 
 #include "emit_test_util.h"
 
@@ -80,6 +81,30 @@ TEST(SpirvEmit, VertexShadersGetAutomaticLocations) {
   EXPECT_NE(result.output.find("OpEntryPoint Vertex %main \"main\""), std::string::npos);
   EXPECT_NE(result.output.find("OpDecorate %position Location"), std::string::npos);
   EXPECT_NE(result.output.find("OpDecorate %v_uv Location"), std::string::npos);
+}
+
+// `port -j` emits from several threads at once: results must not depend on that.
+TEST(SpirvEmit, ParallelEmitsAgreeWithSerialOnes) {
+  const std::vector<CorpusShader> shaders = CompilingCorpusShaders();
+  ASSERT_GE(shaders.size(), 4u);
+  std::vector<std::string> serial;
+  for (size_t i = 0; i < 4; ++i) {
+    serial.push_back(
+        EmitText(shaders[i].webgl2, shaders[i].stage, OptionsFor(EmitKind::kMsl)).output);
+  }
+  std::vector<std::string> parallel(4);
+  std::vector<std::thread> threads;
+  for (size_t i = 0; i < 4; ++i) {
+    threads.emplace_back([&, i] {
+      parallel[i] =
+          EmitText(shaders[i].webgl2, shaders[i].stage, OptionsFor(EmitKind::kMsl)).output;
+    });
+  }
+  for (std::thread& thread : threads) thread.join();
+  for (size_t i = 0; i < 4; ++i) {
+    EXPECT_FALSE(serial[i].empty());
+    EXPECT_EQ(parallel[i], serial[i]) << shaders[i].path;
+  }
 }
 
 TEST(SpirvEmit, EsslKindReturnsTheTextUnchanged) {

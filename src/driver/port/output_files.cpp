@@ -1,0 +1,173 @@
+#include "driver/port/output_files.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <vector>
+
+namespace shaderport::driver {
+namespace {
+
+std::string Errno(const std::string& what) { return what + ": " + std::strerror(errno); }
+
+std::vector<std::string_view> SplitLines(std::string_view text) {
+  std::vector<std::string_view> lines;
+  size_t start = 0;
+  while (start < text.size()) {
+    const size_t newline = text.find('\n', start);
+    const size_t end = newline == std::string_view::npos ? text.size() : newline + 1;
+    lines.push_back(text.substr(start, end - start));
+    start = end;
+  }
+  return lines;
+}
+
+enum class Op : char { kEqual = ' ', kDelete = '-', kInsert = '+' };
+struct Step {
+  Op op;
+  size_t a;  // line index in before (for kEqual/kDelete)
+  size_t b;  // line index in after (for kEqual/kInsert)
+};
+
+// Line edit script: common prefix and suffix, then an LCS table on the middle
+// when it is small enough, else the middle as one replacement.
+std::vector<Step> Script(const std::vector<std::string_view>& a,
+                         const std::vector<std::string_view>& b) {
+  size_t prefix = 0;
+  while (prefix < a.size() && prefix < b.size() && a[prefix] == b[prefix]) ++prefix;
+  size_t suffix = 0;
+  while (suffix < a.size() - prefix && suffix < b.size() - prefix &&
+         a[a.size() - 1 - suffix] == b[b.size() - 1 - suffix]) {
+    ++suffix;
+  }
+  std::vector<Step> steps;
+  for (size_t i = 0; i < prefix; ++i) steps.push_back({Op::kEqual, i, i});
+  const size_t n = a.size() - prefix - suffix;
+  const size_t m = b.size() - prefix - suffix;
+  if (n * m <= 4'000'000) {
+    std::vector<std::vector<uint32_t>> lcs(n + 1, std::vector<uint32_t>(m + 1, 0));
+    for (size_t i = n; i-- > 0;) {
+      for (size_t j = m; j-- > 0;) {
+        lcs[i][j] = a[prefix + i] == b[prefix + j] ? lcs[i + 1][j + 1] + 1
+                                                   : std::max(lcs[i + 1][j], lcs[i][j + 1]);
+      }
+    }
+    size_t i = 0, j = 0;
+    while (i < n || j < m) {
+      if (i < n && j < m && a[prefix + i] == b[prefix + j]) {
+        steps.push_back({Op::kEqual, prefix + i++, prefix + j++});
+      } else if (j < m && (i == n || lcs[i][j + 1] >= lcs[i + 1][j])) {
+        steps.push_back({Op::kInsert, 0, prefix + j++});
+      } else {
+        steps.push_back({Op::kDelete, prefix + i++, 0});
+      }
+    }
+  } else {
+    for (size_t i = 0; i < n; ++i) steps.push_back({Op::kDelete, prefix + i, 0});
+    for (size_t j = 0; j < m; ++j) steps.push_back({Op::kInsert, 0, prefix + j});
+  }
+  for (size_t k = 0; k < suffix; ++k) {
+    steps.push_back({Op::kEqual, a.size() - suffix + k, b.size() - suffix + k});
+  }
+  return steps;
+}
+
+void AppendLine(std::string& out, char prefix, std::string_view line) {
+  out.push_back(prefix);
+  out.append(line);
+  if (line.empty() || line.back() != '\n') out.append("\n\\ No newline at end of file\n");
+}
+
+}  // namespace
+
+std::string WriteFileAtomically(const std::filesystem::path& path, std::string_view text) {
+  const std::filesystem::path directory =
+      path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+  std::string temp = (directory / ("." + path.filename().string() + ".shaderport-XXXXXX")).string();
+  const int fd = ::mkstemp(temp.data());
+  if (fd < 0) return Errno("cannot create a temporary file in " + directory.string());
+  auto fail = [&](const std::string& why) {
+    ::close(fd);
+    ::unlink(temp.c_str());
+    return why;
+  };
+  struct stat info {};
+  const mode_t mode = ::stat(path.c_str(), &info) == 0 ? (info.st_mode & 07777) : 0644;
+  if (::fchmod(fd, mode) != 0) return fail(Errno("cannot set the mode of " + temp));
+  size_t written = 0;
+  while (written < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return fail(Errno("cannot write " + temp));
+    written += static_cast<size_t>(n);
+  }
+  if (::fsync(fd) != 0) return fail(Errno("cannot sync " + temp));
+  if (::close(fd) != 0) {
+    ::unlink(temp.c_str());
+    return Errno("cannot close " + temp);
+  }
+  if (::rename(temp.c_str(), path.c_str()) != 0) {
+    const std::string why = Errno("cannot replace " + path.string());
+    ::unlink(temp.c_str());
+    return why;
+  }
+  return {};
+}
+
+std::string UnifiedDiff(std::string_view before, std::string_view after, const std::string& name) {
+  if (before == after) return {};
+  const auto a = SplitLines(before);
+  const auto b = SplitLines(after);
+  const std::vector<Step> steps = Script(a, b);
+  constexpr size_t kContext = 3;
+  std::string out = "--- a/" + name + "\n+++ b/" + name + "\n";
+  size_t k = 0;
+  while (k < steps.size()) {
+    while (k < steps.size() && steps[k].op == Op::kEqual) ++k;
+    if (k == steps.size()) break;
+    const size_t start = k >= kContext ? k - kContext : 0;
+    // Extend the hunk while changes are closer than 2 * context lines apart.
+    size_t end = k;
+    size_t equal_run = 0;
+    while (end < steps.size() && equal_run <= 2 * kContext) {
+      equal_run = steps[end].op == Op::kEqual ? equal_run + 1 : 0;
+      ++end;
+    }
+    end -= std::min(equal_run, end);
+    const size_t stop = std::min(steps.size(), end + kContext);
+    size_t a_start = 0, b_start = 0, a_count = 0, b_count = 0;
+    bool a_set = false, b_set = false;
+    std::string body;
+    for (size_t s = start; s < stop; ++s) {
+      const Step& step = steps[s];
+      if (step.op != Op::kInsert) {
+        if (!a_set) a_start = step.a, a_set = true;
+        ++a_count;
+      }
+      if (step.op != Op::kDelete) {
+        if (!b_set) b_start = step.b, b_set = true;
+        ++b_count;
+      }
+      AppendLine(body, static_cast<char>(step.op), step.op == Op::kInsert ? b[step.b] : a[step.a]);
+    }
+    // An empty side is numbered by the line before it, as diff(1) does.
+    auto position = [](bool set, size_t first, size_t count, size_t fallback) {
+      return std::to_string(set ? first + 1 : fallback) + "," + std::to_string(count);
+    };
+    size_t a_fallback = 0, b_fallback = 0;
+    for (size_t s = 0; s < start; ++s) {
+      if (steps[s].op != Op::kInsert) a_fallback = steps[s].a + 1;
+      if (steps[s].op != Op::kDelete) b_fallback = steps[s].b + 1;
+    }
+    out += "@@ -" + position(a_set, a_start, a_count, a_fallback) + " +" +
+           position(b_set, b_start, b_count, b_fallback) + " @@\n" + body;
+    k = stop;
+  }
+  return out;
+}
+
+}  // namespace shaderport::driver

@@ -1,0 +1,18 @@
+// What remains after `fix` or `port`, in the text report format.
+#pragma once
+
+#include <span>
+#include <string>
+
+#include "driver/port/port_file.h"
+
+namespace shaderport::driver {
+
+// True when any warning or error remains in `results`.
+bool HasFindings(std::span<const PortResult> results);
+
+// The remaining findings of every result, as `check` prints them.
+std::string FormatPortFindings(std::span<const PortResult> results, const SourceManager& sources,
+                               bool color);
+
+}  // namespace shaderport::driver

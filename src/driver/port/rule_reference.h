@@ -1,0 +1,17 @@
+// The rule reference: `shaderport rules` (and docs/rules.md, its output) and
+// `shaderport explain ID`.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace shaderport::driver {
+
+// Every porting rule: id, scope, summary, help from the catalog, Before/After.
+std::string RulesMarkdown();
+
+// One porting rule, or any catalog entry (glslang/..., syntax/...); nullopt when unknown.
+std::optional<std::string> ExplainRule(std::string_view id);
+
+}  // namespace shaderport::driver

@@ -1,0 +1,7 @@
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    float acc = 0.0;
+    for (float i = 0; i < 4; i += 1) {
+        acc += i / 4;
+    }
+    fragColor = vec4(vec3(acc), 1.0);
+}

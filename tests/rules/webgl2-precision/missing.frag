@@ -1,0 +1,4 @@
+#version 100
+void main() {
+  gl_FragColor = vec4(1.0);
+}

@@ -1,0 +1,7 @@
+#version 300 es
+precision highp sampler3D;
+uniform sampler3D volume;
+in vec3 position;
+void main() {
+  gl_Position = texture(volume, position);
+}

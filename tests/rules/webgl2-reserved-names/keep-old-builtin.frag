@@ -1,0 +1,6 @@
+precision mediump float;
+uniform float level;
+void main() {
+  float length = 2.0 * level;
+  gl_FragColor = vec4(length);
+}

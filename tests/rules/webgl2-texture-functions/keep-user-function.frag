@@ -1,0 +1,9 @@
+precision mediump float;
+uniform sampler2D tex;
+// A user function that happens to share the old name: not a built-in call.
+vec4 texture2D(sampler2D s, vec2 p, int n) {
+  return vec4(float(n));
+}
+void main() {
+  gl_FragColor = texture2D(tex, vec2(0.5), 3);
+}

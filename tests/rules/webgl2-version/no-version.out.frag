@@ -1,0 +1,6 @@
+#version 300 es
+precision mediump float;
+out highp vec4 fragColor;
+void main() {
+  fragColor = vec4(1.0);
+}

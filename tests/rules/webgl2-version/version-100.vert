@@ -1,0 +1,5 @@
+#version 100
+attribute vec4 position;
+void main() {
+  gl_Position = position;
+}

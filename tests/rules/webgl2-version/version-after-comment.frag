@@ -1,0 +1,6 @@
+// A licence header comment.
+#version 100
+precision mediump float;
+void main() {
+  gl_FragColor = vec4(0.0);
+}

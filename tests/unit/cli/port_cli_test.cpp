@@ -1,0 +1,111 @@
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "cli/cli_test_util.h"
+
+namespace shaderport::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kWebGL1 =
+    "precision mediump float;\nvarying vec2 uv;\nuniform sampler2D tex;\n"
+    "void main() {\n  gl_FragColor = texture2D(tex, uv);\n}\n";
+
+fs::path TempDir(const std::string& name) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("shaderport-port-" + std::to_string(::getpid()) + "-" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+void Write(const fs::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+TEST(PortCli, PortsWebGL1ToEssl300AndIsIdempotent) {
+  const fs::path dir = TempDir("idem");
+  Write(dir / "a.frag", kWebGL1);
+  const CommandResult once = RunShaderport("port a.frag", dir);
+  ASSERT_EQ(once.exit_code, 0) << once.err;
+  EXPECT_EQ(once.out.rfind("#version 300 es\n", 0), 0u) << once.out;
+  EXPECT_EQ(once.out.find("gl_FragColor"), std::string::npos);
+  Write(dir / "b.frag", once.out);
+  const CommandResult twice = RunShaderport("port b.frag", dir);
+  EXPECT_EQ(twice.exit_code, 0) << twice.err;
+  EXPECT_EQ(twice.out, once.out);
+}
+
+TEST(PortCli, OutDirKeepsRelativeNamesAndStageExtension) {
+  const fs::path dir = TempDir("outdir");
+  fs::create_directories(dir / "sub");
+  Write(dir / "sub" / "a.glsl", kWebGL1);
+  const CommandResult result = RunShaderport("port --out-dir out sub/a.glsl", dir);
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_TRUE(fs::exists(dir / "out" / "sub" / "a.frag"));
+}
+
+TEST(PortCli, UsageErrorsExitTwo) {
+  const fs::path dir = TempDir("usage");
+  Write(dir / "a.frag", kWebGL1);
+  EXPECT_EQ(RunShaderport("port --channel 7=2d a.frag", dir).exit_code, 2);
+  EXPECT_EQ(RunShaderport("port --emit nonsense a.frag", dir).exit_code, 2);
+  EXPECT_EQ(RunShaderport("port --dialect nosuchdialect a.frag", dir).exit_code, 2);
+  EXPECT_EQ(RunShaderport("explain no/such-rule", dir).exit_code, 2);
+}
+
+TEST(FixCli, DiffAndInPlace) {
+  const fs::path dir = TempDir("fix");
+  // An int literal where a float is needed: a kAlways typing rule's job.
+  const std::string text =
+      "#version 300 es\nprecision mediump float;\nout vec4 o;\n"
+      "void main() { float x = 1; o = vec4(x); }\n";
+  Write(dir / "a.frag", text);
+  const CommandResult diff = RunShaderport("fix --diff a.frag", dir);
+  EXPECT_NE(diff.exit_code, 3) << diff.err;
+  if (!diff.out.empty()) {
+    EXPECT_EQ(diff.out.rfind("--- a/a.frag\n+++ b/a.frag\n@@ ", 0), 0u) << diff.out;
+  }
+  const CommandResult stdout_result = RunShaderport("fix a.frag", dir);
+  const CommandResult in_place = RunShaderport("fix --in-place a.frag", dir);
+  EXPECT_NE(in_place.exit_code, 3) << in_place.err;
+  EXPECT_EQ(ReadWholeFile(dir / "a.frag"), stdout_result.out);
+}
+
+TEST(FixCli, InPlaceInReadOnlyDirectoryLeavesOriginal) {
+  if (::geteuid() == 0) GTEST_SKIP() << "root ignores directory permissions";
+  const fs::path dir = TempDir("readonly");
+  Write(dir / "a.frag", "void main() { float x = 1; gl_FragColor = vec4(x); }\n");
+  const std::string before = ReadWholeFile(dir / "a.frag");
+  ::chmod(dir.c_str(), 0555);
+  const CommandResult result = RunShaderport("fix --in-place a.frag", dir);
+  ::chmod(dir.c_str(), 0755);
+  EXPECT_EQ(ReadWholeFile(dir / "a.frag"), before);
+  const CommandResult changed = RunShaderport("fix a.frag", dir);
+  if (changed.out != before) {
+    EXPECT_NE(result.exit_code, 0);
+  }
+}
+
+TEST(RulesCli, DocsRulesMdIsTheOutputOfRules) {
+  const CommandResult result = RunShaderport("rules", SHADERPORT_SOURCE_DIR);
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_TRUE(MatchesGolden(result.out, fs::path(SHADERPORT_SOURCE_DIR) / "docs" / "rules.md"));
+}
+
+TEST(RulesCli, ExplainPrintsRulesAndCatalogEntries) {
+  const CommandResult rule = RunShaderport("explain webgl2/version", SHADERPORT_SOURCE_DIR);
+  EXPECT_EQ(rule.exit_code, 0);
+  EXPECT_NE(rule.out.find("## webgl2/version"), std::string::npos);
+  const CommandResult entry = RunShaderport("explain internal/error", SHADERPORT_SOURCE_DIR);
+  EXPECT_EQ(entry.exit_code, 0);
+  EXPECT_NE(entry.out.find("internal/error"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace shaderport::testing

@@ -1,0 +1,135 @@
+// Golden cases of the typing/* rules, under tests/rules/typing-<rule>/:
+//   <case>.frag|.vert   WebGL code (GLSL ES 1.00 unless it has #version 300 es)
+//   <case>.glsl         ShaderToy Image-pass code (the site's uniforms, mainImage)
+//   <case>.diag         what the rule alone reports, with its fix-its
+//   <case>.out.<ext>    the input after `fix` with every typing/* rule (fix engine)
+// Every output compiles with glslang in its dialect (ShaderToy under the site's
+// contract), and fixing it again changes nothing. Cases named keep-* expect no
+// finding; unfixable-* cases keep their finding without a fix and need not compile.
+// SHADERPORT_UPDATE_GOLDENS=1 rewrites the expected files.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "typing_test_support.h"
+
+namespace shaderport::typing_test {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string ReadFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+bool Updating() {
+  const char* value = std::getenv("SHADERPORT_UPDATE_GOLDENS");
+  return value != nullptr && std::string(value) == "1";
+}
+
+void CheckGolden(const fs::path& path, const std::string& actual) {
+  if (Updating()) {
+    std::ofstream(path, std::ios::binary) << actual;
+    return;
+  }
+  ASSERT_TRUE(fs::exists(path)) << path << " is missing; run with SHADERPORT_UPDATE_GOLDENS=1";
+  EXPECT_EQ(ReadFile(path), actual) << "golden " << path;
+}
+
+std::string Format(const std::string& text, const DiagnosticList& diagnostics) {
+  const SourceFile file(0, "input", text);
+  auto at = [&](uint32_t offset) {
+    const LineColumn lc = file.LocationOf(offset);
+    return std::to_string(lc.line) + ":" + std::to_string(lc.column);
+  };
+  std::string out;
+  for (const Diagnostic& d : diagnostics) {
+    out += at(d.range.begin) + ": " + SeverityName(d.severity) + " [" + d.rule_id + "] " +
+           d.message + "\n";
+    for (const DiagnosticNote& note : d.notes) out += "  note: " + note.message + "\n";
+    for (const FixIt& fix : d.fixes) {
+      std::string replacement;
+      for (char c : fix.replacement)
+        replacement += c == '\n' ? std::string("\\n") : std::string(1, c);
+      out += "  fix " + at(fix.range.begin) + "-" + at(fix.range.end) + ": \"" + replacement +
+             "\"" + (fix.safety == FixSafety::kSafe ? "" : " (suggestion)") + "\n";
+    }
+  }
+  return out;
+}
+
+struct Case {
+  fs::path input;
+  std::string rule_id;
+};
+
+std::vector<Case> AllCases() {
+  std::vector<Case> cases;
+  const fs::path root = fs::path(SHADERPORT_SOURCE_DIR) / "tests" / "rules";
+  for (const auto& dir : fs::directory_iterator(root)) {
+    const std::string name = dir.path().filename().string();
+    if (!dir.is_directory() || !name.starts_with("typing-")) continue;
+    for (const auto& file : fs::directory_iterator(dir.path())) {
+      const std::string file_name = file.path().filename().string();
+      const std::string ext = file.path().extension().string();
+      if ((ext == ".frag" || ext == ".vert" || ext == ".glsl") &&
+          file_name.find(".out.") == std::string::npos) {
+        cases.push_back({file.path(), "typing/" + name.substr(7)});
+      }
+    }
+  }
+  std::sort(cases.begin(), cases.end(),
+            [](const Case& a, const Case& b) { return a.input < b.input; });
+  return cases;
+}
+
+TEST(TypingGolden, EveryRuleHasCases) {
+  for (const rule::Rule* r : TypingRules()) {
+    size_t count = 0;
+    for (const Case& c : AllCases()) count += c.rule_id == r->Info().id;
+    EXPECT_GE(count, 2u) << r->Info().id;
+  }
+  EXPECT_EQ(TypingRules().size(), 6u);
+}
+
+TEST(TypingGolden, Cases) {
+  const std::vector<Case> cases = AllCases();
+  ASSERT_FALSE(cases.empty());
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.input.string());
+    const rule::Rule* r = rules::FindRule(c.rule_id);
+    ASSERT_NE(r, nullptr) << c.rule_id;
+    const std::string ext = c.input.extension().string();
+    const Kind kind = ext == ".glsl" ? Kind::kShaderToy : Kind::kWebGL;
+    const rule::ShaderStage stage =
+        ext == ".vert" ? rule::ShaderStage::kVertex : rule::ShaderStage::kFragment;
+    const std::string text = ReadFile(c.input);
+    const std::string stem = c.input.stem().string();
+
+    const DiagnosticList own = RunOneRule(*r, text, kind, stage);
+    fs::path diag_path = c.input;
+    diag_path.replace_extension(".diag");
+    CheckGolden(diag_path, Format(text, own));
+    EXPECT_EQ(own.empty(), stem.starts_with("keep-"));
+
+    const rule::FixEngineResult fixed = FixTyping(text, kind, stage);
+    fs::path out_path = c.input;
+    out_path.replace_extension(".out" + ext);
+    CheckGolden(out_path, fixed.text);
+    EXPECT_TRUE(fixed.converged);
+    if (stem.starts_with("unfixable-")) continue;
+    bool accepted = false;
+    const validate::ValidationResult result = Compile(fixed.text, kind, stage, &accepted);
+    EXPECT_TRUE(accepted) << fixed.text << Messages(result);
+    EXPECT_EQ(FixTyping(fixed.text, kind, stage).text, fixed.text) << "fixing twice changed it";
+  }
+}
+
+}  // namespace
+}  // namespace shaderport::typing_test

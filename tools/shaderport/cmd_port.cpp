@@ -1,0 +1,186 @@
+// `shaderport port`: WebGL2 (GLSL ES 3.00) from ShaderToy, WebGL1 or harness code.
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "commands.h"
+#include "driver/dialect.h"
+#include "driver/parallel_for.h"
+#include "driver/port/output_files.h"
+#include "driver/port/port_file.h"
+#include "driver/port/port_report.h"
+#include "driver/read_input.h"
+#include "rule/harness_dialect.h"
+#include "rules/shadertoy/builtin_dialects.h"
+#include "toolchain/emit.h"
+
+namespace shaderport::cli {
+namespace {
+
+struct PortArgs {
+  std::vector<std::string> paths;
+  std::string output;
+  std::string out_dir;
+  std::string dialect;
+  std::vector<std::string> channels;
+  std::string stage;
+  std::string emit = "essl";
+  int jobs = 1;
+};
+
+bool ParseChannel(const std::string& spec, driver::PortOptions& options) {
+  const size_t eq = spec.find('=');
+  if (eq != 1 || spec[0] < '0' || spec[0] > '3') return false;
+  const std::string kind = spec.substr(2);
+  rule::ChannelKind& slot = options.channels[spec[0] - '0'];
+  if (kind == "2d") {
+    slot = rule::ChannelKind::k2D;
+  } else if (kind == "cube") {
+    slot = rule::ChannelKind::kCube;
+  } else if (kind == "3d") {
+    slot = rule::ChannelKind::k3D;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// --dialect: a built-in dialect name (shadertoy, webgl1, webgl2) or a TOML file.
+bool ResolveDialect(const std::string& value, driver::PortOptions& options, SourceManager& sources,
+                    std::optional<rule::HarnessDialect>& harness) {
+  if (value.empty()) return true;
+  if (auto dialect = driver::ParseDialect(value)) {
+    options.dialect = dialect;
+    return true;
+  }
+  rule::DialectLoadResult loaded = rules::LoadDialect(value, sources);
+  if (!loaded.dialect) {
+    for (const Diagnostic& d : loaded.diagnostics) {
+      std::fprintf(stderr, "shaderport port: --dialect %s: %s [%s]\n", value.c_str(),
+                   d.message.c_str(), d.rule_id.c_str());
+    }
+    return false;
+  }
+  if (loaded.dialect->NameMatches("shadertoy")) options.dialect = driver::Dialect::kShaderToy;
+  harness = std::move(loaded.dialect);
+  options.harness = &*harness;
+  return true;
+}
+
+std::filesystem::path OutputPathFor(const std::string& input, const std::string& out_dir,
+                                    driver::Stage stage, const std::string& extension) {
+  std::filesystem::path relative = std::filesystem::path(input).lexically_normal();
+  if (relative.is_absolute()) relative = relative.filename();
+  while (!relative.empty() && *relative.begin() == "..") {
+    relative = relative.lexically_relative(*relative.begin());
+  }
+  relative.replace_extension(!extension.empty()                ? extension
+                             : stage == driver::Stage::kVertex ? ".vert"
+                                                               : ".frag");
+  return std::filesystem::path(out_dir) / relative;
+}
+
+int RunPort(const PortArgs& args) {
+  if (!args.output.empty() && args.paths.size() != 1) {
+    std::fprintf(stderr, "shaderport port: -o takes exactly one input file (use --out-dir)\n");
+    return kExitUsage;
+  }
+  const auto emit_kind = toolchain::EmitKindFromName(args.emit);
+  if (!emit_kind) {
+    std::fprintf(stderr, "shaderport port: unknown --emit kind '%s'\n", args.emit.c_str());
+    return kExitUsage;
+  }
+  SourceManager sources;
+  driver::PortOptions options;
+  options.mode = rule::PortMode::kPort;
+  std::optional<rule::HarnessDialect> harness;
+  if (!ResolveDialect(args.dialect, options, sources, harness)) return kExitUsage;
+  for (const std::string& spec : args.channels) {
+    if (!ParseChannel(spec, options)) {
+      std::fprintf(stderr, "shaderport port: bad --channel '%s' (want N=2d|cube|3d)\n",
+                   spec.c_str());
+      return kExitUsage;
+    }
+  }
+  if (!args.stage.empty()) {
+    options.stage = driver::ParseStage(args.stage);
+    if (!options.stage) {
+      std::fprintf(stderr, "shaderport port: bad --stage '%s'\n", args.stage.c_str());
+      return kExitUsage;
+    }
+  }
+  std::vector<driver::PortResult> results(args.paths.size());
+  driver::ParallelFor(args.paths.size(), std::max(1, args.jobs), [&](size_t i) {
+    results[i] = driver::PortFile(args.paths[i], options, sources);
+  });
+
+  int exit_code = kExitOk;
+  for (size_t i = 0; i < results.size(); ++i) {
+    driver::PortResult& result = results[i];
+    if (result.read_failed) continue;
+    std::string output = result.text;
+    std::string extension;
+    if (*emit_kind != toolchain::EmitKind::kEssl) {
+      const SourceFile ported(result.file->Id(), result.file->Name(), result.text);
+      const auto stage = result.output_stage == driver::Stage::kVertex
+                             ? toolchain::Stage::kVertex
+                             : toolchain::Stage::kFragment;
+      toolchain::EmitOptions emit_options;
+      emit_options.kind = *emit_kind;
+      emit_options.shadertoy = result.kind.dialect == driver::Dialect::kShaderToy;
+      toolchain::EmitResult emitted = toolchain::Emit(ported, stage, emit_options);
+      for (Diagnostic& d : emitted.diagnostics) result.diagnostics.push_back(std::move(d));
+      if (HasErrors(emitted.diagnostics)) continue;
+      output = std::move(emitted.output);
+      extension = toolchain::EmitExtension(*emit_kind, stage);
+    }
+    if (!args.out_dir.empty() || !args.output.empty()) {
+      const std::filesystem::path target =
+          !args.output.empty()
+              ? std::filesystem::path(args.output)
+              : OutputPathFor(args.paths[i], args.out_dir, result.output_stage, extension);
+      std::error_code error;
+      if (target.has_parent_path())
+        std::filesystem::create_directories(target.parent_path(), error);
+      const std::string why = driver::WriteFileAtomically(target, output);
+      if (!why.empty()) {
+        std::fprintf(stderr, "shaderport port: %s\n", why.c_str());
+        exit_code = kExitInternal;
+      }
+    } else {
+      std::fwrite(output.data(), 1, output.size(), stdout);
+    }
+  }
+  if (!driver::HasFindings(results)) return exit_code;
+  const bool color = ::isatty(STDERR_FILENO) != 0 && std::getenv("NO_COLOR") == nullptr;
+  std::fputs(driver::FormatPortFindings(results, sources, color).c_str(), stderr);
+  return std::max(exit_code, kExitFindings);
+}
+
+}  // namespace
+
+void AddPortCommand(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<PortArgs>();
+  CLI::App* command =
+      app.add_subcommand("port", "Port ShaderToy / WebGL1 shaders to WebGL2 (GLSL ES 3.00)");
+  command->add_option("paths", args->paths, "Shader files")->required();
+  auto* output = command->add_option("-o,--output", args->output, "Write the result here");
+  auto* out_dir = command->add_option("--out-dir", args->out_dir,
+                                      "Write each result under DIR (same relative name)");
+  output->excludes(out_dir);
+  command->add_option("--dialect", args->dialect, "shadertoy|webgl1|webgl2 or a dialect TOML");
+  command->add_option("--channel", args->channels, "Sampler type of a channel: N=2d|cube|3d");
+  command->add_option("--stage", args->stage, "vertex|fragment (default: detected)");
+  command->add_option("--emit", args->emit,
+                      "essl (default), spirv, spvasm, hlsl, msl, essl-roundtrip, reflect");
+  command->add_option("-j,--jobs", args->jobs, "Parallel jobs");
+  command->callback([args, &exit_code] { exit_code = RunPort(*args); });
+}
+
+}  // namespace shaderport::cli

@@ -1,0 +1,149 @@
+// `shaderport render PATH -o OUT.png`: draws one shader headless and checks the picture.
+#include <cstdio>
+#include <string>
+
+#include "commands.h"
+#include "driver/check_file.h"
+#include "driver/render_check/render_file.h"
+#include "render/png_io.h"
+#include "report/output_format.h"
+
+namespace shaderport::cli {
+namespace {
+
+struct RenderArgs {
+  std::string path;
+  std::string output;
+  std::string size = "64x64";
+  int frames = 1;
+  float time = 1.0f;
+  int frame = 0;
+  std::vector<float> mouse;
+  std::array<std::string, 4> channels;
+  std::vector<std::string> channel_types;
+  std::string common;
+  std::string backend;
+  double timeout_seconds = 10.0;
+  bool hermetic = false;
+};
+
+int Usage(const std::string& message) {
+  std::fprintf(stderr, "shaderport render: error: %s\n", message.c_str());
+  return kExitUsage;
+}
+
+bool ParseSize(const std::string& text, uint32_t& width, uint32_t& height) {
+  unsigned w = 0;
+  unsigned h = 0;
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%ux%u%c", &w, &h, &tail) != 2) return false;
+  if (w == 0 || h == 0 || w > render::kMaxRenderSide || h > render::kMaxRenderSide) return false;
+  width = w;
+  height = h;
+  return true;
+}
+
+int RunRender(const RenderArgs& args) {
+  driver::RenderFileOptions options;
+  if (!ParseSize(args.size, options.base.width, options.base.height)) {
+    return Usage("--size must be WIDTHxHEIGHT, each 1..4096");
+  }
+  if (args.frames < 1 || args.frames > 10000) return Usage("--frames must be 1..10000");
+  if (!args.mouse.empty() && args.mouse.size() != 2 && args.mouse.size() != 4) {
+    return Usage("--mouse takes x,y or x,y,click_x,click_y");
+  }
+  if (args.timeout_seconds <= 0 || args.timeout_seconds > 3600) {
+    return Usage("--timeout must be 0..3600 seconds");
+  }
+  if (!args.backend.empty()) {
+    const auto backend = render::BackendFromName(args.backend);
+    if (!backend) return Usage("--backend must be osmesa or egl");
+    options.render.backend = *backend;
+  }
+  for (const std::string& spec : args.channel_types) {
+    const std::string type = spec.size() > 2 ? spec.substr(2) : "";
+    if (spec.size() < 3 || spec[1] != '=' || spec[0] < '0' || spec[0] > '3' ||
+        (type != "2d" && type != "cube" && type != "3d")) {
+      return Usage("--channel-type takes N=2d|cube|3d");
+    }
+    options.channel_types[static_cast<size_t>(spec[0] - '0')] =
+        type == "cube" ? validate::ChannelType::kCube
+                       : (type == "3d" ? validate::ChannelType::k3D : validate::ChannelType::k2D);
+  }
+  options.base.frames = args.frames;
+  options.base.inputs.time = args.time;
+  options.base.inputs.frame = args.frame;
+  for (size_t i = 0; i < args.mouse.size(); ++i) options.base.inputs.mouse[i] = args.mouse[i];
+  options.channel_images = args.channels;
+  options.render.timeout =
+      std::chrono::milliseconds(static_cast<int64_t>(args.timeout_seconds * 1000));
+  options.render.hermetic = args.hermetic;
+
+  SourceManager sources;
+  if (!args.common.empty()) {
+    std::string error;
+    options.common = driver::LoadSharedFile(args.common, sources, error);
+    if (options.common == nullptr) return Usage(error);
+  }
+  driver::RenderFileResult result = driver::RenderFile(args.path, sources, options);
+  int code = kExitOk;
+  if (result.image && !args.output.empty()) {
+    std::string error;
+    if (!render::WritePng(args.output, *result.image, error)) {
+      std::fprintf(stderr, "shaderport render: error: %s\n", error.c_str());
+      code = kExitInternal;
+    }
+  }
+  if (!result.diagnostics.empty()) {
+    CheckReport report;
+    report.sources = &sources;
+    FileReport file;
+    file.file = result.file;
+    file.dialect = result.dialect;
+    file.stage = result.stage;
+    file.diagnostics = std::move(result.diagnostics);
+    report.files.push_back(std::move(file));
+    SortReport(report);
+    ReportOptions report_options;
+    report_options.tool_version = SHADERPORT_VERSION;
+    const std::string text = FormatReport(report, OutputFormat::kText, report_options);
+    std::fwrite(text.data(), 1, text.size(), stderr);
+    if (HasErrors(report.files.front().diagnostics) && code == kExitOk) code = kExitFindings;
+  }
+  if (result.image) {
+    std::printf("%s: rendered %ux%u in %.0f ms%s%s\n", args.path.c_str(), result.image->width,
+                result.image->height, result.milliseconds, args.output.empty() ? "" : " -> ",
+                args.output.c_str());
+  }
+  return code;
+}
+
+}  // namespace
+
+void AddRenderCommand(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<RenderArgs>();
+  auto* command = app.add_subcommand(
+      "render", "Draw a shader headless (OSMesa/EGL), check the picture and write a PNG");
+  command->add_option("file", args->path, "ShaderToy pass or WebGL2 shader")->required();
+  command->add_option("-o,--output", args->output, "PNG file for the final frame");
+  command->add_option("--size", args->size, "Picture size WIDTHxHEIGHT (default 64x64)");
+  command->add_option("--frames", args->frames, "Frames to draw; the last is kept (default 1)");
+  command->add_option("--time", args->time, "iTime of the first frame in seconds (default 1)");
+  command->add_option("--frame", args->frame, "iFrame of the first frame (default 0)");
+  command->add_option("--mouse", args->mouse, "iMouse: x,y[,click_x,click_y] in pixels")
+      ->delimiter(',');
+  for (size_t i = 0; i < 4; ++i) {
+    command->add_option("--channel" + std::to_string(i), args->channels[i],
+                        "PNG image for iChannel" + std::to_string(i));
+  }
+  command->add_option("--channel-type", args->channel_types,
+                      "Sampler kind of a ShaderToy channel: N=2d|cube|3d");
+  command->add_option("--common", args->common, "ShaderToy Common code to prepend");
+  command->add_option("--backend", args->backend, "osmesa or egl (default osmesa)");
+  command->add_option("--timeout", args->timeout_seconds,
+                      "Seconds before the render is killed (default 10)");
+  command->add_flag("--hermetic", args->hermetic, "Do not use or fill Mesa's shader cache");
+  command->callback([args, &exit_code] { exit_code = RunRender(*args); });
+}
+
+}  // namespace shaderport::cli
