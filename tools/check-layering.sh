@@ -14,7 +14,7 @@ declare -A allowed=(
   [report]="base source diag report"
   [rule]="base source diag glsl rule"
   [render]="base source diag render"
-  [driver]="base source diag glsl toolchain validate report rule render driver"
+  [driver]="base source diag glsl toolchain validate report rule rules render driver"
 )
 status=0
 for layer in "${!allowed[@]}"; do

@@ -43,6 +43,7 @@ BoundTexture CreateChannelTexture(const GlFunctions& gl, GLenum sampler_type,
                                   const ImageRgba8& user_image) {
   BoundTexture bound;
   const GLenum target = TargetOf(sampler_type);
+  bound.target = target;
   gl.GenTextures(1, &bound.name);
   gl.BindTexture(target, bound.name);
   gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);

@@ -8,6 +8,7 @@
 namespace shaderport::render {
 
 struct BoundTexture {
+  GLenum target = GL_TEXTURE_2D;
   GLuint name = 0;
   float width = 0;
   float height = 0;

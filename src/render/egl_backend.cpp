@@ -47,6 +47,10 @@ class EglBackend final : public GlBackend {
   }
 
   bool Start(std::string& error) override {
+#if defined(SHADERPORT_EGL) && SHADERPORT_EGL == 0
+    error = "this build has no EGL backend (configured with SHADERPORT_EGL=OFF)";
+    return false;
+#endif
     library_ = dlopen("libEGL.so.1", RTLD_NOW | RTLD_LOCAL);
     if (library_ == nullptr) {
       error = "cannot load libEGL.so.1 (install libegl1 and libegl-mesa0)";

@@ -1,8 +1,10 @@
 #include "render/gl_renderer.h"
 
 #include <algorithm>
+#include <array>
 #include <memory>
 
+#include "render/gl_program.h"
 #include "render/render_mesh.h"
 #include "render/uniform_values.h"
 
@@ -31,43 +33,24 @@ namespace {
 GlBackend* current_backend = nullptr;
 void* CurrentBackendProc(const char* name) { return current_backend->GetProc(name); }
 
-std::string ShaderLog(const GlFunctions& gl, GLuint shader) {
-  GLint length = 0;
-  gl.GetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-  std::string log(static_cast<size_t>(std::max(length, 1)), '\0');
-  gl.GetShaderInfoLog(shader, length, nullptr, log.data());
-  log.resize(log.find('\0') == std::string::npos ? log.size() : log.find('\0'));
-  return log;
-}
+// Ping-pong pairs for the ShaderToy buffers A..D that the request uses.
+struct BufferTargets {
+  std::array<std::array<FloatTarget, 2>, 4> targets{};
+  std::array<int, 4> latest = {0, 0, 0, 0};
+  std::array<bool, 4> used{};
+};
 
-std::string ProgramLog(const GlFunctions& gl, GLuint program) {
-  GLint length = 0;
-  gl.GetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-  std::string log(static_cast<size_t>(std::max(length, 1)), '\0');
-  gl.GetProgramInfoLog(program, length, nullptr, log.data());
-  log.resize(log.find('\0') == std::string::npos ? log.size() : log.find('\0'));
-  return log;
-}
-
-bool Compile(const GlFunctions& gl, GLenum stage, const std::string& text, GLuint& shader,
-             std::string& log) {
-  shader = gl.CreateShader(stage);
-  const char* source = text.c_str();
-  const auto length = static_cast<GLint>(text.size());
-  gl.ShaderSource(shader, 1, &source, &length);
-  gl.CompileShader(shader);
-  GLint ok = 0;
-  gl.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  log = ShaderLog(gl, shader);
-  return ok != 0;
-}
-
-void CollectErrors(const GlFunctions& gl, const char* step, RenderOutcome& outcome) {
-  for (int i = 0; i < 8; ++i) {  // GL keeps one flag per error kind; a few is all there is
-    const GLenum error = gl.GetError();
-    if (error == GL_NO_ERROR) return;
-    outcome.gl_errors.push_back(std::string(GlErrorName(error)) + " after " + step);
+ChannelOverrides OverridesFor(const std::array<int, 4>& channel_buffers,
+                              const BufferTargets& buffers, const RenderRequest& request) {
+  ChannelOverrides overrides{};
+  for (size_t i = 0; i < 4; ++i) {
+    const int k = channel_buffers[i];
+    if (k < 0 || k > 3 || !buffers.used[static_cast<size_t>(k)]) continue;
+    const auto& pair = buffers.targets[static_cast<size_t>(k)];
+    overrides[i] = {pair[static_cast<size_t>(buffers.latest[static_cast<size_t>(k)])].texture,
+                    static_cast<float>(request.width), static_cast<float>(request.height)};
   }
+  return overrides;
 }
 
 }  // namespace
@@ -94,77 +77,85 @@ RenderOutcome RenderInThisProcess(const RenderRequest& request, BackendKind back
   const std::string vertex_text = user_vertex ? request.vertex_source : kFullScreenVertexShader;
   const std::string fragment_text =
       request.fragment_source.empty() ? kFlatFragmentShader : request.fragment_source;
-  GLuint vertex = 0;
-  GLuint fragment = 0;
-  const bool vertex_ok = Compile(gl, GL_VERTEX_SHADER, vertex_text, vertex, outcome.vertex_log);
-  const bool fragment_ok =
-      Compile(gl, GL_FRAGMENT_SHADER, fragment_text, fragment, outcome.fragment_log);
-  if (!vertex_ok || !fragment_ok) {
-    outcome.status = RenderStatus::kCompileFailed;
-    return outcome;
+  std::vector<GLuint> buffer_programs;
+  for (size_t p = 0; p < request.buffer_passes.size(); ++p) {
+    const GLuint built = BuildProgram(gl, kFullScreenVertexShader,
+                                      request.buffer_passes[p].fragment_source, outcome);
+    if (built == 0) {
+      outcome.failed_pass = static_cast<int>(p);
+      return outcome;
+    }
+    buffer_programs.push_back(built);
   }
-  const GLuint program = gl.CreateProgram();
-  gl.AttachShader(program, vertex);
-  gl.AttachShader(program, fragment);
-  gl.LinkProgram(program);
-  GLint linked = 0;
-  gl.GetProgramiv(program, GL_LINK_STATUS, &linked);
-  outcome.link_log = ProgramLog(gl, program);
-  if (!linked) {
-    outcome.status = RenderStatus::kLinkFailed;
-    return outcome;
-  }
+  const GLuint program = BuildProgram(gl, vertex_text, fragment_text, outcome);
+  if (program == 0) return outcome;
 
-  // Float colour target, so NaN and out-of-range values survive to the checks.
+  // Float colour targets, so NaN and out-of-range values survive to the checks.
   const auto width = static_cast<GLsizei>(request.width);
   const auto height = static_cast<GLsizei>(request.height);
-  GLuint framebuffer = 0;
-  GLuint color = 0;
-  GLuint depth = 0;
-  gl.GenFramebuffers(1, &framebuffer);
-  gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-  gl.GenTextures(1, &color);
-  gl.BindTexture(GL_TEXTURE_2D, color);
-  gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, nullptr);
-  gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color, 0);
-  gl.GenRenderbuffers(1, &depth);
-  gl.BindRenderbuffer(GL_RENDERBUFFER, depth);
-  gl.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
-  gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
-  gl.BindTexture(GL_TEXTURE_2D, 0);
-  if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+  BufferTargets buffers;
+  for (const BufferPass& pass : request.buffer_passes) {
+    const auto k = static_cast<size_t>(pass.buffer & 3);
+    if (buffers.used[k]) continue;
+    buffers.used[k] = true;
+    for (FloatTarget& target : buffers.targets[k]) {
+      if (!CreateFloatTarget(gl, width, height, false, target)) {
+        outcome.status = RenderStatus::kContextFailed;
+        outcome.message = "an RGBA32F buffer framebuffer is incomplete";
+        return outcome;
+      }
+      gl.ClearColor(0, 0, 0, 0);  // the site starts buffers at zero
+      gl.Clear(GL_COLOR_BUFFER_BIT);
+    }
+  }
+  FloatTarget main_target;
+  if (!CreateFloatTarget(gl, width, height, true, main_target)) {
     outcome.status = RenderStatus::kContextFailed;
     outcome.message = "the RGBA32F framebuffer is incomplete";
     return outcome;
   }
-  CollectErrors(gl, "creating the framebuffer", outcome);
+  CollectGlErrors(gl, "creating the framebuffers", outcome);
 
   GLuint vao = 0;
   gl.GenVertexArrays(1, &vao);
   gl.BindVertexArray(vao);
-  gl.UseProgram(program);
   MeshBuffers mesh;
-  if (user_vertex) {
-    mesh = UploadMeshForProgram(gl, program, MakeSphereMesh(32, 16));
-    gl.Enable(GL_DEPTH_TEST);
-    gl.DepthFunc(GL_LESS);
-  }
-  CollectErrors(gl, "setting up the vertex inputs", outcome);
+  if (user_vertex) mesh = UploadMeshForProgram(gl, program, MakeSphereMesh(32, 16));
+  CollectGlErrors(gl, "setting up the vertex inputs", outcome);
   gl.Viewport(0, 0, width, height);
-  std::vector<GLuint> textures;
+  std::vector<ProgramTextures> buffer_textures(buffer_programs.size());
+  ProgramTextures textures;
   const int frames = std::max(request.frames, 1);
   for (int frame = 0; frame < frames; ++frame) {
-    SetUniforms(gl, program, request, frame, textures);
-    CollectErrors(gl, "setting uniforms and textures", outcome);
+    gl.Disable(GL_DEPTH_TEST);
+    for (size_t p = 0; p < buffer_programs.size(); ++p) {
+      const BufferPass& pass = request.buffer_passes[p];
+      const auto k = static_cast<size_t>(pass.buffer & 3);
+      const int write = 1 - buffers.latest[k];
+      gl.BindFramebuffer(GL_FRAMEBUFFER,
+                         buffers.targets[k][static_cast<size_t>(write)].framebuffer);
+      gl.UseProgram(buffer_programs[p]);
+      SetUniforms(gl, buffer_programs[p], request, frame, buffer_textures[p],
+                  OverridesFor(pass.channel_buffers, buffers, request));
+      gl.DrawArrays(GL_TRIANGLES, 0, 3);
+      CollectGlErrors(gl, "drawing a buffer pass", outcome);
+      buffers.latest[k] = write;
+    }
+    gl.BindFramebuffer(GL_FRAMEBUFFER, main_target.framebuffer);
+    gl.UseProgram(program);
+    SetUniforms(gl, program, request, frame, textures,
+                OverridesFor(request.channel_buffers, buffers, request));
+    CollectGlErrors(gl, "setting uniforms and textures", outcome);
     gl.ClearColor(kSentinel[0], kSentinel[1], kSentinel[2], kSentinel[3]);
     gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (user_vertex) {
+      gl.Enable(GL_DEPTH_TEST);
+      gl.DepthFunc(GL_LESS);
       gl.DrawElements(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr);
-      CollectErrors(gl, "glDrawElements", outcome);
+      CollectGlErrors(gl, "glDrawElements", outcome);
     } else {
       gl.DrawArrays(GL_TRIANGLES, 0, 3);
-      CollectErrors(gl, "glDrawArrays", outcome);
+      CollectGlErrors(gl, "glDrawArrays", outcome);
     }
   }
   gl.Finish();
@@ -173,7 +164,7 @@ RenderOutcome RenderInThisProcess(const RenderRequest& request, BackendKind back
   outcome.pixels.resize(size_t{request.width} * request.height * 4);
   gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
   gl.ReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, outcome.pixels.data());
-  CollectErrors(gl, "glReadPixels", outcome);
+  CollectGlErrors(gl, "glReadPixels", outcome);
   outcome.status = RenderStatus::kOk;
   // The process exits right after: GL objects die with the context.
   return outcome;

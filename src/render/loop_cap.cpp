@@ -8,24 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "render/shader_text.h"
+
 namespace shaderport::render {
 namespace {
-
-std::string BlankComments(std::string_view text) {
-  std::string out(text);
-  for (size_t i = 0; i + 1 < out.size(); ++i) {
-    if (out[i] == '/' && out[i + 1] == '/') {
-      while (i < out.size() && out[i] != '\n') out[i++] = ' ';
-    } else if (out[i] == '/' && out[i + 1] == '*') {
-      const size_t end = out.find("*/", i + 2);
-      const size_t stop = end == std::string::npos ? out.size() : end + 2;
-      for (; i < stop; ++i) {
-        if (out[i] != '\n') out[i] = ' ';
-      }
-    }
-  }
-  return out;
-}
 
 bool IsIdent(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 

@@ -48,6 +48,7 @@ std::string EncodeOutcome(const RenderOutcome& outcome) {
   PutString(out, outcome.vertex_log);
   PutString(out, outcome.fragment_log);
   PutString(out, outcome.link_log);
+  Put(out, static_cast<int32_t>(outcome.failed_pass));
   Put(out, static_cast<uint32_t>(outcome.gl_errors.size()));
   for (const std::string& error : outcome.gl_errors) PutString(out, error);
   Put(out, outcome.width);
@@ -67,7 +68,8 @@ std::optional<RenderOutcome> DecodeOutcome(const std::string& bytes) {
   if (!in.Get(magic) || magic != kMagic || !in.Get(status) ||
       status > static_cast<uint8_t>(RenderStatus::kInternal) || !in.GetString(outcome.message) ||
       !in.GetString(outcome.vertex_log) || !in.GetString(outcome.fragment_log) ||
-      !in.GetString(outcome.link_log) || !in.Get(errors) || errors > kMaxStrings) {
+      !in.GetString(outcome.link_log) || !in.Get(outcome.failed_pass) || !in.Get(errors) ||
+      errors > kMaxStrings) {
     return std::nullopt;
   }
   outcome.status = static_cast<RenderStatus>(status);

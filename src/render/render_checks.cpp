@@ -5,6 +5,7 @@
 #include <string>
 
 #include "render/mesa_log.h"
+#include "render/shader_text.h"
 
 namespace shaderport::render {
 namespace {
@@ -112,7 +113,7 @@ DiagnosticList CheckPixels(const RenderOutcome& outcome, const CheckContext& con
       single = false;
     }
     if (c[0] == 0 && c[1] == 0 && c[2] == 0) ++black;
-    if (p[0] == 0.0f && p[1] == 0.0f && p[2] == 0.0f && p[3] == 0.0f) ++zero;
+    if (c[0] == 0 && c[1] == 0 && c[2] == 0 && c[3] == 0) ++zero;
     if (c[0] == 255 && c[1] == 255 && c[2] == 255) ++white;
   }
   const std::string of_total = " of " + std::to_string(count) + " pixels";
@@ -142,7 +143,8 @@ DiagnosticList CheckPixels(const RenderOutcome& outcome, const CheckContext& con
   const size_t drawn = count - sentinel;
   if (valid == 0 || valid != drawn || !context.expect_full_coverage) return out;
   if (zero == valid) {
-    // Mesa gives an output that is never assigned the value zero, alpha included.
+    // llvmpipe leaves an output that is never assigned at zero or at register
+    // leftovers near zero, alpha included; a real picture has some alpha.
     out.push_back(Make(Severity::kError, "render/unwritten-pixels", context.anchor,
                        "every pixel is (0, 0, 0, 0): the output is probably never written"));
   } else if (black == valid) {
@@ -195,6 +197,12 @@ DiagnosticList CheckOutcome(const RenderOutcome& outcome, const CheckContext& co
   for (const std::string& error : outcome.gl_errors) {
     out.push_back(Make(Severity::kError, "render/gl-error", context.anchor, error));
   }
+  for (const std::string& name : UnusedOutputs(context.fragment_text)) {
+    out.push_back(
+        Make(Severity::kError, "render/unwritten-pixels", context.anchor,
+             "the fragment output '" + name + "' is never written, so every pixel is undefined"));
+  }
+  if (HasErrors(out)) return out;  // an undefined picture needs no further checks
   DiagnosticList pixels = CheckPixels(outcome, context);
   out.insert(out.end(), pixels.begin(), pixels.end());
   return out;

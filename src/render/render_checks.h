@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <optional>
+#include <string_view>
 
 #include "diag/diagnostic.h"
 #include "render/render_request.h"
@@ -22,6 +23,10 @@ struct CheckContext {
   // False for a vertex shader drawn on the generated mesh, which covers only part
   // of the picture: then only an empty picture counts as unwritten.
   bool expect_full_coverage = true;
+  // The fragment text as rendered, when known: an `out` variable it never mentions
+  // again is reported as unwritten (llvmpipe leaves such an output undefined, so
+  // the picture alone cannot show it reliably).
+  std::string_view fragment_text;
 };
 
 DiagnosticList CheckOutcome(const RenderOutcome& outcome, const CheckContext& context);

@@ -27,6 +27,10 @@ int ComponentCount(GLenum type) {
 AttributeStream StreamForAttribute(std::string_view name) {
   std::string lower(name);
   for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  // "vertex" contains "tex": drop it so that "vertexColor" is a colour, "Vertex" a position.
+  for (size_t at = lower.find("vertex"); at != std::string::npos; at = lower.find("vertex")) {
+    lower.erase(at, 6);
+  }
   auto has = [&](std::string_view part) { return lower.find(part) != std::string::npos; };
   if (has("norm")) return AttributeStream::kNormal;
   if (has("tangent")) return AttributeStream::kTangent;

@@ -36,6 +36,15 @@ struct ShaderToyInputs {
   std::array<ChannelInput, 4> channels;
 };
 
+// A ShaderToy Buffer pass, drawn every frame before the main pass into a ping-pong
+// pair of RGBA32F textures: a pass reading itself (or a later buffer) sees the
+// previous frame, one reading an earlier buffer sees this frame, as on the site.
+struct BufferPass {
+  int buffer = 0;               // 0..3: Buffer A..D, the output it writes
+  std::string fragment_source;  // complete text, drawn on the full-screen triangle
+  std::array<int, 4> channel_buffers = {-1, -1, -1, -1};  // iChannelN reads buffer k, or -1
+};
+
 struct RenderRequest {
   // Complete GLSL texts (`#version 300 es`). An empty vertex shader means the
   // built-in full-screen triangle; an empty fragment shader a built-in flat shader,
@@ -46,6 +55,8 @@ struct RenderRequest {
   uint32_t height = 64;
   int frames = 1;  // frames drawn; the last one is read back
   ShaderToyInputs inputs;
+  std::vector<BufferPass> buffer_passes;                  // ShaderToy multipass, in drawing order
+  std::array<int, 4> channel_buffers = {-1, -1, -1, -1};  // the main pass's buffer inputs
 };
 
 struct RenderOptions {
@@ -75,6 +86,7 @@ struct RenderOutcome {
   std::string vertex_log;
   std::string fragment_log;
   std::string link_log;
+  int failed_pass = -1;                // index in buffer_passes whose compile/link failed; -1: main
   std::vector<std::string> gl_errors;  // "GL_INVALID_OPERATION after glDrawArrays"
   uint32_t width = 0;
   uint32_t height = 0;

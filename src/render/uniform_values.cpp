@@ -198,7 +198,7 @@ std::vector<float> ViewMatrix() {
 }
 
 void SetUniforms(const GlFunctions& gl, GLuint program, const RenderRequest& request,
-                 int frame_index, std::vector<GLuint>& textures) {
+                 int frame_index, ProgramTextures& textures, const ChannelOverrides& overrides) {
   GLint count = 0;
   gl.GetProgramiv(program, GL_ACTIVE_UNIFORMS, &count);
   std::vector<UniformInfo> uniforms;
@@ -216,28 +216,45 @@ void SetUniforms(const GlFunctions& gl, GLuint program, const RenderRequest& req
   }
   // Samplers first, so iChannelResolution knows the texture sizes.
   std::array<std::array<float, 3>, 4> channel_res{};
-  int unit = 0;
-  const bool first_frame = textures.empty();
+  size_t unit = 0;
   for (const UniformInfo& u : uniforms) {
     if (!IsSampler(u.type)) continue;
     if (unit >= kMaxTextureUnits) break;
-    const GLint this_unit = unit++;
+    const auto this_unit = static_cast<GLint>(unit);
     gl.Uniform1iv(u.location, 1, &this_unit);
-    int channel = -1;
-    if (u.name.size() == 9 && u.name.starts_with("iChannel") && u.name[8] >= '0' &&
-        u.name[8] <= '3') {
-      channel = u.name[8] - '0';
+    gl.ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
+    if (!textures.created) {
+      ProgramTextures::Unit entry;
+      if (u.name.size() == 9 && u.name.starts_with("iChannel") && u.name[8] >= '0' &&
+          u.name[8] <= '3') {
+        entry.channel = u.name[8] - '0';
+      }
+      const bool overridden =
+          entry.channel >= 0 && overrides[static_cast<size_t>(entry.channel)].texture != 0;
+      if (!overridden) {
+        static const ImageRgba8 kNoImage;
+        const ImageRgba8& image =
+            entry.channel >= 0 ? request.inputs.channels[static_cast<size_t>(entry.channel)].image
+                               : kNoImage;
+        const BoundTexture bound = CreateChannelTexture(gl, u.type, image);
+        entry.target = bound.target;
+        entry.name = bound.name;
+        entry.size = {bound.width, bound.height, bound.depth};
+      }
+      textures.units.push_back(entry);
     }
-    if (!first_frame) continue;  // textures stay bound to their units across frames
-    gl.ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(this_unit));
-    static const ImageRgba8 kNoImage;
-    const ImageRgba8& image =
-        channel >= 0 ? request.inputs.channels[static_cast<size_t>(channel)].image : kNoImage;
-    const BoundTexture bound = CreateChannelTexture(gl, u.type, image);
-    textures.push_back(bound.name);
-    if (channel >= 0)
-      channel_res[static_cast<size_t>(channel)] = {bound.width, bound.height, bound.depth};
+    const ProgramTextures::Unit& entry = textures.units[unit++];
+    std::array<float, 3> size = entry.size;
+    if (entry.channel >= 0 && overrides[static_cast<size_t>(entry.channel)].texture != 0) {
+      const ChannelOverride& o = overrides[static_cast<size_t>(entry.channel)];
+      gl.BindTexture(GL_TEXTURE_2D, o.texture);
+      size = {o.width, o.height, 1.0f};
+    } else {
+      gl.BindTexture(entry.target, entry.name);
+    }
+    if (entry.channel >= 0) channel_res[static_cast<size_t>(entry.channel)] = size;
   }
+  textures.created = true;
   gl.ActiveTexture(GL_TEXTURE0);
   const float aspect = static_cast<float>(request.width) / static_cast<float>(request.height);
   const float delta = request.inputs.frame_rate > 0 ? 1.0f / request.inputs.frame_rate : 0.0f;

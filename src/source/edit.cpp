@@ -128,8 +128,12 @@ std::optional<EditResult> ApplyEdits(std::string_view original, std::span<const 
     if (edit.begin > edit.end || edit.end > original.size()) return std::nullopt;
     sorted.push_back(&edit);
   }
-  std::stable_sort(sorted.begin(), sorted.end(),
-                   [](const Edit* a, const Edit* b) { return a->begin < b->begin; });
+  // At one offset, insertions go before a replacement that starts there (they
+  // cannot overlap it); among insertions the callers' order is kept.
+  std::stable_sort(sorted.begin(), sorted.end(), [](const Edit* a, const Edit* b) {
+    if (a->begin != b->begin) return a->begin < b->begin;
+    return a->begin == a->end && b->begin != b->end;
+  });
   for (size_t i = 1; i < sorted.size(); ++i) {
     if (EditsOverlap(*sorted[i - 1], *sorted[i])) return std::nullopt;
   }

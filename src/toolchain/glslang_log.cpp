@@ -49,6 +49,7 @@ void AppendGlslangErrors(std::string_view log, const SourceFile& file, std::stri
     std::string_view rest = Trim(line.substr(kError.size()));
     if (IsSummary(rest)) continue;
     const uint32_t line_number = SplitLocation(rest);
+    if (rest.substr(0, 4) == "'' :") rest = Trim(rest.substr(4));  // glslang names no token
     if (++count > limits::kMaxDiagnosticsPerFile) break;
     Diagnostic diagnostic;
     diagnostic.severity = severity;

@@ -64,6 +64,7 @@ void RenderPrepared(const PreparedShader& shader, const RenderFileOptions& optio
   context.anchor = shader.anchor;
   context.map_line = shader.map_line;
   context.expect_full_coverage = !shader.fragment_text.empty();
+  context.fragment_text = shader.fragment_text;
   DiagnosticList found = render::CheckOutcome(outcome, context);
   result.diagnostics.insert(result.diagnostics.end(), found.begin(), found.end());
   if (outcome.status == render::RenderStatus::kOk) {

@@ -1,7 +1,7 @@
-#extension GL_OES_standard_derivatives : enable
-#extension GL_EXT_shader_texture_lod : require // lod
+#version 300 es
 precision mediump float;
-varying vec2 uv;
+in vec2 uv;
+out highp vec4 fragColor;
 void main() {
-  gl_FragColor = vec4(dFdx(uv), 0.0, 1.0);
+  fragColor = vec4(dFdx(uv), 0.0, 1.0);
 }

@@ -1,6 +1,7 @@
-#extension GL_EXT_frag_depth : enable
+#version 300 es
 precision mediump float;
+out highp vec4 fragColor;
 void main() {
-  gl_FragColor = vec4(1.0);
-  gl_FragDepthEXT = 0.5;
+  fragColor = vec4(1.0);
+  gl_FragDepth = 0.5;
 }

@@ -1,9 +1,9 @@
-#extension GL_EXT_shader_texture_lod : enable
-#extension GL_OES_standard_derivatives : enable
+#version 300 es
 precision mediump float;
 uniform sampler2D tex;
-varying vec2 uv;
+in vec2 uv;
+out highp vec4 fragColor;
 void main() {
-  gl_FragColor = texture2DLodEXT(tex, uv, 2.0) +
-                 texture2DGradEXT(tex, uv, dFdx(uv), dFdy(uv));
+  fragColor = textureLod(tex, uv, 2.0) +
+                 textureGrad(tex, uv, dFdx(uv), dFdy(uv));
 }

@@ -10,6 +10,7 @@
 #include "render/loop_cap.h"
 #include "render/mesa_log.h"
 #include "render/outcome_wire.h"
+#include "render/shader_text.h"
 
 namespace shaderport::render {
 namespace {
@@ -109,6 +110,13 @@ TEST(RenderChecks, GeneratedLinesStayAtTheAnchorAndSayWhere) {
   EXPECT_EQ(found[0].range, (SourceRange{2, 0, 0}));
   EXPECT_NE(found[0].message.find("line 3 of the generated text"), std::string::npos);
   EXPECT_EQ(found[1].range, (SourceRange{2, 40, 45}));
+}
+
+TEST(ShaderText, UnusedOutputsAreFound) {
+  EXPECT_EQ(UnusedOutputs("out vec4 a;\nlayout(location = 1) out highp vec4 b;\n"
+                          "out vec4 c[2];\nvoid main() { a = vec4(1); /* b */ }\n"),
+            (Strings{"b", "c"}));
+  EXPECT_TRUE(UnusedOutputs("out vec4 o;\nvoid main() { o = vec4(0); }").empty());
 }
 
 TEST(MesaLog, ParsesLocationsSeveritiesAndContinuations) {

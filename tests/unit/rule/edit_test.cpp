@@ -29,6 +29,17 @@ TEST(ApplyEdits, RejectsOverlapsAndOutOfRange) {
   EXPECT_EQ(ok->text, "aX12def");
 }
 
+TEST(ApplyEdits, InsertionGoesBeforeAReplacementAtTheSameOffset) {
+  // The version rule inserts at 0 while another rule replaces a word at 0.
+  const std::string original = "attribute vec3 p;";
+  for (const auto& edits : {std::vector<Edit>{{0, 9, "in"}, {0, 0, "#version 300 es\n"}},
+                            std::vector<Edit>{{0, 0, "#version 300 es\n"}, {0, 9, "in"}}}) {
+    const auto result = ApplyEdits(original, edits);
+    ASSERT_TRUE(result);
+    EXPECT_EQ(result->text, "#version 300 es\nin vec3 p;");
+  }
+}
+
 TEST(SourceMap, MapsCopiedAndInsertedBytes) {
   const std::string original = "int a = 1;";
   const auto result = ApplyEdits(original, std::vector<Edit>{{0, 3, "float"}, {8, 9, "1.0"}});
