@@ -23,17 +23,21 @@ Diagnostic Make(Severity severity, std::string rule, SourceRange range, std::str
   return d;
 }
 
-void AddCompileDiagnostics(const std::string& log, ShaderStage stage, const CheckContext& context,
-                           DiagnosticList& out) {
-  const char* stage_name = stage == ShaderStage::kVertex ? "vertex" : "fragment";
+void AddCompileDiagnostics(const std::string& log, ShaderStage stage, int pass,
+                           const CheckContext& context, DiagnosticList& out) {
+  const std::string stage_name = pass >= 0
+                                     ? "buffer pass " + std::to_string(pass) + " fragment"
+                                     : (stage == ShaderStage::kVertex ? "vertex" : "fragment");
   bool any = false;
   for (const MesaLogEntry& entry : ParseMesaLog(log)) {
     if (!entry.is_error) continue;
     any = true;
     std::optional<SourceRange> range;
-    if (entry.line > 0 && context.map_line) range = context.map_line(stage, entry.line);
-    std::string message =
-        "Mesa rejects the " + std::string(stage_name) + " shader: " + entry.message;
+    if (entry.line > 0 && pass < 0 && context.map_line) range = context.map_line(stage, entry.line);
+    if (entry.line > 0 && pass >= 0 && context.map_buffer_line) {
+      range = context.map_buffer_line(pass, entry.line);
+    }
+    std::string message = "Mesa rejects the " + stage_name + " shader: " + entry.message;
     if (!range && entry.line > 0) {
       message += " (line " + std::to_string(entry.line) + " of the generated text)";
     }
@@ -169,10 +173,12 @@ DiagnosticList CheckOutcome(const RenderOutcome& outcome, const CheckContext& co
   switch (outcome.status) {
     case RenderStatus::kCompileFailed:
       if (outcome.vertex_log.find("error") != std::string::npos) {
-        AddCompileDiagnostics(outcome.vertex_log, ShaderStage::kVertex, context, out);
+        AddCompileDiagnostics(outcome.vertex_log, ShaderStage::kVertex, outcome.failed_pass,
+                              context, out);
       }
       if (outcome.fragment_log.find("error") != std::string::npos || out.empty()) {
-        AddCompileDiagnostics(outcome.fragment_log, ShaderStage::kFragment, context, out);
+        AddCompileDiagnostics(outcome.fragment_log, ShaderStage::kFragment, outcome.failed_pass,
+                              context, out);
       }
       return out;
     case RenderStatus::kLinkFailed:

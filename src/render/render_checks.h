@@ -20,6 +20,8 @@ struct CheckContext {
   // Maps a 1-based line of the text given to Mesa to the user's source; nullopt
   // when the line is generated (a header or wrapper). Unset: everything at anchor.
   std::function<std::optional<SourceRange>(ShaderStage stage, uint32_t line)> map_line;
+  // The same for the text of buffer pass `pass` (RenderRequest::buffer_passes).
+  std::function<std::optional<SourceRange>(int pass, uint32_t line)> map_buffer_line;
   // False for a vertex shader drawn on the generated mesh, which covers only part
   // of the picture: then only an empty picture counts as unwritten.
   bool expect_full_coverage = true;

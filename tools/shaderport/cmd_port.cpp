@@ -12,6 +12,7 @@
 #include "commands.h"
 #include "driver/dialect.h"
 #include "driver/parallel_for.h"
+#include "driver/port/emit_ported.h"
 #include "driver/port/output_files.h"
 #include "driver/port/port_file.h"
 #include "driver/port/port_report.h"
@@ -31,7 +32,10 @@ struct PortArgs {
   std::vector<std::string> channels;
   std::string stage;
   std::string emit = "essl";
-  int jobs = 1;
+  std::string optimize;
+  int hlsl_shader_model = 50;
+  int msl_version = 20000;
+  int jobs = 0;
 };
 
 bool ParseChannel(const std::string& spec, driver::PortOptions& options) {
@@ -115,10 +119,21 @@ int RunPort(const PortArgs& args) {
       return kExitUsage;
     }
   }
+  toolchain::EmitOptions emit_options;
+  emit_options.kind = *emit_kind;
+  if (!args.optimize.empty()) emit_options.optimize = args.optimize;
+  emit_options.hlsl_shader_model = args.hlsl_shader_model;
+  emit_options.msl_version = args.msl_version;
   std::vector<driver::PortResult> results(args.paths.size());
-  driver::ParallelFor(args.paths.size(), std::max(1, args.jobs), [&](size_t i) {
-    results[i] = driver::PortFile(args.paths[i], options, sources);
-  });
+  std::vector<driver::EmittedOutput> emitted(args.paths.size());
+  driver::ParallelFor(args.paths.size(), static_cast<unsigned>(std::max(0, args.jobs)),
+                      [&](size_t i) {
+                        results[i] = driver::PortFile(args.paths[i], options, sources);
+                        if (*emit_kind == toolchain::EmitKind::kEssl || results[i].read_failed) {
+                          return;
+                        }
+                        emitted[i] = driver::EmitPorted(results[i], emit_options, sources);
+                      });
 
   int exit_code = kExitOk;
   for (size_t i = 0; i < results.size(); ++i) {
@@ -127,18 +142,14 @@ int RunPort(const PortArgs& args) {
     std::string output = result.text;
     std::string extension;
     if (*emit_kind != toolchain::EmitKind::kEssl) {
-      const SourceFile ported(result.file->Id(), result.file->Name(), result.text);
-      const auto stage = result.output_stage == driver::Stage::kVertex
-                             ? toolchain::Stage::kVertex
-                             : toolchain::Stage::kFragment;
-      toolchain::EmitOptions emit_options;
-      emit_options.kind = *emit_kind;
-      emit_options.shadertoy = result.kind.dialect == driver::Dialect::kShaderToy;
-      toolchain::EmitResult emitted = toolchain::Emit(ported, stage, emit_options);
-      for (Diagnostic& d : emitted.diagnostics) result.diagnostics.push_back(std::move(d));
-      if (HasErrors(emitted.diagnostics)) continue;
-      output = std::move(emitted.output);
-      extension = toolchain::EmitExtension(*emit_kind, stage);
+      if (emitted[i].output.empty()) continue;  // the leg reported why
+      output = std::move(emitted[i].output);
+      extension = emitted[i].extension;
+      if (emit_options.optimize) {
+        std::fprintf(stderr, "%s: SPIR-V %zu -> %zu words (-%s)\n", args.paths[i].c_str(),
+                     emitted[i].words_before, emitted[i].words_after,
+                     emit_options.optimize->c_str());
+      }
     }
     if (!args.out_dir.empty() || !args.output.empty()) {
       const std::filesystem::path target =
@@ -179,7 +190,12 @@ void AddPortCommand(CLI::App& app, int& exit_code) {
   command->add_option("--stage", args->stage, "vertex|fragment (default: detected)");
   command->add_option("--emit", args->emit,
                       "essl (default), spirv, spvasm, hlsl, msl, essl-roundtrip, reflect");
-  command->add_option("-j,--jobs", args->jobs, "Parallel jobs");
+  command->add_option("--opt", args->optimize, "Optimise the SPIR-V: O (speed) or Os (size)");
+  command->add_option("--hlsl-shader-model", args->hlsl_shader_model,
+                      "HLSL shader model for --emit hlsl, e.g. 50 (default) or 60");
+  command->add_option("--msl-version", args->msl_version,
+                      "MSL version for --emit msl, e.g. 20000 (2.0, default)");
+  command->add_option("-j,--jobs", args->jobs, "Files ported in parallel (default: all cores)");
   command->callback([args, &exit_code] { exit_code = RunPort(*args); });
 }
 

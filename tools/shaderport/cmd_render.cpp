@@ -1,10 +1,12 @@
 // `shaderport render PATH -o OUT.png`: draws one shader headless and checks the picture.
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 #include "commands.h"
 #include "driver/check_file.h"
 #include "driver/render_check/render_file.h"
+#include "driver/render_check/render_multipass.h"
 #include "render/png_io.h"
 #include "report/output_format.h"
 
@@ -85,7 +87,11 @@ int RunRender(const RenderArgs& args) {
     options.common = driver::LoadSharedFile(args.common, sources, error);
     if (options.common == nullptr) return Usage(error);
   }
-  driver::RenderFileResult result = driver::RenderFile(args.path, sources, options);
+  // A .json file is a ShaderToy export (all passes); anything else is one shader.
+  driver::RenderFileResult result =
+      std::filesystem::path(args.path).extension() == ".json"
+          ? driver::RenderShaderToyJsonFile(args.path, sources, options)
+          : driver::RenderFile(args.path, sources, options);
   int code = kExitOk;
   if (result.image && !args.output.empty()) {
     std::string error;
@@ -124,7 +130,10 @@ void AddRenderCommand(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<RenderArgs>();
   auto* command = app.add_subcommand(
       "render", "Draw a shader headless (OSMesa/EGL), check the picture and write a PNG");
-  command->add_option("file", args->path, "ShaderToy pass or WebGL2 shader")->required();
+  command
+      ->add_option("file", args->path,
+                   "ShaderToy pass, WebGL2 shader, or ShaderToy JSON export (multipass)")
+      ->required();
   command->add_option("-o,--output", args->output, "PNG file for the final frame");
   command->add_option("--size", args->size, "Picture size WIDTHxHEIGHT (default 64x64)");
   command->add_option("--frames", args->frames, "Frames to draw; the last is kept (default 1)");

@@ -8,6 +8,7 @@
 #include "driver/front_end.h"
 #include "driver/read_input.h"
 #include "rule/fix_engine.h"
+#include "rule/harness_dialect_detect.h"
 #include "rules/registry.h"
 #include "rules/shadertoy/builtin_dialects.h"
 #include "validate/glslang_validator.h"
@@ -79,6 +80,13 @@ class Porter {
     settings_.harness = options.harness;
     if (settings_.harness == nullptr && kind_.dialect == Dialect::kShaderToy) {
       settings_.harness = rules::FindBuiltinDialect("shadertoy");
+    }
+    // Code written for another harness (glslsandbox, The Book of Shaders, a blog's
+    // harness) uses names it never declares: the shipped dialects recognise it.
+    if (settings_.harness == nullptr && !options.dialect) {
+      if (auto match = rule::DetectDialectInText(rules::BuiltinDialects(), file.Text())) {
+        settings_.harness = match->dialect;
+      }
     }
     settings_.source_version = kind_.dialect == Dialect::kWebGL1 ? 100 : 300;
     for (int i = 0; i < 4; ++i) settings_.channels[i] = options.channels[i];

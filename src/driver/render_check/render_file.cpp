@@ -63,6 +63,7 @@ void RenderPrepared(const PreparedShader& shader, const RenderFileOptions& optio
   render::CheckContext context;
   context.anchor = shader.anchor;
   context.map_line = shader.map_line;
+  context.map_buffer_line = shader.map_buffer_line;
   context.expect_full_coverage = !shader.fragment_text.empty();
   context.fragment_text = shader.fragment_text;
   DiagnosticList found = render::CheckOutcome(outcome, context);

@@ -131,3 +131,60 @@ TEST(RenderMesh, AttributesAreBoundByName) {
 
 }  // namespace
 }  // namespace shaderport::render
+
+namespace shaderport::render {
+namespace {
+
+TEST(RenderMultipass, BuffersPingPongAcrossFramesAndFeedTheImage) {
+  // Buffer A adds 0.25 to its previous frame; Buffer B copies A of this frame and
+  // halves it; Image shows A in red and B in green.
+  RenderRequest request = testing::FragmentRequest(testing::ShaderToyText(
+      "void mainImage(out vec4 c, in vec2 p) {\n"
+      "  c = vec4(texelFetch(iChannel0, ivec2(p), 0).r, texelFetch(iChannel1, ivec2(p), 0).g,\n"
+      "           p.x / iResolution.x, 1.0);\n}\n"));
+  BufferPass a;
+  a.buffer = 0;
+  a.channel_buffers = {0, -1, -1, -1};
+  a.fragment_source = testing::ShaderToyText(
+      "void mainImage(out vec4 c, in vec2 p) {\n"
+      "  c = texelFetch(iChannel0, ivec2(p), 0) + vec4(0.25);\n}\n");
+  BufferPass b;
+  b.buffer = 1;
+  b.channel_buffers = {0, -1, -1, -1};
+  b.fragment_source = testing::ShaderToyText(
+      "void mainImage(out vec4 c, in vec2 p) {\n"
+      "  c = vec4(0.0, texelFetch(iChannel0, ivec2(p), 0).r * 0.5, 0.0, 1.0);\n}\n");
+  request.buffer_passes = {a, b};
+  request.channel_buffers = {0, 1, -1, -1};
+  request.frames = 3;
+  const RenderOutcome outcome = RenderIsolated(request, testing::FastOptions());
+  ASSERT_EQ(outcome.status, RenderStatus::kOk) << outcome.fragment_log;
+  EXPECT_FLOAT_EQ(outcome.pixels[0], 0.75f);   // A after three frames
+  EXPECT_FLOAT_EQ(outcome.pixels[1], 0.375f);  // B read A of the same frame
+  EXPECT_TRUE(CheckOutcome(outcome, {}).empty());
+}
+
+TEST(RenderMultipass, CompileErrorNamesTheBufferPass) {
+  RenderRequest request = testing::FragmentRequest(
+      testing::ShaderToyText("void mainImage(out vec4 c, in vec2 p) { c = vec4(p, 0, 1); }\n"));
+  BufferPass broken;
+  broken.fragment_source =
+      testing::ShaderToyText("void mainImage(out vec4 c, in vec2 p) { c = 1.0; }\n");
+  request.buffer_passes = {broken};
+  const RenderOutcome outcome = RenderIsolated(request, testing::FastOptions());
+  ASSERT_EQ(outcome.status, RenderStatus::kCompileFailed);
+  EXPECT_EQ(outcome.failed_pass, 0);
+  CheckContext context;
+  int mapped_pass = -1;
+  context.map_buffer_line = [&](int pass, uint32_t) -> std::optional<SourceRange> {
+    mapped_pass = pass;
+    return std::nullopt;
+  };
+  const DiagnosticList found = CheckOutcome(outcome, context);
+  ASSERT_FALSE(found.empty());
+  EXPECT_EQ(mapped_pass, 0);
+  EXPECT_NE(found[0].message.find("buffer pass 0"), std::string::npos) << found[0].message;
+}
+
+}  // namespace
+}  // namespace shaderport::render

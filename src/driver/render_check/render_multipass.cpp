@@ -1,0 +1,152 @@
+#include "driver/render_check/render_multipass.h"
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "driver/read_input.h"
+#include "driver/render_check/composed_text.h"
+
+namespace shaderport::driver {
+namespace {
+
+Diagnostic Note(SourceRange range, std::string message, Severity severity = Severity::kNote) {
+  Diagnostic d;
+  d.severity = severity;
+  d.rule_id = severity == Severity::kNote ? "render/not-rendered" : "input/unreadable";
+  d.range = range;
+  d.message = std::move(message);
+  return d;
+}
+
+// "Buffer C" -> 2; -1 otherwise.
+int BufferIndexFromName(const std::string& name) {
+  if (name.size() != 8 || !name.starts_with("Buffer ")) return -1;
+  const char letter = name[7];
+  return letter >= 'A' && letter <= 'D' ? letter - 'A' : -1;
+}
+
+// "/media/previz/buffer01.png" -> 1; -1 otherwise.
+int BufferIndexFromSource(const std::string& src) {
+  const size_t at = src.find("buffer0");
+  if (at == std::string::npos || at + 7 >= src.size()) return -1;
+  const char digit = src[at + 7];
+  return digit >= '0' && digit <= '3' ? digit - '0' : -1;
+}
+
+struct PassInputs {
+  validate::ChannelTypes types{};
+  std::array<int, 4> buffers = {-1, -1, -1, -1};
+};
+
+PassInputs InputsOf(const nlohmann::json& pass) {
+  PassInputs inputs;
+  const auto found = pass.find("inputs");
+  if (found == pass.end() || !found->is_array()) return inputs;
+  for (const auto& input : *found) {
+    if (!input.is_object()) continue;
+    const int channel = input.value("channel", -1);
+    if (channel < 0 || channel > 3) continue;
+    const auto c = static_cast<size_t>(channel);
+    const std::string ctype = input.value("ctype", "");
+    inputs.types[c] = validate::ChannelTypeFromCtype(ctype);
+    if (ctype == "buffer") inputs.buffers[c] = BufferIndexFromSource(input.value("src", ""));
+  }
+  return inputs;
+}
+
+}  // namespace
+
+RenderFileResult RenderShaderToyJson(std::string_view name, std::string_view json_text,
+                                     SourceManager& sources, const RenderFileOptions& options) {
+  RenderFileResult result;
+  result.dialect = "shadertoy";
+  result.stage = "fragment";
+  const SourceFile& json_file = sources.Add(std::string(name), std::string(json_text));
+  result.file = &json_file;
+  const SourceRange anchor{json_file.Id(), 0, 0};
+  const nlohmann::json shader = nlohmann::json::parse(json_text, nullptr, false);
+  if (shader.is_discarded() || !shader.is_object() || !shader.contains("passes") ||
+      !shader["passes"].is_array()) {
+    result.diagnostics.push_back(
+        Note(anchor, "not a ShaderToy JSON object with passes[]", Severity::kError));
+    return result;
+  }
+  const SourceFile* common = options.common;
+  const nlohmann::json* image = nullptr;
+  std::vector<const nlohmann::json*> buffers;
+  for (const auto& pass : shader["passes"]) {
+    if (!pass.is_object() || !pass.contains("code") || !pass["code"].is_string()) continue;
+    const std::string type = pass.value("type", "");
+    if (type == "common") {
+      common = &sources.Add(std::string(name) + "#Common", pass["code"].get<std::string>());
+    } else if (type == "image") {
+      image = &pass;
+    } else if (type == "buffer") {
+      buffers.push_back(&pass);
+    }
+  }
+  if (image == nullptr) {
+    result.diagnostics.push_back(Note(anchor, "the shader has no Image pass to render"));
+    return result;
+  }
+  // Compose one pass: header, Common, code, epilogue, remembering the line map.
+  auto compose = [&](const nlohmann::json& pass, validate::PassType type,
+                     const PassInputs& inputs) {
+    const SourceFile& code = sources.Add(std::string(name) + "#" + pass.value("name", "pass"),
+                                         pass["code"].get<std::string>());
+    auto composed = std::make_shared<ComposedText>();
+    composed->Append(validate::ShaderToyHeader(type, inputs.types), nullptr);
+    if (common != nullptr) composed->Append(common->Text(), common);
+    composed->Append(code.Text(), &code);
+    composed->Append(validate::ShaderToyEpilogue(type), nullptr);
+    return std::make_pair(composed, &code);
+  };
+  std::vector<std::shared_ptr<ComposedText>> buffer_texts;
+  RenderFileOptions pass_options = options;
+  for (const nlohmann::json* pass : buffers) {
+    const int index = BufferIndexFromName(pass->value("name", ""));
+    if (index < 0) continue;
+    const PassInputs inputs = InputsOf(*pass);
+    auto [composed, code] = compose(*pass, validate::PassType::kBuffer, inputs);
+    render::BufferPass buffer;
+    buffer.buffer = index;
+    buffer.fragment_source = composed->Text();
+    buffer.channel_buffers = inputs.buffers;
+    pass_options.base.buffer_passes.push_back(std::move(buffer));
+    buffer_texts.push_back(composed);
+  }
+  const PassInputs image_inputs = InputsOf(*image);
+  pass_options.base.channel_buffers = image_inputs.buffers;
+  pass_options.channel_types = image_inputs.types;
+  auto [composed, code] = compose(*image, validate::PassType::kImage, image_inputs);
+  PreparedShader prepared;
+  prepared.fragment_text = composed->Text();
+  prepared.anchor = SourceRange{code->Id(), 0, 0};
+  prepared.user = code;
+  prepared.map_line = [composed](render::ShaderStage, uint32_t line) {
+    return composed->MapLine(line);
+  };
+  prepared.map_buffer_line = [buffer_texts](int pass, uint32_t line) -> std::optional<SourceRange> {
+    if (pass < 0 || static_cast<size_t>(pass) >= buffer_texts.size()) return std::nullopt;
+    return buffer_texts[static_cast<size_t>(pass)]->MapLine(line);
+  };
+  RenderPrepared(prepared, pass_options, result);
+  return result;
+}
+
+RenderFileResult RenderShaderToyJsonFile(const std::filesystem::path& path, SourceManager& sources,
+                                         const RenderFileOptions& options) {
+  InputText input = ReadInputFile(path);
+  if (!input.text) {
+    RenderFileResult result;
+    const SourceFile& empty = sources.Add(path.string(), "");
+    result.file = &empty;
+    result.diagnostics.push_back(Note(empty.WholeRange(), input.message, Severity::kError));
+    result.diagnostics.back().rule_id = input.rule_id;
+    return result;
+  }
+  return RenderShaderToyJson(path.string(), *input.text, sources, options);
+}
+
+}  // namespace shaderport::driver
