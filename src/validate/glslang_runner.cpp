@@ -16,15 +16,16 @@
 #include "validate/large_stack.h"
 
 namespace shaderport::validate {
-namespace {
-
-// A crashing child does not need the huge stack: it only has to fail fast.
-constexpr size_t kIsolatedStackBytes = size_t{32} << 20;
 
 void InitializeGlslangOnce() {
   static std::once_flag once;
   std::call_once(once, [] { glslang::InitializeProcess(); });
 }
+
+namespace {
+
+// A crashing child does not need the huge stack: it only has to fail fast.
+constexpr size_t kIsolatedStackBytes = size_t{32} << 20;
 
 // Must run on the thread that owns the TShader: glslang's pool allocator is per thread.
 void RunOnThisThread(std::span<const GlslangPart> parts, Stage stage, int default_version,

@@ -10,6 +10,9 @@ namespace shaderport::validate {
 
 enum class Stage { kVertex, kFragment };
 
+// glslang's process-wide set-up, done once whichever thread asks first.
+void InitializeGlslangOnce();
+
 struct GlslangPart {
   std::string name;  // printed by glslang as "<name>:<line>"; must not contain ':'
   std::string_view text;

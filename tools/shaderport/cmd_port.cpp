@@ -13,6 +13,7 @@
 #include "driver/dialect.h"
 #include "driver/parallel_for.h"
 #include "driver/port/emit_ported.h"
+#include "driver/port/link_pairs.h"
 #include "driver/port/output_files.h"
 #include "driver/port/port_file.h"
 #include "driver/port/port_report.h"
@@ -134,6 +135,9 @@ int RunPort(const PortArgs& args) {
                         }
                         emitted[i] = driver::EmitPorted(results[i], emit_options, sources);
                       });
+
+  // Stages ported together must still link as one program.
+  if (*emit_kind == toolchain::EmitKind::kEssl) driver::LinkPortedPairs(results);
 
   int exit_code = kExitOk;
   for (size_t i = 0; i < results.size(); ++i) {

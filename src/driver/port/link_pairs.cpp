@@ -1,0 +1,44 @@
+#include "driver/port/link_pairs.h"
+
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "validate/stage_link.h"
+
+namespace shaderport::driver {
+
+size_t LinkPortedPairs(std::vector<PortResult>& results) {
+  struct Pair {
+    PortResult* vertex = nullptr;
+    PortResult* fragment = nullptr;
+  };
+  std::map<std::string, Pair> pairs;  // ordered: reports come out the same every run
+  for (PortResult& result : results) {
+    if (result.read_failed || result.file == nullptr || !result.validated) continue;
+    const std::filesystem::path path(result.file->Name());
+    Pair& pair = pairs[(path.parent_path() / path.stem()).string()];
+    (result.output_stage == Stage::kVertex ? pair.vertex : pair.fragment) = &result;
+  }
+  size_t linked = 0;
+  for (auto& [stem, pair] : pairs) {
+    if (pair.vertex == nullptr || pair.fragment == nullptr) continue;
+    const validate::StageLinkResult link =
+        validate::LinkStages(pair.vertex->text, pair.fragment->text);
+    ++linked;
+    if (link.linked) continue;
+    Diagnostic diagnostic;
+    diagnostic.severity = Severity::kError;
+    diagnostic.rule_id = "port/stages-do-not-link";
+    diagnostic.range = {pair.fragment->file->Id(), 0, 0};
+    diagnostic.message = "the ported shader does not link with '" + pair.vertex->file->Name() +
+                         "': " + link.log;
+    while (!diagnostic.message.empty() && (diagnostic.message.back() == '\n')) {
+      diagnostic.message.pop_back();
+    }
+    pair.fragment->diagnostics.push_back(std::move(diagnostic));
+  }
+  return linked;
+}
+
+}  // namespace shaderport::driver
