@@ -15,6 +15,16 @@
 #include "render/gl_renderer.h"
 #include "render/outcome_wire.h"
 
+// AddressSanitizer reserves terabytes of shadow address space: an RLIMIT_AS would
+// kill every sanitized render child, so sanitized builds skip the limit.
+#if defined(__SANITIZE_ADDRESS__)
+#define SHADERPORT_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define SHADERPORT_ASAN 1
+#endif
+#endif
+
 namespace shaderport::render {
 namespace {
 
@@ -42,10 +52,12 @@ bool WriteAll(int fd, const std::string& bytes) {
       close(null_fd);
     }
   }
+#ifndef SHADERPORT_ASAN
   if (options.address_space_limit > 0) {
     const rlimit limit{options.address_space_limit, options.address_space_limit};
     setrlimit(RLIMIT_AS, &limit);
   }
+#endif
   if (options.hermetic || cache_dir.empty()) {
     setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
     setenv("MESA_GLSL_CACHE_DISABLE", "true", 1);

@@ -92,6 +92,23 @@ TEST(FixCli, InPlaceInReadOnlyDirectoryLeavesOriginal) {
   }
 }
 
+// Root ignores directory permissions, so the failed write is forced another
+// way: a file-size limit of 0 makes every write fail with EFBIG.
+TEST(FixCli, InPlaceWriteFailureLeavesOriginalAndNoTemporaryFile) {
+  const fs::path dir = TempDir("nowrite");
+  Write(dir / "a.frag", "void main() { float x = 1; gl_FragColor = vec4(x); }\n");
+  const std::string before = ReadWholeFile(dir / "a.frag");
+  const CommandResult result =
+      RunShaderport("fix --in-place a.frag", dir, "NO_COLOR=1 sh -c 'trap \"\" XFSZ; ulimit -f 0; exec \"$0\" \"$@\"'");
+  EXPECT_NE(result.exit_code, 0) << result.err;
+  EXPECT_EQ(ReadWholeFile(dir / "a.frag"), before);
+  size_t files = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir)) ++files;
+  EXPECT_EQ(files, 1u) << "a temporary file was left behind";
+  const CommandResult fixed = RunShaderport("fix a.frag", dir);
+  EXPECT_NE(fixed.out, before) << "the fix must change something for this test to mean anything";
+}
+
 TEST(RulesCli, DocsRulesMdIsTheOutputOfRules) {
   const CommandResult result = RunShaderport("rules", SHADERPORT_SOURCE_DIR);
   ASSERT_EQ(result.exit_code, 0) << result.err;

@@ -2,6 +2,7 @@
 // glue composes ShaderToy passes with src/validate's header and epilogue, maps Mesa's
 // errors to the user's lines, and renders ShaderToy JSON exports as multipass.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -13,13 +14,13 @@
 namespace shaderport::render {
 namespace {
 
-struct Run {
+struct CliRun {
   int exit_code = -1;
   std::string output;
 };
 
-Run RunCli(const std::string& arguments) {
-  Run run;
+CliRun RunCli(const std::string& arguments) {
+  CliRun run;
   const std::string command = std::string(SHADERPORT_BINARY) + " " + arguments + " 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return run;
@@ -39,8 +40,8 @@ class CliRender : public ::testing::Test {
 };
 
 TEST_F(CliRender, MesaErrorIsReportedOnTheUsersLine) {
-  const Run run = RunCli("render --hermetic " + std::string(SHADERPORT_SOURCE_DIR) +
-                         "/corpus/strict-typing/float-times-int.glsl");
+  const CliRun run = RunCli("render --hermetic " + std::string(SHADERPORT_SOURCE_DIR) +
+                            "/corpus/strict-typing/float-times-int.glsl");
   EXPECT_EQ(run.exit_code, 1) << run.output;
   EXPECT_NE(run.output.find("float-times-int.glsl:5:"), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("[render/compile-error]"), std::string::npos) << run.output;
@@ -67,7 +68,7 @@ TEST_F(CliRender, ShaderToyJsonRendersBuffersAsMultipass) {
   const std::string json_path = dir + "/render-multipass.json";
   const std::string png_path = dir + "/render-multipass.png";
   std::ofstream(json_path) << shader.dump();
-  const Run run =
+  const CliRun run =
       RunCli("render --hermetic --frames 2 --size 8x8 " + json_path + " -o " + png_path);
   ASSERT_EQ(run.exit_code, 0) << run.output;
   ImageRgba8 image;
@@ -85,7 +86,7 @@ TEST_F(CliRender, EndlessShaderIsKilledAndReported) {
                          "  for (;;) { S8(x) S8(x) S8(x) S8(x) S8(x) S8(x) S8(x) S8(x)"
                          " if (x > 1e9) break; }\n"
                          "  c = vec4(x);\n}\n";
-  const Run run = RunCli("render --hermetic --timeout 1 " + path);
+  const CliRun run = RunCli("render --hermetic --timeout 1 " + path);
   EXPECT_EQ(run.exit_code, 1) << run.output;
   EXPECT_NE(run.output.find("[render/timeout]"), std::string::npos) << run.output;
 }
