@@ -6,12 +6,12 @@
 
 namespace shaderport::limits {
 
-inline constexpr size_t kMaxFileBytes = 8u << 20;           // 8 MiB per input file
-inline constexpr size_t kMaxTokens = 2'000'000;             // lexed tokens per file
-inline constexpr size_t kMaxExpandedTokens = 4'000'000;     // tokens after macro expansion
-inline constexpr uint32_t kMaxMacroDepth = 200;             // nested macro expansions
-inline constexpr uint32_t kMaxConditionalDepth = 200;       // nested #if groups
-inline constexpr uint32_t kMaxSyntaxDepth = 256;            // nested expressions/statements
-inline constexpr size_t kMaxDiagnosticsPerFile = 1000;      // further ones are dropped with a note
+inline constexpr size_t kMaxFileBytes = 8u << 20;        // 8 MiB per input file
+inline constexpr size_t kMaxTokens = 2'000'000;          // lexed tokens per file
+inline constexpr size_t kMaxExpandedTokens = 4'000'000;  // tokens after macro expansion
+inline constexpr uint32_t kMaxMacroDepth = 200;          // nested macro expansions
+inline constexpr uint32_t kMaxConditionalDepth = 200;    // nested #if groups
+inline constexpr uint32_t kMaxSyntaxDepth = 256;         // nested expressions/statements
+inline constexpr size_t kMaxDiagnosticsPerFile = 1000;   // further ones are dropped with a note
 
 }  // namespace shaderport::limits

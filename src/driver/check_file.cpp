@@ -9,6 +9,7 @@
 #include "driver/front_end.h"
 #include "driver/read_input.h"
 #include "driver/suppress/suppressions.h"
+#include "driver/validate_kinds.h"
 #include "validate/glslang_validator.h"
 #include "validate/shadertoy_contract.h"
 
@@ -32,21 +33,6 @@ Diagnostic WholeFileError(const SourceFile& file, std::string rule_id, std::stri
   return diagnostic;
 }
 
-validate::PassType ToPassType(ShaderToyPass pass) {
-  switch (pass) {
-    case ShaderToyPass::kCubemap:
-      return validate::PassType::kCube;
-    case ShaderToyPass::kSound:
-      return validate::PassType::kSound;
-    case ShaderToyPass::kBuffer:
-      return validate::PassType::kBuffer;
-    case ShaderToyPass::kImage:
-    case ShaderToyPass::kCommon:
-      return validate::PassType::kImage;
-  }
-  return validate::PassType::kImage;
-}
-
 DetectedKind ResolveKind(const FileJob& job, const CheckOptions& options, const SourceFile& file) {
   DetectedKind kind = DetectKind(file.Text(), job.path);
   if (job.config != nullptr) {
@@ -62,8 +48,7 @@ DetectedKind ResolveKind(const FileJob& job, const CheckOptions& options, const 
 validate::ValidationRequest ComposeRequest(const FileJob& job, const CheckOptions& options,
                                            const DetectedKind& kind, const SourceFile& file,
                                            SourceManager& sources) {
-  const validate::Stage stage =
-      kind.stage == Stage::kVertex ? validate::Stage::kVertex : validate::Stage::kFragment;
+  const validate::Stage stage = ToValidateStage(kind.stage);
   if (kind.dialect != Dialect::kShaderToy) {
     validate::ValidationRequest request;
     request.parts.push_back({file.Name(), file.Text(), file.Id(), validate::PartKind::kUser});

@@ -3,8 +3,8 @@
 #include <array>
 #include <utility>
 
+#include "base/large_stack.h"
 #include "toolchain/cross_compile.h"
-#include "toolchain/large_stack.h"
 #include "toolchain/reflect.h"
 #include "toolchain/spirv_compile.h"
 #include "toolchain/spirv_tools.h"
@@ -171,7 +171,7 @@ EmitResult Emit(const SourceFile& file, Stage stage, const EmitOptions& options)
     result.output = std::string(file.Text());
     return result;
   }
-  const bool ran = RunWithLargeStack([&] { EmitSpirvKinds(file, stage, options, result); });
+  const bool ran = RunOnLargeStack([&] { EmitSpirvKinds(file, stage, options, result); });
   if (!ran) Report(result, file, "internal/error", "could not start the SPIR-V worker thread");
   return result;
 }

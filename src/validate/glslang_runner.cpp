@@ -13,7 +13,7 @@
 #include <mutex>
 #include <vector>
 
-#include "validate/large_stack.h"
+#include "base/large_stack.h"
 
 namespace shaderport::validate {
 

@@ -3,8 +3,8 @@
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 
+#include "base/large_stack.h"
 #include "validate/glslang_runner.h"
-#include "validate/large_stack.h"
 
 namespace shaderport::validate {
 namespace {

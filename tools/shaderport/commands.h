@@ -21,5 +21,6 @@ void AddFixCommand(CLI::App& app, int& exit_code);
 void AddPortCommand(CLI::App& app, int& exit_code);
 void AddRulesCommand(CLI::App& app, int& exit_code);
 void AddExplainCommand(CLI::App& app, int& exit_code);
+void AddReportCommand(CLI::App& app, int& exit_code);
 
 }  // namespace shaderport::cli

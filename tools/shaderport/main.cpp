@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   AddPortCommand(app, exit_code);
   AddRulesCommand(app, exit_code);
   AddExplainCommand(app, exit_code);
+  AddReportCommand(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -7,6 +7,7 @@
 
 #include "driver/front_end.h"
 #include "driver/read_input.h"
+#include "driver/validate_kinds.h"
 #include "rule/fix_engine.h"
 #include "rule/harness_dialect_detect.h"
 #include "rules/registry.h"
@@ -37,25 +38,6 @@ validate::ChannelTypes ToChannelTypes(const PortOptions& options) {
     }
   }
   return types;
-}
-
-validate::PassType ToPassType(ShaderToyPass pass) {
-  switch (pass) {
-    case ShaderToyPass::kCubemap:
-      return validate::PassType::kCube;
-    case ShaderToyPass::kSound:
-      return validate::PassType::kSound;
-    case ShaderToyPass::kBuffer:
-      return validate::PassType::kBuffer;
-    case ShaderToyPass::kImage:
-    case ShaderToyPass::kCommon:
-      return validate::PassType::kImage;
-  }
-  return validate::PassType::kImage;
-}
-
-validate::Stage ToValidateStage(Stage stage) {
-  return stage == Stage::kVertex ? validate::Stage::kVertex : validate::Stage::kFragment;
 }
 
 size_t ErrorCount(const DiagnosticList& diagnostics) {

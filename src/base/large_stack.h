@@ -1,11 +1,12 @@
 // Runs a function on a thread with a large dedicated stack, so that deep
-// recursion in a library (glslang on hostile input) cannot overflow the caller's.
+// recursion in a library (glslang or SPIRV-Cross on hostile input) cannot
+// overflow the caller's.
 #pragma once
 
 #include <cstddef>
 #include <functional>
 
-namespace shaderport::validate {
+namespace shaderport {
 
 inline constexpr size_t kLargeStackBytes = size_t{256} << 20;  // reserved, touched lazily
 
@@ -13,4 +14,4 @@ inline constexpr size_t kLargeStackBytes = size_t{256} << 20;  // reserved, touc
 // (then `work` did not run).
 bool RunOnLargeStack(const std::function<void()>& work, size_t stack_bytes = kLargeStackBytes);
 
-}  // namespace shaderport::validate
+}  // namespace shaderport

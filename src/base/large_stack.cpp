@@ -1,8 +1,8 @@
-#include "validate/large_stack.h"
+#include "base/large_stack.h"
 
 #include <pthread.h>
 
-namespace shaderport::validate {
+namespace shaderport {
 namespace {
 
 void* Trampoline(void* arg) {
@@ -24,4 +24,4 @@ bool RunOnLargeStack(const std::function<void()>& work, size_t stack_bytes) {
   return started;
 }
 
-}  // namespace shaderport::validate
+}  // namespace shaderport

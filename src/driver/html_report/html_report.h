@@ -1,0 +1,61 @@
+// The data of `shaderport report --html` and the page made from it: one
+// self-contained HTML file (inline CSS, thumbnails as data: URIs, no scripts), so
+// that a person can open the corpus's state in a browser. Pure formatting: no I/O.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace shaderport::driver {
+
+// The outcome of one step for one shader, shown as a badge.
+enum class StepStatus { kPass, kWarn, kFail, kSkipped };
+const char* StepStatusName(StepStatus status);  // "pass", "warn", "fail", "skipped"
+
+struct ReportStep {
+  StepStatus status = StepStatus::kSkipped;
+  std::string detail;       // one line shown beside the badge ("validated", "not rendered")
+  std::string diagnostics;  // clang-style text, "" when none (escaped by the formatter)
+};
+
+struct ReportEntry {
+  std::string path;     // as the user named it
+  std::string dialect;  // "shadertoy", "webgl1", "webgl2", "" when unknown
+  std::string stage;    // "vertex", "fragment", ""
+  ReportStep check;     // glslang verdict and diagnostics
+  ReportStep port;      // WebGL2 port
+  ReportStep render;    // smoke render of the port (or the site composition)
+  std::string png;      // PNG bytes of the thumbnail; empty: none
+};
+
+struct HtmlReport {
+  std::string title = "shaderport report";
+  std::string tool_version;
+  unsigned render_size = 128;
+  std::vector<ReportEntry> entries;  // in path order
+  std::vector<std::string> errors;   // inputs that could not be walked
+};
+
+struct StepCounts {
+  size_t pass = 0;
+  size_t warn = 0;
+  size_t fail = 0;
+  size_t skipped = 0;
+};
+struct ReportCounts {
+  size_t shaders = 0;
+  StepCounts check;
+  StepCounts port;
+  StepCounts render;
+  size_t thumbnails = 0;
+};
+ReportCounts CountReport(const HtmlReport& report);
+
+// `&`, `<`, `>`, `"` and `'` as entities.
+std::string HtmlEscape(std::string_view text);
+
+// The whole page. Deterministic: equal reports give equal bytes.
+std::string FormatHtmlReport(const HtmlReport& report);
+
+}  // namespace shaderport::driver

@@ -1,0 +1,22 @@
+// Pictures for the HTML report: PNG bytes in memory and `data:` URIs, so that the
+// report is one file with no external resources.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "render/render_request.h"
+
+namespace shaderport::driver {
+
+// The image as PNG bytes (8-bit RGBA, no time chunk: equal images give equal bytes);
+// empty when the image is malformed or libpng fails.
+std::string EncodePng(const render::ImageRgba8& image);
+
+// Standard base64 (RFC 4648, with padding).
+std::string Base64Encode(std::string_view bytes);
+
+// "data:image/png;base64,..." for `png` bytes.
+std::string PngDataUri(std::string_view png);
+
+}  // namespace shaderport::driver

@@ -1,0 +1,76 @@
+#include "driver/html_report/render_ported.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace shaderport::driver {
+namespace {
+
+// Line starts of `text`, so a 1-based Mesa line becomes a byte range.
+std::vector<uint32_t> LineStarts(std::string_view text) {
+  std::vector<uint32_t> starts = {0};
+  for (size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\n') starts.push_back(static_cast<uint32_t>(i + 1));
+  }
+  return starts;
+}
+
+}  // namespace
+
+validate::ChannelTypes ChannelTypesOf(std::string_view text, validate::ChannelTypes fallback) {
+  validate::ChannelTypes types = fallback;
+  struct Kind {
+    std::string_view sampler;
+    validate::ChannelType type;
+  };
+  static constexpr Kind kKinds[] = {{"sampler2D", validate::ChannelType::k2D},
+                                    {"samplerCube", validate::ChannelType::kCube},
+                                    {"sampler3D", validate::ChannelType::k3D}};
+  for (size_t channel = 0; channel < 4; ++channel) {
+    const std::string name = "iChannel" + std::to_string(channel) + ";";
+    for (const Kind& kind : kKinds) {
+      const std::string declaration = std::string(kind.sampler) + " " + name;
+      if (text.find(declaration) != std::string_view::npos) types[channel] = kind.type;
+    }
+  }
+  return types;
+}
+
+RenderFileResult RenderPortResult(const PortResult& result, const RenderFileOptions& options) {
+  RenderFileResult rendered;
+  rendered.file = result.file;
+  rendered.dialect = "webgl2";
+  rendered.stage = result.output_stage == Stage::kVertex ? "vertex" : "fragment";
+  if (result.file == nullptr || result.read_failed) return rendered;
+
+  RenderFileOptions local = options;
+  local.channel_types = ChannelTypesOf(result.text, options.channel_types);
+  local.common = nullptr;  // the port already contains what it needs
+
+  PreparedShader shader;
+  shader.anchor = SourceRange{result.file->Id(), 0, 0};
+  shader.user = result.file;
+  (result.output_stage == Stage::kVertex ? shader.vertex_text : shader.fragment_text) = result.text;
+  struct LineMap {
+    std::vector<uint32_t> starts;
+    SourceMap map;
+    FileId file;
+    uint32_t text_size;
+  };
+  auto lines = std::make_shared<LineMap>(
+      LineMap{LineStarts(result.text), result.map, result.file->Id(),
+              static_cast<uint32_t>(result.text.size())});
+  shader.map_line = [lines](render::ShaderStage, uint32_t line) -> std::optional<SourceRange> {
+    if (line == 0 || line > lines->starts.size()) return std::nullopt;
+    const uint32_t begin = lines->starts[line - 1];
+    const uint32_t end = line < lines->starts.size() ? lines->starts[line] - 1 : lines->text_size;
+    if (lines->map.OutputSize() != lines->text_size) return SourceRange{lines->file, 0, 0};
+    const auto [first, last] = lines->map.ToOriginalRange(begin, end);
+    return SourceRange{lines->file, first, last};
+  };
+  RenderPrepared(shader, local, rendered);
+  return rendered;
+}
+
+}  // namespace shaderport::driver
