@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <string_view>
 
 #include "base/limits.h"
 #include "driver/dialect.h"
 #include "driver/front_end.h"
+#include "driver/port/port_file.h"
 #include "driver/read_input.h"
+#include "driver/render_check/render_file.h"
 #include "driver/suppress/suppressions.h"
 #include "driver/validate_kinds.h"
 #include "validate/glslang_validator.h"
@@ -65,6 +68,45 @@ validate::ValidationRequest ComposeRequest(const FileJob& job, const CheckOption
   return request;
 }
 
+// Smoke-renders a file that validated. WebGL1 code is drawn as `port` turns
+// it into WebGL2; findings in the ported text point into a synthetic
+// "<file> (ported)" file, as the ported text is what was drawn.
+void RenderChecked(const SourceFile& file, const DetectedKind& kind, const SourceFile* common,
+                   const CheckOptions& options, SourceManager& sources,
+                   DiagnosticList& diagnostics) {
+  RenderFileOptions render_options;
+  render_options.base.width = static_cast<uint32_t>(options.render_size);
+  render_options.base.height = static_cast<uint32_t>(options.render_size);
+  render_options.render.timeout =
+      std::chrono::milliseconds(static_cast<int64_t>(options.render_timeout * 1000));
+  render_options.channel_types = options.channels;
+  render_options.common = common;
+  RenderFileResult rendered;
+  if (kind.dialect == Dialect::kWebGL1) {
+    PortOptions port_options;
+    port_options.dialect = Dialect::kWebGL1;
+    port_options.stage = kind.stage;
+    const PortResult ported = PortSource(file, nullptr, port_options, sources);
+    if (!ported.validated) {
+      diagnostics.push_back({Severity::kNote,
+                             "render/not-rendered",
+                             {file.Id(), 0, 0},
+                             "not rendered: the WebGL2 port of this file does not validate "
+                             "(see `shaderport port`)",
+                             {},
+                             {}});
+      return;
+    }
+    const SourceFile& text = sources.Add(file.Name() + " (ported)", ported.text, true);
+    DetectedKind webgl2 = kind;
+    webgl2.dialect = Dialect::kWebGL2;
+    RenderSource(text, webgl2, render_options, rendered);
+  } else {
+    RenderSource(file, kind, render_options, rendered);
+  }
+  for (Diagnostic& diagnostic : rendered.diagnostics) diagnostics.push_back(std::move(diagnostic));
+}
+
 }  // namespace
 
 const SourceFile* LoadSharedFile(const std::filesystem::path& path, SourceManager& sources,
@@ -109,6 +151,9 @@ FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceMana
     // Common is an input of its own: its findings are reported once, there.
     std::erase_if(report.diagnostics,
                   [&](const Diagnostic& d) { return d.range.file == common->Id(); });
+  }
+  if (options.render && !HasErrors(report.diagnostics)) {
+    RenderChecked(file, kind, common, options, sources, report.diagnostics);
   }
   ApplySuppressions(file, front.lexed, report.diagnostics, front.preprocessed.inactive_regions);
   if (job.config != nullptr) ApplyRuleConfig(*job.config, report.diagnostics);

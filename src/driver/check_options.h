@@ -21,6 +21,10 @@ struct CheckOptions {
   bool use_config = true;                       // --no-config
   std::optional<Severity> fail_on;              // --fail-on: overrides the config's
   unsigned jobs = 0;                            // 0: every core
+  // --render: smoke-render every file that validates and check the picture.
+  bool render = false;
+  int render_size = 64;        // --render-size: width and height in pixels
+  double render_timeout = 10;  // seconds before a render is killed
 };
 
 }  // namespace shaderport::driver

@@ -73,8 +73,9 @@ RenderOutcome RenderInThisProcess(const RenderRequest& request, BackendKind back
     return outcome;
   }
 
-  const bool user_vertex = !request.vertex_source.empty();
-  const std::string vertex_text = user_vertex ? request.vertex_source : kFullScreenVertexShader;
+  const bool user_vertex = !request.vertex_source.empty() && !request.fullscreen_vertex;
+  const std::string vertex_text =
+      request.vertex_source.empty() ? std::string(kFullScreenVertexShader) : request.vertex_source;
   const std::string fragment_text =
       request.fragment_source.empty() ? kFlatFragmentShader : request.fragment_source;
   std::vector<GLuint> buffer_programs;

@@ -51,6 +51,9 @@ struct RenderRequest {
   // for smoke-testing a vertex shader on the generated mesh.
   std::string vertex_source;
   std::string fragment_source;
+  // The vertex shader draws the full-screen triangle from gl_VertexID (e.g. one
+  // written to feed a fragment shader's inputs) instead of the generated mesh.
+  bool fullscreen_vertex = false;
   uint32_t width = 64;
   uint32_t height = 64;
   int frames = 1;  // frames drawn; the last one is read back

@@ -26,6 +26,9 @@ struct CheckArgs {
   bool no_config = false;
   unsigned jobs = 0;
   std::string color = "auto";
+  bool render = false;
+  int render_size = 64;
+  double render_timeout = 10;
 };
 
 bool ParseChannel(const std::string& spec, validate::ChannelTypes& channels) {
@@ -86,6 +89,13 @@ int RunCheckCommand(const CheckArgs& args) {
   if (!args.config.empty()) options.config = args.config;
   options.use_config = !args.no_config;
   options.jobs = args.jobs;
+  if (args.render_size < 1 || args.render_size > 4096) {
+    return Usage("--render-size must be between 1 and 4096");
+  }
+  if (args.render_timeout <= 0) return Usage("--render-timeout must be positive");
+  options.render = args.render;
+  options.render_size = args.render_size;
+  options.render_timeout = args.render_timeout;
 
   driver::CheckRun run = driver::RunCheck(options);
   for (const std::string& error : run.usage_errors) {
@@ -126,6 +136,11 @@ void AddCheckCommand(CLI::App& app, int& exit_code) {
   command->add_option("--config", args->config, "Use this .shaderport.toml instead of searching");
   command->add_flag("--no-config", args->no_config, "Ignore .shaderport.toml files");
   command->add_option("-j,--jobs", args->jobs, "Files checked in parallel (default: all cores)");
+  command->add_flag("--render", args->render,
+                    "Also smoke-render each file that validates and check the picture");
+  command->add_option("--render-size", args->render_size, "Render size in pixels (default 64)");
+  command->add_option("--render-timeout", args->render_timeout,
+                      "Seconds before a render is killed (default 10)");
   command->add_option("--color", args->color, "auto | always | never (NO_COLOR is honoured)")
       ->capture_default_str();
   command->callback([args, &exit_code] { exit_code = RunCheckCommand(*args); });

@@ -14,8 +14,8 @@ namespace shaderport::driver {
 
 struct HtmlReportOptions {
   std::vector<std::filesystem::path> paths;
-  unsigned jobs = 0;        // 0: every core
-  uint32_t size = 128;      // render width and height
+  unsigned jobs = 0;             // 0: every core
+  uint32_t size = 128;           // render width and height
   render::RenderOptions render;  // backend, timeout, Mesa cache
   std::string tool_version;
 };

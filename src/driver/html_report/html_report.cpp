@@ -5,7 +5,8 @@
 namespace shaderport::driver {
 namespace {
 
-constexpr std::string_view kStyle = R"(body{font-family:system-ui,sans-serif;margin:2em;color:#222;background:#fafafa}
+constexpr std::string_view kStyle =
+    R"(body{font-family:system-ui,sans-serif;margin:2em;color:#222;background:#fafafa}
 h1{font-size:1.4em}h2{font-size:1.05em;margin:0 0 .3em;font-family:monospace}
 table.summary{border-collapse:collapse;margin-bottom:2em}
 table.summary td,table.summary th{border:1px solid #ccc;padding:.25em .7em;text-align:right}

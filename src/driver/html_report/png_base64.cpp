@@ -58,6 +58,8 @@ std::string Base64Encode(std::string_view bytes) {
   return out;
 }
 
-std::string PngDataUri(std::string_view png) { return "data:image/png;base64," + Base64Encode(png); }
+std::string PngDataUri(std::string_view png) {
+  return "data:image/png;base64," + Base64Encode(png);
+}
 
 }  // namespace shaderport::driver

@@ -3,6 +3,7 @@
 #include "driver/dialect.h"
 #include "driver/read_input.h"
 #include "driver/render_check/composed_text.h"
+#include "driver/render_check/varying_feeder.h"
 #include "render/isolated_render.h"
 #include "render/loop_cap.h"
 #include "render/png_io.h"
@@ -47,6 +48,7 @@ void RenderPrepared(const PreparedShader& shader, const RenderFileOptions& optio
                     RenderFileResult& result) {
   render::RenderRequest request = options.base;
   request.vertex_source = shader.vertex_text;
+  request.fullscreen_vertex = shader.fullscreen_vertex;
   request.fragment_source = shader.fragment_text;
   for (size_t i = 0; i < 4; ++i) {
     request.inputs.channels[i].kind = KindOf(options.channel_types[i]);
@@ -89,8 +91,13 @@ RenderFileResult RenderFile(const std::filesystem::path& path, SourceManager& so
     return result;
   }
   const SourceFile& file = sources.Add(path.string(), std::move(*input.text));
+  RenderSource(file, DetectKind(file.Text(), path), options, result);
+  return result;
+}
+
+void RenderSource(const SourceFile& file, const DetectedKind& kind,
+                  const RenderFileOptions& options, RenderFileResult& result) {
   result.file = &file;
-  const DetectedKind kind = DetectKind(file.Text(), path);
   result.dialect = std::string(DialectName(kind.dialect));
   result.stage = std::string(StageName(kind.stage));
   const SourceRange anchor{file.Id(), 0, 0};
@@ -103,7 +110,7 @@ RenderFileResult RenderFile(const std::filesystem::path& path, SourceManager& so
     if (!pass) {
       result.diagnostics.push_back(Make(Severity::kNote, "render/not-rendered", anchor,
                                         "a Common file is rendered with the passes using it"));
-      return result;
+      return;
     }
     auto composed = std::make_shared<ComposedText>();
     composed->Append(validate::ShaderToyHeader(*pass, options.channel_types), nullptr);
@@ -118,6 +125,11 @@ RenderFileResult RenderFile(const std::filesystem::path& path, SourceManager& so
     auto composed = std::make_shared<ComposedText>();
     composed->Append(file.Text(), &file);
     (kind.stage == Stage::kVertex ? shader.vertex_text : shader.fragment_text) = composed->Text();
+    // A fragment shader with inputs gets a vertex shader that writes them.
+    if (kind.stage == Stage::kFragment) {
+      shader.vertex_text = FeederVertexShader(file.Text());
+      shader.fullscreen_vertex = true;
+    }
     shader.map_line = [composed](render::ShaderStage, uint32_t line) {
       return composed->MapLine(line);
     };
@@ -125,10 +137,9 @@ RenderFileResult RenderFile(const std::filesystem::path& path, SourceManager& so
     result.diagnostics.push_back(Make(Severity::kNote, "render/not-rendered", anchor,
                                       "WebGL1 (GLSL ES 1.00) code is rendered after `shaderport "
                                       "port` turns it into WebGL2"));
-    return result;
+    return;
   }
   RenderPrepared(shader, options, result);
-  return result;
 }
 
 }  // namespace shaderport::driver

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "diag/diagnostic.h"
+#include "driver/dialect.h"
 #include "render/render_checks.h"
 #include "render/render_request.h"
 #include "source/source_manager.h"
@@ -39,11 +40,17 @@ struct RenderFileResult {
 RenderFileResult RenderFile(const std::filesystem::path& path, SourceManager& sources,
                             const RenderFileOptions& options);
 
+// Renders a file already read, whose dialect and stage the caller has decided
+// (the check pipeline).
+void RenderSource(const SourceFile& file, const DetectedKind& kind,
+                  const RenderFileOptions& options, RenderFileResult& result);
+
 // For callers that compose the text themselves (the port pipeline): complete
 // `#version 300 es` texts and a map from their lines to the user's source.
 struct PreparedShader {
   std::string vertex_text;    // empty: built-in full-screen triangle
   std::string fragment_text;  // empty: built-in flat shader (vertex drawn on a mesh)
+  bool fullscreen_vertex = false;  // vertex_text draws the full-screen triangle
   std::function<std::optional<SourceRange>(render::ShaderStage, uint32_t)> map_line;
   // Lines of RenderFileOptions::base.buffer_passes[pass] (ShaderToy multipass).
   std::function<std::optional<SourceRange>(int pass, uint32_t)> map_buffer_line;

@@ -1,0 +1,14 @@
+// A glslsandbox.com paste: the page provides time, mouse and resolution, and
+// this snippet never declares them.
+#ifdef GL_ES
+precision mediump float;
+#endif
+
+void main(void) {
+	vec2 p = (gl_FragCoord.xy / resolution.xy) - 0.5;
+	p.x *= resolution.x / resolution.y;
+	float d = length(p - (mouse - 0.5));
+	float c = sin(p.x * 10.0 + time) + cos(p.y * 12.0 - time * 1.3);
+	c += sin(d * 30.0 - time * 4.0);
+	gl_FragColor = vec4(0.5 + 0.5 * cos(c + vec3(0.0, 2.0, 4.0)), 1.0);
+}
