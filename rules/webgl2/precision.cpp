@@ -59,6 +59,13 @@ class PrecisionRule final : public rule::Rule {
         !has_default.contains("float")) {
       missing.push_back("float");
     }
+    // shadertoy.com compiles every pass with `precision highp int;`: without it
+    // int arithmetic would run at mediump in the port and change the picture.
+    const rule::HarnessDialect* harness = context.Settings().harness;
+    if (context.Settings().stage == rule::ShaderStage::kFragment && harness != nullptr &&
+        harness->NameMatches("shadertoy") && !has_default.contains("int")) {
+      missing.push_back("int");
+    }
     std::set<std::string> samplers;
     glsl::VisitPreorder(context.Tree(), [&](const glsl::Node& node, uint32_t) {
       const auto* type = node.As<glsl::TypeSpecifier>();

@@ -8,7 +8,6 @@
 #include "base/limits.h"
 #include "driver/dialect.h"
 #include "driver/front_end.h"
-#include "driver/port/port_file.h"
 #include "driver/read_input.h"
 #include "driver/render_check/render_file.h"
 #include "driver/suppress/suppressions.h"
@@ -68,9 +67,7 @@ validate::ValidationRequest ComposeRequest(const FileJob& job, const CheckOption
   return request;
 }
 
-// Smoke-renders a file that validated. WebGL1 code is drawn as `port` turns
-// it into WebGL2; findings in the ported text point into a synthetic
-// "<file> (ported)" file, as the ported text is what was drawn.
+// Smoke-renders a file that validated (WebGL1 code through its port).
 void RenderChecked(const SourceFile& file, const DetectedKind& kind, const SourceFile* common,
                    const CheckOptions& options, SourceManager& sources,
                    DiagnosticList& diagnostics) {
@@ -81,29 +78,9 @@ void RenderChecked(const SourceFile& file, const DetectedKind& kind, const Sourc
       std::chrono::milliseconds(static_cast<int64_t>(options.render_timeout * 1000));
   render_options.channel_types = options.channels;
   render_options.common = common;
+  render_options.sources = &sources;
   RenderFileResult rendered;
-  if (kind.dialect == Dialect::kWebGL1) {
-    PortOptions port_options;
-    port_options.dialect = Dialect::kWebGL1;
-    port_options.stage = kind.stage;
-    const PortResult ported = PortSource(file, nullptr, port_options, sources);
-    if (!ported.validated) {
-      diagnostics.push_back({Severity::kNote,
-                             "render/not-rendered",
-                             {file.Id(), 0, 0},
-                             "not rendered: the WebGL2 port of this file does not validate "
-                             "(see `shaderport port`)",
-                             {},
-                             {}});
-      return;
-    }
-    const SourceFile& text = sources.Add(file.Name() + " (ported)", ported.text, true);
-    DetectedKind webgl2 = kind;
-    webgl2.dialect = Dialect::kWebGL2;
-    RenderSource(text, webgl2, render_options, rendered);
-  } else {
-    RenderSource(file, kind, render_options, rendered);
-  }
+  RenderSource(file, kind, render_options, rendered);
   for (Diagnostic& diagnostic : rendered.diagnostics) diagnostics.push_back(std::move(diagnostic));
 }
 

@@ -1,6 +1,7 @@
 #include "driver/render_check/render_file.h"
 
 #include "driver/dialect.h"
+#include "driver/port/port_file.h"
 #include "driver/read_input.h"
 #include "driver/render_check/composed_text.h"
 #include "driver/render_check/varying_feeder.h"
@@ -91,7 +92,9 @@ RenderFileResult RenderFile(const std::filesystem::path& path, SourceManager& so
     return result;
   }
   const SourceFile& file = sources.Add(path.string(), std::move(*input.text));
-  RenderSource(file, DetectKind(file.Text(), path), options, result);
+  RenderFileOptions with_sources = options;
+  with_sources.sources = &sources;
+  RenderSource(file, DetectKind(file.Text(), path), with_sources, result);
   return result;
 }
 
@@ -134,9 +137,31 @@ void RenderSource(const SourceFile& file, const DetectedKind& kind,
       return composed->MapLine(line);
     };
   } else {
-    result.diagnostics.push_back(Make(Severity::kNote, "render/not-rendered", anchor,
-                                      "WebGL1 (GLSL ES 1.00) code is rendered after `shaderport "
-                                      "port` turns it into WebGL2"));
+    // WebGL1 code is drawn as `port` turns it into WebGL2; findings in the
+    // ported text point into a synthetic "<file> (ported)" file, as that is
+    // the text that was drawn.
+    if (options.sources == nullptr) {
+      result.diagnostics.push_back(Make(Severity::kNote, "render/not-rendered", anchor,
+                                        "WebGL1 code is rendered after `shaderport port`"));
+      return;
+    }
+    PortOptions port_options;
+    port_options.dialect = Dialect::kWebGL1;
+    port_options.stage = kind.stage;
+    const PortResult ported = PortSource(file, nullptr, port_options, *options.sources);
+    if (!ported.validated) {
+      result.diagnostics.push_back(Make(Severity::kNote, "render/not-rendered", anchor,
+                                        "not rendered: the WebGL2 port of this file does not "
+                                        "validate (see `shaderport port`)"));
+      return;
+    }
+    const SourceFile& text =
+        options.sources->Add(file.Name() + " (ported)", ported.text, /*synthetic=*/true);
+    DetectedKind webgl2 = kind;
+    webgl2.dialect = Dialect::kWebGL2;
+    RenderSource(text, webgl2, options, result);
+    result.file = &file;
+    result.dialect = std::string(DialectName(kind.dialect));
     return;
   }
   RenderPrepared(shader, options, result);

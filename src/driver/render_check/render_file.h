@@ -25,6 +25,8 @@ struct RenderFileOptions {
   std::array<std::string, 4> channel_images;  // PNG paths for iChannel0..3 ("" = procedural)
   validate::ChannelTypes channel_types{};     // sampler kind per channel (ShaderToy)
   const SourceFile* common = nullptr;         // ShaderToy Common code, if any
+  // Where the WebGL2 port of WebGL1 code is registered; RenderFile sets it.
+  SourceManager* sources = nullptr;
 };
 
 struct RenderFileResult {

@@ -14,6 +14,7 @@ uniform sampler2D iChannel2;
 uniform sampler2D iChannel3;
 #define HW_PERFORMANCE 1
 precision highp float;
+precision highp int;
 // channel: 1=cube
 // The code declares iChannel1 itself as a 2D texture, but its input is a cube map.
 uniform samplerCube iChannel1;

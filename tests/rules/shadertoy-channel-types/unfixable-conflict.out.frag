@@ -15,6 +15,7 @@ uniform sampler2D iChannel2;
 uniform sampler2D iChannel3;
 #define HW_PERFORMANCE 1
 precision highp float;
+precision highp int;
 // iChannel2 is sampled both ways: it stays a 2D texture, with a warning.
 void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     vec2 uv = fragCoord / iResolution.xy;

@@ -15,6 +15,7 @@ uniform sampler2D iChannel2;
 uniform sampler2D iChannel3;
 #define HW_PERFORMANCE 1
 precision highp float;
+precision highp int;
 // Old shaders use iGlobalTime, also inside macros.
 #define T (iTime * 0.5)
 void mainImage(out vec4 fragColor, in vec2 fragCoord) {

@@ -15,6 +15,7 @@ uniform sampler2D iChannel2;
 uniform sampler2D iChannel3;
 #define HW_PERFORMANCE 1
 precision highp float;
+precision highp int;
 // The code already uses the names the wrapper would pick, even as a macro.
 #define color vec3(1.0, 0.5, 0.0)
 float fragColor_1 = 0.0;

@@ -13,6 +13,7 @@ uniform sampler2D iChannel1;
 uniform sampler2D iChannel2;
 uniform sampler2D iChannel3;
 #define HW_PERFORMANCE 1
+precision highp int;
 precision highp float;
 uniform vec3 iResolution;
 out vec4 outColor;

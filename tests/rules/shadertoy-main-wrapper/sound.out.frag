@@ -17,6 +17,7 @@ uniform highp float iTimeOffset;
 uniform highp int iSampleOffset;
 #define HW_PERFORMANCE 1
 precision highp float;
+precision highp int;
 // A Sound pass: mainSound returns the stereo sample at a time.
 vec2 mainSound(int samp, float time) {
     return vec2(sin(6.2831 * 440.0 * time) * exp(-3.0 * time));

@@ -15,6 +15,7 @@ uniform sampler2D iChannel2;
 uniform sampler2D iChannel3;
 #define HW_PERFORMANCE 1
 precision highp float;
+precision highp int;
 // Uses a few of the site's uniforms; all are declared, as the site does.
 #if HW_PERFORMANCE == 0
 #define STEPS 32

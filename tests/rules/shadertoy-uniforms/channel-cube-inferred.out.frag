@@ -15,6 +15,7 @@ uniform sampler2D iChannel2;
 uniform sampler2D iChannel3;
 #define HW_PERFORMANCE 1
 precision highp float;
+precision highp int;
 // iChannel0 is sampled with a direction: a cube map. iChannel1 as a 2D texture.
 void mainImage(out vec4 fragColor, in vec2 fragCoord) {
     vec2 uv = fragCoord / iResolution.xy;

@@ -15,6 +15,7 @@ uniform sampler2D iChannel2;
 uniform sampler2D iChannel3;
 #define HW_PERFORMANCE 1
 precision highp float;
+precision highp int;
 // channel: 1=3d
 // Told that iChannel1 is a volume: sampler3D, with the site's mediump.
 void mainImage(out vec4 fragColor, in vec2 fragCoord) {

@@ -17,6 +17,7 @@ uniform highp vec4 unViewport;
 uniform highp vec3 unCorners[5];
 #define HW_PERFORMANCE 1
 precision highp float;
+precision highp int;
 // A Cubemap pass gets the site's viewport and corner uniforms too.
 void mainCubemap(out vec4 fragColor, in vec2 fragCoord, in vec3 rayOri, in vec3 rayDir) {
     fragColor = vec4(0.5 + 0.5 * rayDir, 1.0);

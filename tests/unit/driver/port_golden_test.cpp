@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <ostream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -30,6 +31,9 @@ struct GoldenCase {
   fs::path golden;  // without the .out.<stage> suffix
   std::string label;
 };
+
+// gtest prints a case by its input path, not its bytes.
+void PrintTo(const GoldenCase& c, std::ostream* os) { *os << c.input.string(); }
 
 std::string Label(const fs::path& relative) {
   std::string label;
@@ -113,8 +117,8 @@ TEST_P(PortGolden, OutputMatchesGoldenCompilesAndIsStable) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Corpus, PortGolden, ::testing::ValuesIn(Cases()),
-                         [](const ::testing::TestParamInfo<GoldenCase>& info) {
-                           return info.param.label;
+                         [](const ::testing::TestParamInfo<GoldenCase>& param_info) {
+                           return param_info.param.label;
                          });
 
 TEST(PortGoldenSet, CoversCorpusAndCustomDialects) {

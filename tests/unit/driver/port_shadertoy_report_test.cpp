@@ -145,6 +145,20 @@ PortOptions OptionsFor(const Pass& pass, rule::PortMode mode) {
   return options;
 }
 
+// The first error when `text` is not GLSL ES 3.00 that compiles and links on its own.
+std::string ValidateOutput(const std::string& text, SourceManager& sources) {
+  const SourceFile& output = sources.Add("ported.frag", text);
+  validate::ValidationRequest request;
+  request.parts.push_back({output.Name(), output.Text(), output.Id()});
+  request.stage = validate::Stage::kFragment;
+  request.default_version = 100;
+  request.link = true;
+  const validate::ValidationResult result = validate::ValidateWithGlslang(request);
+  if (!result.Accepted(true)) return FirstError(result);
+  if (text.rfind("#version 300 es", 0) != 0) return "no #version 300 es on the first line";
+  return "";
+}
+
 PassOutcome Sweep(const Pass& pass) {
   PassOutcome outcome;
   SourceManager sources;
@@ -168,19 +182,22 @@ PassOutcome Sweep(const Pass& pass) {
   // that the output stands alone.
   const std::string whole = pass.common != nullptr ? *pass.common + "\n" + pass.code : pass.code;
   const SourceFile& whole_file = sources.Add(pass.type + ".whole.glsl", whole);
-  const PortResult ported =
-      PortSource(whole_file, nullptr, OptionsFor(pass, rule::PortMode::kPort), sources);
+  // Validating the output here first is cheaper than port's own glslang runs;
+  // a port that validates is exactly what port with validation makes (it only
+  // narrows fixes that add errors), and a failing one is re-run for real.
+  PortOptions port_options = OptionsFor(pass, rule::PortMode::kPort);
+  port_options.validate = false;
+  PortResult ported = PortSource(whole_file, nullptr, port_options, sources);
+  std::string error = ValidateOutput(ported.text, sources);
+  if (!error.empty()) {
+    port_options.validate = true;
+    ported = PortSource(whole_file, nullptr, port_options, sources);
+    error = ValidateOutput(ported.text, sources);
+  }
   for (const Diagnostic& d : ported.fixed) outcome.port_rules.push_back(d.rule_id);
   if (outcome.site_ok) {
-    validate::ValidationRequest request;
-    const SourceFile& output = sources.Add(pass.type + ".ported.frag", ported.text);
-    request.parts.push_back({output.Name(), output.Text(), output.Id()});
-    request.stage = validate::Stage::kFragment;
-    request.default_version = 100;  // the output must say #version 300 es itself
-    request.link = true;
-    const validate::ValidationResult result = validate::ValidateWithGlslang(request);
-    outcome.port_ok = result.Accepted(true) && ported.text.rfind("#version 300 es", 0) == 0;
-    if (!outcome.port_ok) outcome.port_error = FirstError(result);
+    outcome.port_ok = error.empty();
+    outcome.port_error = error;
   }
   return outcome;
 }

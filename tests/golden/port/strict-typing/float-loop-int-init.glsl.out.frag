@@ -1,0 +1,33 @@
+#version 300 es
+uniform highp vec3 iResolution;
+uniform highp float iTime;
+uniform highp float iChannelTime[4];
+uniform highp vec4 iMouse;
+uniform highp vec4 iDate;
+uniform highp float iSampleRate;
+uniform highp vec3 iChannelResolution[4];
+uniform highp int iFrame;
+uniform highp float iTimeDelta;
+uniform highp float iFrameRate;
+uniform sampler2D iChannel0;
+uniform sampler2D iChannel1;
+uniform sampler2D iChannel2;
+uniform sampler2D iChannel3;
+#define HW_PERFORMANCE 1
+precision highp float;
+// origin: corpus/strict-typing (hand-written), after seeds/000_832ddd5fa6e5b251.txt "GLSL Type Strictness": a float loop counter initialised from an int literal
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+    vec2 uv = fragCoord / iResolution.xy;
+    float acc = 0.0;
+    for (float i = 0.0; i < 4.0; i += 1.0) { // mistake
+        acc += 0.25 * sin(uv.x * i);
+    }
+    fragColor = vec4(vec3(acc), 1.0);
+}
+
+out highp vec4 outColor;
+void main() {
+  vec4 color = vec4(1e20);
+  mainImage(color, gl_FragCoord.xy);
+  outColor = vec4(color.xyz, 1.0);
+}
