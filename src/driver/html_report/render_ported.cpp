@@ -1,11 +1,11 @@
 #include "driver/html_report/render_ported.h"
 
 #include <algorithm>
-#include <cctype>
 #include <memory>
-#include <regex>
 #include <string>
 #include <vector>
+
+#include "driver/render_check/varying_feeder.h"
 
 namespace shaderport::driver {
 namespace {
@@ -17,64 +17,6 @@ std::vector<uint32_t> LineStarts(std::string_view text) {
     if (text[i] == '\n') starts.push_back(static_cast<uint32_t>(i + 1));
   }
   return starts;
-}
-
-// A fragment shader written for an app's vertex shader reads varyings (`uv`,
-// `vNormal`) that the renderer's full-screen triangle does not write. Each float `in`
-// becomes a plain global set at the top of main() from the pixel position: 0..1 screen
-// coordinates for 2D values, a normal facing the viewer for normals, a point in front of
-// the camera otherwise. Lines are kept, so Mesa's line numbers still map.
-std::string FeedFragmentInputs(std::string_view text, uint32_t width, uint32_t height) {
-  std::string out;
-  std::string writes;
-  size_t begin = 0;
-  while (begin < text.size()) {
-    size_t end = text.find('\n', begin);
-    if (end == std::string_view::npos) end = text.size();
-    std::string_view line = text.substr(begin, end - begin);
-    const bool last = end == text.size();
-    begin = end + 1;
-    std::vector<std::string> words;
-    if (line.starts_with("in ") && line.ends_with(";")) {
-      const std::string_view body = line.substr(0, line.size() - 1);
-      for (size_t at = 0; at < body.size();) {
-        const size_t space = std::min(body.find(' ', at), body.size());
-        if (space > at) words.emplace_back(body.substr(at, space - at));
-        at = space + 1;
-      }
-    }
-    std::string value;
-    if (words.size() >= 3 && words.size() <= 4) {
-      const std::string& type = words[words.size() - 2];
-      std::string lower = words.back();
-      for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-      if (type == "float") {
-        value = "t.x";
-      } else if (type == "vec2") {
-        value = "t";
-      } else if (type == "vec3") {
-        value =
-            lower.find("norm") != std::string::npos ? "normalize(vec3(p, 1.0))" : "vec3(p, -2.0)";
-      } else if (type == "vec4") {
-        value = "vec4(p, -2.0, 1.0)";
-      }
-    }
-    if (value.empty()) {
-      out += line;  // ints need `flat` and a real vertex shader: left as they are
-    } else {
-      out += line.substr(3);  // the declaration without `in`
-      writes += " " + words.back() + " = " + value + ";";
-    }
-    if (!last) out += '\n';
-  }
-  if (writes.empty()) return std::string(text);
-  static const std::regex kMain(R"(void\s+main\s*\(\s*(void)?\s*\)\s*\{)");
-  std::smatch match;
-  if (!std::regex_search(out, match, kMain)) return std::string(text);
-  const std::string setup = " vec2 t = gl_FragCoord.xy / vec2(" + std::to_string(width) + ".0, " +
-                            std::to_string(height) + ".0); vec2 p = t * 2.0 - 1.0;" + writes;
-  out.insert(static_cast<size_t>(match.position(0) + match.length(0)), setup);
-  return out;
 }
 
 }  // namespace
@@ -115,7 +57,10 @@ RenderFileResult RenderPortResult(const PortResult& result, const RenderFileOpti
   if (result.output_stage == Stage::kVertex) {
     shader.vertex_text = result.text;
   } else {
-    shader.fragment_text = FeedFragmentInputs(result.text, options.base.width, options.base.height);
+    shader.fragment_text = result.text;
+    // Inputs an app's vertex shader would write are fed by a generated one.
+    shader.vertex_text = FeederVertexShader(result.text);
+    shader.fullscreen_vertex = true;
   }
   struct LineMap {
     std::vector<uint32_t> starts;

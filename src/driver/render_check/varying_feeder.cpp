@@ -1,6 +1,6 @@
 #include "driver/render_check/varying_feeder.h"
 
-#include <set>
+#include <cctype>
 #include <vector>
 
 #include "glsl/lex/lexer.h"
@@ -30,11 +30,13 @@ std::vector<Input> FindInputs(std::string_view text) {
   const glsl::LexedFile lexed = glsl::Lex(file);
   const auto& tokens = lexed.tokens;
   std::vector<Input> inputs;
-  int depth = 0;
+  int depth = 0;  // braces and parentheses: `in` parameters are not stage inputs
   for (size_t i = 0; i < tokens.size(); ++i) {
     const glsl::Token& token = tokens[i];
-    if (token.punct == glsl::Punct::kLeftBrace) ++depth;
-    if (token.punct == glsl::Punct::kRightBrace) --depth;
+    if (token.punct == glsl::Punct::kLeftBrace || token.punct == glsl::Punct::kLeftParen) ++depth;
+    if (token.punct == glsl::Punct::kRightBrace || token.punct == glsl::Punct::kRightParen) {
+      --depth;
+    }
     if (depth != 0 || token.text != "in") continue;
     if (i + 1 < tokens.size() && tokens[i + 1].punct == glsl::Punct::kLeftParen) continue;
     Input input;
@@ -54,12 +56,19 @@ std::vector<Input> FindInputs(std::string_view text) {
   return inputs;
 }
 
-// A value of `type` that varies smoothly over the screen (p in [0,1]^2).
-std::string ValueFor(const std::string& type) {
+// A value of `type` that varies smoothly over the screen (p in [0,1]^2): screen
+// coordinates for 2D values, a normal facing the viewer for inputs named like
+// normals, a point in front of the camera for other positions.
+std::string ValueFor(const std::string& type, const std::string& name) {
+  std::string lower = name;
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (type == "float") return "p.x";
   if (type == "vec2") return "p";
-  if (type == "vec3") return "vec3(p, 0.5)";
-  if (type == "vec4") return "vec4(p, 0.5, 1.0)";
+  if (type == "vec3") {
+    return lower.find("norm") != std::string::npos ? "normalize(vec3(p * 2.0 - 1.0, 1.0))"
+                                                   : "vec3(p * 2.0 - 1.0, -2.0)";
+  }
+  if (type == "vec4") return "vec4(p * 2.0 - 1.0, -2.0, 1.0)";
   if (type.starts_with("mat")) return type + "(1.0)";
   if (type == "int" || type == "uint") return type + "(0)";
   if (type.starts_with("ivec") || type.starts_with("uvec")) return type + "(0)";
@@ -86,9 +95,9 @@ std::string FeederVertexShader(std::string_view fragment_text) {
     if (!input.array.empty()) {
       const std::string count = input.array.substr(1, input.array.size() - 2);
       text += "  for (int i = 0; i < " + count + "; ++i) " + input.name +
-              "[i] = " + ValueFor(input.type) + ";\n";
+              "[i] = " + ValueFor(input.type, input.name) + ";\n";
     } else {
-      text += "  " + input.name + " = " + ValueFor(input.type) + ";\n";
+      text += "  " + input.name + " = " + ValueFor(input.type, input.name) + ";\n";
     }
   }
   text += "}\n";

@@ -15,6 +15,7 @@ uniform sampler2D iChannel2;
 uniform sampler2D iChannel3;
 #define HW_PERFORMANCE 1
 precision highp float;
+precision highp int;
 // SDF Ambient Occlusion — ShaderToy Template
 // Synthesized from classic raymarching implementations
 

@@ -15,6 +15,7 @@ uniform sampler2D iChannel2;
 uniform sampler2D iChannel3;
 #define HW_PERFORMANCE 1
 precision highp float;
+precision highp int;
 // origin: seeds/000_832ddd5fa6e5b251.txt, "Common Variants" > "Fibonacci Sphere Uniform Hemisphere AO", placed into the "Complete Code Template" in place of calcAO
 // SDF Ambient Occlusion — ShaderToy Template
 // Synthesized from classic raymarching implementations
