@@ -49,6 +49,12 @@ std::string RulesMarkdown() {
   }
   text += "\n";
   for (const rule::Rule* r : all) text += RuleSection(*r);
+  // Every id shaderport can report, porting rules or not: `explain ID` shows its help.
+  text += "# Every diagnostic id\n\n| Id | Summary |\n|---|---|\n";
+  for (const RuleDescription& entry : RuleCatalog()) {
+    text += "| `" + std::string(entry.id) + "` | " + std::string(entry.summary) + " |\n";
+  }
+  text += "\n";
   while (text.size() >= 2 && text.ends_with("\n\n")) text.pop_back();
   return text;
 }
