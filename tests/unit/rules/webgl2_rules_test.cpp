@@ -163,9 +163,9 @@ TEST(Webgl2Rules, ConformanceWebgl1CasesPort) {
   std::printf("webgl1 conformance shaders ported to ESSL 3.00 and accepted: %d of %d\n", accepted,
               total);
   EXPECT_GT(total, 500);
-  // 1244 of 1959 today; most of the rest start with a token at offset 0, where
-  // ApplyEdits refuses an insertion next to a replacement (framework bug).
-  EXPECT_GE(accepted * 100, total * 60);
+  // 1952 of 1959 when measured (1244 before insertions at offset 0 were ordered
+  // ahead of replacements there).
+  EXPECT_GE(accepted * 1000, total * 995);
 }
 
 }  // namespace
