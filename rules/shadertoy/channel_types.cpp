@@ -17,12 +17,7 @@ namespace {
 constexpr std::string_view kId = "shadertoy/channel-types";
 
 Diagnostic Make(Severity severity, const SourceRange& range, std::string message) {
-  Diagnostic diagnostic;
-  diagnostic.severity = severity;
-  diagnostic.rule_id = std::string(kId);
-  diagnostic.range = range;
-  diagnostic.message = std::move(message);
-  return diagnostic;
+  return MakeDiagnostic(severity, std::string(kId), range, std::move(message));
 }
 
 // The type specifier of a file-scope declaration of `name` in this file, if any.

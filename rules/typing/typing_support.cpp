@@ -205,12 +205,7 @@ std::vector<IntForFloatSite> IntForFloatSites(const rule::RuleContext& context) 
 
 Diagnostic MakeDiagnostic(std::string_view rule_id, Severity severity, const SourceRange& range,
                           std::string message) {
-  Diagnostic d;
-  d.severity = severity;
-  d.rule_id = std::string(rule_id);
-  d.range = range;
-  d.message = std::move(message);
-  return d;
+  return shaderport::MakeDiagnostic(severity, std::string(rule_id), range, std::move(message));
 }
 
 }  // namespace shaderport::rules::typing

@@ -139,12 +139,7 @@ FixIt Insert(FileId file, uint32_t offset, std::string text) {
 
 Diagnostic MakeDiagnostic(std::string_view rule_id, Severity severity, const SourceRange& range,
                           std::string message) {
-  Diagnostic diagnostic;
-  diagnostic.severity = severity;
-  diagnostic.rule_id = std::string(rule_id);
-  diagnostic.range = range;
-  diagnostic.message = std::move(message);
-  return diagnostic;
+  return shaderport::MakeDiagnostic(severity, std::string(rule_id), range, std::move(message));
 }
 
 }  // namespace shaderport::rules::webgl2

@@ -14,4 +14,14 @@ const char* SeverityName(Severity severity) {
   return "error";
 }
 
+Diagnostic MakeDiagnostic(Severity severity, std::string rule_id, SourceRange range,
+                          std::string message) {
+  Diagnostic diagnostic;
+  diagnostic.severity = severity;
+  diagnostic.rule_id = std::move(rule_id);
+  diagnostic.range = range;
+  diagnostic.message = std::move(message);
+  return diagnostic;
+}
+
 }  // namespace shaderport

@@ -47,4 +47,8 @@ inline bool HasErrors(const DiagnosticList& diagnostics) {
 
 const char* SeverityName(Severity severity);
 
+// A diagnostic with no notes or fixes yet.
+Diagnostic MakeDiagnostic(Severity severity, std::string rule_id, SourceRange range,
+                          std::string message);
+
 }  // namespace shaderport

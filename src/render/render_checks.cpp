@@ -14,15 +14,6 @@ namespace {
 // never assigned by mainImage.
 constexpr float kSiteInitialValue = 1e19f;
 
-Diagnostic Make(Severity severity, std::string rule, SourceRange range, std::string message) {
-  Diagnostic d;
-  d.severity = severity;
-  d.rule_id = std::move(rule);
-  d.range = range;
-  d.message = std::move(message);
-  return d;
-}
-
 void AddCompileDiagnostics(const std::string& log, ShaderStage stage, int pass,
                            const CheckContext& context, DiagnosticList& out) {
   const std::string stage_name = pass >= 0
@@ -41,13 +32,13 @@ void AddCompileDiagnostics(const std::string& log, ShaderStage stage, int pass,
     if (!range && entry.line > 0) {
       message += " (line " + std::to_string(entry.line) + " of the generated text)";
     }
-    out.push_back(Make(Severity::kError, "render/compile-error", range.value_or(context.anchor),
-                       std::move(message)));
+    out.push_back(MakeDiagnostic(Severity::kError, "render/compile-error",
+                                 range.value_or(context.anchor), std::move(message)));
   }
   if (!any) {
-    out.push_back(Make(Severity::kError, "render/compile-error", context.anchor,
-                       "Mesa rejects the " + std::string(stage_name) +
-                           " shader: " + (log.empty() ? std::string("(no log)") : log)));
+    out.push_back(MakeDiagnostic(Severity::kError, "render/compile-error", context.anchor,
+                                 "Mesa rejects the " + std::string(stage_name) +
+                                     " shader: " + (log.empty() ? std::string("(no log)") : log)));
   }
 }
 
@@ -122,24 +113,27 @@ DiagnosticList CheckPixels(const RenderOutcome& outcome, const CheckContext& con
   }
   const std::string of_total = " of " + std::to_string(count) + " pixels";
   if (non_finite > 0) {
-    out.push_back(Make(Severity::kError, "render/nan-or-inf", context.anchor,
-                       std::to_string(non_finite) + of_total + " are NaN or infinite, first at " +
-                           At(outcome, first_non_finite)));
+    out.push_back(MakeDiagnostic(Severity::kError, "render/nan-or-inf", context.anchor,
+                                 std::to_string(non_finite) + of_total +
+                                     " are NaN or infinite, first at " +
+                                     At(outcome, first_non_finite)));
   }
   if (initial > 0) {
-    out.push_back(Make(Severity::kError, "render/unwritten-pixels", context.anchor,
+    out.push_back(
+        MakeDiagnostic(Severity::kError, "render/unwritten-pixels", context.anchor,
                        std::to_string(initial) + of_total +
                            " keep the site's initial value 1e20: the output was never assigned "
                            "there, first at " +
                            At(outcome, first_initial)));
   }
   if (context.expect_full_coverage && sentinel > 0) {
-    out.push_back(Make(Severity::kError, "render/unwritten-pixels", context.anchor,
-                       std::to_string(sentinel) + of_total +
-                           " were never written (discarded or not covered), first at " +
-                           At(outcome, first_sentinel)));
+    out.push_back(MakeDiagnostic(Severity::kError, "render/unwritten-pixels", context.anchor,
+                                 std::to_string(sentinel) + of_total +
+                                     " were never written (discarded or not covered), first at " +
+                                     At(outcome, first_sentinel)));
   } else if (!context.expect_full_coverage && sentinel == count) {
-    out.push_back(Make(Severity::kError, "render/unwritten-pixels", context.anchor,
+    out.push_back(
+        MakeDiagnostic(Severity::kError, "render/unwritten-pixels", context.anchor,
                        "the vertex shader drew nothing on the generated mesh: every pixel "
                        "still holds the clear value"));
   }
@@ -149,21 +143,24 @@ DiagnosticList CheckPixels(const RenderOutcome& outcome, const CheckContext& con
   if (zero == valid) {
     // llvmpipe leaves an output that is never assigned at zero or at register
     // leftovers near zero, alpha included; a real picture has some alpha.
-    out.push_back(Make(Severity::kError, "render/unwritten-pixels", context.anchor,
+    out.push_back(
+        MakeDiagnostic(Severity::kError, "render/unwritten-pixels", context.anchor,
                        "every pixel is (0, 0, 0, 0): the output is probably never written"));
   } else if (black == valid) {
-    out.push_back(Make(Severity::kWarning, "render/all-black", context.anchor,
+    out.push_back(
+        MakeDiagnostic(Severity::kWarning, "render/all-black", context.anchor,
                        "the picture is entirely black (is fragColor assigned? Mesa leaves an "
                        "unassigned output at zero)"));
   } else if (white == valid) {
-    out.push_back(Make(Severity::kWarning, "render/blown-out", context.anchor,
+    out.push_back(
+        MakeDiagnostic(Severity::kWarning, "render/blown-out", context.anchor,
                        "the picture is entirely white (blown out: values of 1.0 or more)"));
   } else if (single) {
-    out.push_back(Make(Severity::kWarning, "render/single-colour", context.anchor,
-                       "every pixel has the same colour rgba(" + std::to_string(first_colour[0]) +
-                           ", " + std::to_string(first_colour[1]) + ", " +
-                           std::to_string(first_colour[2]) + ", " +
-                           std::to_string(first_colour[3]) + ")"));
+    out.push_back(MakeDiagnostic(
+        Severity::kWarning, "render/single-colour", context.anchor,
+        "every pixel has the same colour rgba(" + std::to_string(first_colour[0]) + ", " +
+            std::to_string(first_colour[1]) + ", " + std::to_string(first_colour[2]) + ", " +
+            std::to_string(first_colour[3]) + ")"));
   }
   return out;
 }
@@ -182,31 +179,32 @@ DiagnosticList CheckOutcome(const RenderOutcome& outcome, const CheckContext& co
       }
       return out;
     case RenderStatus::kLinkFailed:
-      out.push_back(Make(Severity::kError, "render/link-error", context.anchor,
-                         "Mesa cannot link the program: " + outcome.link_log));
+      out.push_back(MakeDiagnostic(Severity::kError, "render/link-error", context.anchor,
+                                   "Mesa cannot link the program: " + outcome.link_log));
       return out;
     case RenderStatus::kContextFailed:
-      out.push_back(Make(Severity::kError, "render/backend-unavailable", context.anchor,
-                         "no GL context to render with: " + outcome.message));
+      out.push_back(MakeDiagnostic(Severity::kError, "render/backend-unavailable", context.anchor,
+                                   "no GL context to render with: " + outcome.message));
       return out;
     case RenderStatus::kTimeout:
-      out.push_back(Make(Severity::kError, "render/timeout", context.anchor, outcome.message));
+      out.push_back(
+          MakeDiagnostic(Severity::kError, "render/timeout", context.anchor, outcome.message));
       return out;
     case RenderStatus::kCrashed:
     case RenderStatus::kInternal:
-      out.push_back(Make(Severity::kError, "render/crashed", context.anchor,
-                         "the render failed: " + outcome.message));
+      out.push_back(MakeDiagnostic(Severity::kError, "render/crashed", context.anchor,
+                                   "the render failed: " + outcome.message));
       return out;
     case RenderStatus::kOk:
       break;
   }
   for (const std::string& error : outcome.gl_errors) {
-    out.push_back(Make(Severity::kError, "render/gl-error", context.anchor, error));
+    out.push_back(MakeDiagnostic(Severity::kError, "render/gl-error", context.anchor, error));
   }
   for (const std::string& name : UnusedOutputs(context.fragment_text)) {
-    out.push_back(
-        Make(Severity::kError, "render/unwritten-pixels", context.anchor,
-             "the fragment output '" + name + "' is never written, so every pixel is undefined"));
+    out.push_back(MakeDiagnostic(
+        Severity::kError, "render/unwritten-pixels", context.anchor,
+        "the fragment output '" + name + "' is never written, so every pixel is undefined"));
   }
   if (HasErrors(out)) return out;  // an undefined picture needs no further checks
   DiagnosticList pixels = CheckPixels(outcome, context);

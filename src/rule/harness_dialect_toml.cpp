@@ -124,12 +124,8 @@ class DialectParser {
   }
 
   void Report(Severity severity, std::string rule, SourceRange range, std::string message) {
-    Diagnostic d;
-    d.severity = severity;
-    d.rule_id = std::move(rule);
-    d.range = range;
-    d.message = std::move(message);
-    result_.diagnostics.push_back(std::move(d));
+    result_.diagnostics.push_back(
+        MakeDiagnostic(severity, std::move(rule), range, std::move(message)));
   }
   void Error(const toml::source_region& where, std::string message) {
     Report(Severity::kError, "dialect/invalid-value", RangeOf(where), std::move(message));

@@ -12,15 +12,6 @@
 namespace shaderport::driver {
 namespace {
 
-Diagnostic Make(Severity severity, std::string rule, SourceRange range, std::string message) {
-  Diagnostic d;
-  d.severity = severity;
-  d.rule_id = std::move(rule);
-  d.range = range;
-  d.message = std::move(message);
-  return d;
-}
-
 std::optional<validate::PassType> RenderablePass(ShaderToyPass pass) {
   switch (pass) {
     case ShaderToyPass::kImage:
@@ -57,7 +48,7 @@ void RenderPrepared(const PreparedShader& shader, const RenderFileOptions& optio
     std::string error;
     if (!render::ReadPng(options.channel_images[i], request.inputs.channels[i].image, error)) {
       result.diagnostics.push_back(
-          Make(Severity::kError, "render/channel-image", shader.anchor, error));
+          MakeDiagnostic(Severity::kError, "render/channel-image", shader.anchor, error));
       return;
     }
   }
@@ -88,7 +79,7 @@ RenderFileResult RenderFile(const std::filesystem::path& path, SourceManager& so
     const SourceFile& empty = sources.Add(path.string(), "");
     result.file = &empty;
     result.diagnostics.push_back(
-        Make(Severity::kError, input.rule_id, empty.WholeRange(), input.message));
+        MakeDiagnostic(Severity::kError, input.rule_id, empty.WholeRange(), input.message));
     return result;
   }
   const SourceFile& file = sources.Add(path.string(), std::move(*input.text));
@@ -111,8 +102,9 @@ void RenderSource(const SourceFile& file, const DetectedKind& kind,
   if (kind.dialect == Dialect::kShaderToy) {
     const std::optional<validate::PassType> pass = RenderablePass(kind.pass);
     if (!pass) {
-      result.diagnostics.push_back(Make(Severity::kNote, "render/not-rendered", anchor,
-                                        "a Common file is rendered with the passes using it"));
+      result.diagnostics.push_back(
+          MakeDiagnostic(Severity::kNote, "render/not-rendered", anchor,
+                         "a Common file is rendered with the passes using it"));
       return;
     }
     auto composed = std::make_shared<ComposedText>();
@@ -141,8 +133,9 @@ void RenderSource(const SourceFile& file, const DetectedKind& kind,
     // ported text point into a synthetic "<file> (ported)" file, as that is
     // the text that was drawn.
     if (options.sources == nullptr) {
-      result.diagnostics.push_back(Make(Severity::kNote, "render/not-rendered", anchor,
-                                        "WebGL1 code is rendered after `shaderport port`"));
+      result.diagnostics.push_back(
+          MakeDiagnostic(Severity::kNote, "render/not-rendered", anchor,
+                         "WebGL1 code is rendered after `shaderport port`"));
       return;
     }
     PortOptions port_options;
@@ -150,9 +143,10 @@ void RenderSource(const SourceFile& file, const DetectedKind& kind,
     port_options.stage = kind.stage;
     const PortResult ported = PortSource(file, nullptr, port_options, *options.sources);
     if (!ported.validated) {
-      result.diagnostics.push_back(Make(Severity::kNote, "render/not-rendered", anchor,
-                                        "not rendered: the WebGL2 port of this file does not "
-                                        "validate (see `shaderport port`)"));
+      result.diagnostics.push_back(
+          MakeDiagnostic(Severity::kNote, "render/not-rendered", anchor,
+                         "not rendered: the WebGL2 port of this file does not "
+                         "validate (see `shaderport port`)"));
       return;
     }
     const SourceFile& text =
