@@ -1,6 +1,7 @@
 // `report --html` end to end on a small directory copied from the corpus: a ShaderToy
 // pass, a WebGL2 shader and a ShaderToy pass with a typing error.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <optional>
@@ -54,7 +55,9 @@ uint32_t BigEndian(const std::string& bytes, size_t at) {
 class HtmlReportPipeline : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = new fs::path(fs::path(::testing::TempDir()) / "shaderport-html-report");
+    // ctest runs each test in its own process, in parallel: one directory each.
+    dir_ = new fs::path(fs::path(::testing::TempDir()) /
+                        ("shaderport-html-report-" + std::to_string(::getpid())));
     fs::remove_all(*dir_);
     fs::create_directories(*dir_);
     const fs::path corpus = fs::path(SHADERPORT_SOURCE_DIR) / "corpus";

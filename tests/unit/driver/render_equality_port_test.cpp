@@ -3,6 +3,7 @@
 // shader, and the picture of the ESSL round trip (SPIR-V and back) of that output are
 // equal within docs/render.md's tolerance. 64x64, hermetic renders.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -126,7 +127,8 @@ TEST(RenderEquality, SharedCorpusPasses) {
   const std::vector<std::string> ids = {"3dVfz1", "3lGXRc", "3ltSW2", "3tfXWN", "4sGfWy"};
   std::ifstream in(fs::path(SHADERPORT_SHARED_DIR) / "corpus-shadertoy/permissive.jsonl");
   if (!in) GTEST_SKIP() << "shared ShaderToy corpus not available";
-  const fs::path dir = fs::path(::testing::TempDir()) / "shaderport-render-equality";
+  const fs::path dir =
+      fs::path(::testing::TempDir()) / ("shaderport-render-equality-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   size_t found = 0;
   std::string line;
