@@ -84,7 +84,8 @@ std::optional<RenderOutcome> DecodeOutcome(const std::string& bytes) {
     return std::nullopt;
   }
   outcome.pixels.resize(count);
-  std::memcpy(outcome.pixels.data(), bytes.data() + in.at, count * sizeof(float));
+  // A failed render sends no pixels, and memcpy must not see the empty vector's null data.
+  if (count > 0) std::memcpy(outcome.pixels.data(), bytes.data() + in.at, count * sizeof(float));
   return outcome;
 }
 

@@ -172,6 +172,17 @@ TEST(OutcomeWire, RoundTripsAndRejectsTruncation) {
   EXPECT_FALSE(DecodeOutcome("").has_value());
 }
 
+// A render that failed to compile sends no pixels: decoding must not hand
+// memcpy the empty vector's null pointer (UBSan caught it).
+TEST(OutcomeWire, RoundTripsAnOutcomeWithoutPixels) {
+  RenderOutcome outcome;
+  outcome.fragment_log = "0:5(2): error: undeclared";
+  const auto decoded = DecodeOutcome(EncodeOutcome(outcome));
+  ASSERT_TRUE(decoded.has_value());
+  EXPECT_TRUE(decoded->pixels.empty());
+  EXPECT_EQ(decoded->fragment_log, outcome.fragment_log);
+}
+
 TEST(ToImage, FlipsRowsAndRoundsLikeA8BitCanvas) {
   RenderOutcome outcome = Filled(0.0f, 0.5f, 2.0f);
   outcome.pixels[0] = 1.0f;  // bottom-left in GL
