@@ -67,6 +67,19 @@ validate::ValidationRequest ComposeRequest(const FileJob& job, const CheckOption
   return request;
 }
 
+// Suppression comments, then the project's rule levels, then the per-file cap.
+void Finalize(const FileJob& job, const SourceFile& file, const FrontEndResult& front,
+              DiagnosticList& diagnostics) {
+  ApplySuppressions(file, front.lexed, diagnostics, front.preprocessed.inactive_regions);
+  if (job.config != nullptr) ApplyRuleConfig(*job.config, diagnostics);
+  if (diagnostics.size() > limits::kMaxDiagnosticsPerFile) {
+    diagnostics.resize(limits::kMaxDiagnosticsPerFile);
+    diagnostics.back().notes.push_back({{},
+                                        "further diagnostics in this file were not shown (limit " +
+                                            std::to_string(limits::kMaxDiagnosticsPerFile) + ")"});
+  }
+}
+
 // Smoke-renders a file that validated (WebGL1 code through its port).
 void RenderChecked(const SourceFile& file, const DetectedKind& kind, const SourceFile* common,
                    const CheckOptions& options, SourceManager& sources,
@@ -85,6 +98,23 @@ void RenderChecked(const SourceFile& file, const DetectedKind& kind, const Sourc
 }
 
 }  // namespace
+
+void RenderCheckedFile(const FileJob& job, const CheckOptions& options, SourceManager& sources,
+                       FileReport& report) {
+  if (report.file == nullptr || report.file->Text().empty()) return;
+  const SourceFile& file = *report.file;
+  const DetectedKind kind = ResolveKind(job, options, file);
+  const SourceFile* common = kind.dialect == Dialect::kShaderToy ? job.common : nullptr;
+  const FrontEndResult front = RunFrontEnd(file, common, kind, sources);
+  // Drawn only when what remains after suppressions and configuration has no error.
+  DiagnosticList settled = report.diagnostics;
+  SuppressionOptions quiet;
+  quiet.report_unused = false;
+  ApplySuppressions(file, front.lexed, settled, front.preprocessed.inactive_regions, quiet);
+  if (job.config != nullptr) ApplyRuleConfig(*job.config, settled);
+  if (!HasErrors(settled)) RenderChecked(file, kind, common, options, sources, report.diagnostics);
+  Finalize(job, file, front, report.diagnostics);
+}
 
 const SourceFile* LoadSharedFile(const std::filesystem::path& path, SourceManager& sources,
                                  std::string& error) {
@@ -129,18 +159,9 @@ FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceMana
     std::erase_if(report.diagnostics,
                   [&](const Diagnostic& d) { return d.range.file == common->Id(); });
   }
-  if (options.render && !HasErrors(report.diagnostics)) {
-    RenderChecked(file, kind, common, options, sources, report.diagnostics);
-  }
-  ApplySuppressions(file, front.lexed, report.diagnostics, front.preprocessed.inactive_regions);
-  if (job.config != nullptr) ApplyRuleConfig(*job.config, report.diagnostics);
-  if (report.diagnostics.size() > limits::kMaxDiagnosticsPerFile) {
-    report.diagnostics.resize(limits::kMaxDiagnosticsPerFile);
-    Diagnostic& last = report.diagnostics.back();
-    last.notes.push_back({{},
-                          "further diagnostics in this file were not shown (limit " +
-                              std::to_string(limits::kMaxDiagnosticsPerFile) + ")"});
-  }
+  // With --render the picture's findings join later (RenderCheckedFile), and
+  // suppressions and configuration are applied to all of them together there.
+  if (!options.render) Finalize(job, file, front, report.diagnostics);
   return report;
 }
 

@@ -22,6 +22,12 @@ struct FileJob {
 // for bad input.
 FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceManager& sources);
 
+// Smoke-renders a file CheckFile found free of errors and adds the picture's
+// findings. Renders fork a child process, so callers run this from a single
+// thread (see RunCheck).
+void RenderCheckedFile(const FileJob& job, const CheckOptions& options, SourceManager& sources,
+                       FileReport& report);
+
 // Reads and registers a file that other files use (ShaderToy Common); nullptr
 // and a diagnostic message in `error` when it cannot be used.
 const SourceFile* LoadSharedFile(const std::filesystem::path& path, SourceManager& sources,

@@ -111,6 +111,13 @@ CheckRun RunCheck(const CheckOptions& options) {
   std::vector<FileReport> reports(jobs.size());
   ParallelFor(jobs.size(), options.jobs,
               [&](size_t i) { reports[i] = CheckFile(jobs[i], options, sources); });
+  // Each render forks a child. Forking while other threads run can leave the child
+  // waiting forever on a lock one of them held, so renders run here, one at a
+  // time, once the parallel part has ended (llvmpipe draws on several threads itself).
+  if (options.render) {
+    for (size_t i = 0; i < jobs.size(); ++i)
+      RenderCheckedFile(jobs[i], options, sources, reports[i]);
+  }
 
   for (size_t i = 0; i < jobs.size(); ++i) {
     const Config* config = jobs[i].config;

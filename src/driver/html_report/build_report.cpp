@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 
 #include "driver/check_file.h"
 #include "driver/check_pipeline.h"
@@ -75,8 +76,7 @@ struct Job {
   bool shader = false;  // false: a config file's own findings, shown but not ported
 };
 
-void PortAndRender(const Job& job, const HtmlReportOptions& options, SourceManager& sources,
-                   ReportEntry& entry) {
+PortResult PortEntry(const Job& job, SourceManager& sources, ReportEntry& entry) {
   PortOptions port_options;
   PortResult ported = PortSource(*job.checked->file, job.common, port_options, sources);
   entry.port.status = ported.validated ? StatusOf(ported.diagnostics) : StepStatus::kFail;
@@ -85,7 +85,11 @@ void PortAndRender(const Job& job, const HtmlReportOptions& options, SourceManag
                                        : "the ported text does not validate";
   if (ported.narrowed) entry.port.detail += "; some fixes were dropped";
   entry.port.diagnostics = DiagnosticText(ported.file, ported.diagnostics, sources);
+  return ported;
+}
 
+void RenderEntry(const Job& job, const PortResult& ported, const HtmlReportOptions& options,
+                 SourceManager& sources, ReportEntry& entry) {
   RenderFileOptions render_options;
   render_options.render = options.render;
   render_options.base.width = options.size;
@@ -150,6 +154,7 @@ HtmlReportRun BuildHtmlReport(const HtmlReportOptions& options) {
   }
 
   std::vector<ReportEntry> entries(jobs.size());
+  std::vector<std::optional<PortResult>> ported(jobs.size());
   ParallelFor(jobs.size(), options.jobs, [&](size_t i) {
     const Job& job = jobs[i];
     ReportEntry& entry = entries[i];
@@ -167,8 +172,14 @@ HtmlReportRun BuildHtmlReport(const HtmlReportOptions& options) {
       entry.render.detail = "not rendered";
       return;
     }
-    PortAndRender(job, options, sources, entry);
+    ported[i] = PortEntry(job, sources, entry);
   });
+  // Each render forks a child. Forking while other threads run can leave the child
+  // waiting forever on a lock one of them held, so renders run here, one at a
+  // time, once the parallel part has ended (llvmpipe draws on several threads itself).
+  for (size_t i = 0; i < jobs.size(); ++i) {
+    if (ported[i]) RenderEntry(jobs[i], *ported[i], options, sources, entries[i]);
+  }
   run.report.entries = std::move(entries);
   return run;
 }

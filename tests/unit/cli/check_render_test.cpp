@@ -42,6 +42,16 @@ TEST_F(CheckRenderTest, ConstantPictureIsAWarningAndFailsOnlyWhenAsked) {
   EXPECT_EQ(RunShaderport("check --render --fail-on warning flat.glsl", dir_).exit_code, 1);
 }
 
+TEST_F(CheckRenderTest, PictureFindingsObeySuppressionComments) {
+  // Picture-level findings point at the start of the file: a comment there silences them.
+  Write("flat.glsl",
+        "// shaderport-ignore(render/single-colour)\n"
+        "void mainImage(out vec4 c, in vec2 p) { c = vec4(0.25, 0.5, 0.75, 1.0); }\n");
+  const CommandResult result = RunShaderport("check --render --format github flat.glsl", dir_);
+  EXPECT_EQ(result.exit_code, 0);
+  EXPECT_EQ(result.out, "") << result.out;
+}
+
 TEST_F(CheckRenderTest, WebGL1IsRenderedThroughItsPort) {
   Write("old.frag",
         "precision mediump float;\nvarying vec2 vUv;\n"
