@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "driver/port/output_files.h"
 #include "driver/port/port_file.h"
 #include "driver/port/port_report.h"
+#include "port_arguments.h"
 
 namespace shaderport::cli {
 namespace {
@@ -22,6 +24,7 @@ struct FixArgs {
   bool diff = false;
   bool in_place = false;
   std::string output;
+  PortArguments port;
 };
 
 int RunFix(const FixArgs& args) {
@@ -36,6 +39,8 @@ int RunFix(const FixArgs& args) {
   SourceManager sources;
   driver::PortOptions options;
   options.mode = rule::PortMode::kFix;
+  std::optional<rule::HarnessDialect> harness;
+  if (!ApplyPortArguments("fix", args.port, options, sources, harness)) return kExitUsage;
   int exit_code = kExitOk;
   std::vector<driver::PortResult> results;
   for (const std::string& path : args.paths) {
@@ -82,6 +87,10 @@ void AddFixCommand(CLI::App& app, int& exit_code) {
   auto* output = command->add_option("-o,--output", args->output, "Write the result to this file");
   diff->excludes(in_place)->excludes(output);
   in_place->excludes(output);
+  command->add_option("--dialect", args->port.dialect,
+                      "shadertoy|webgl1|webgl2, a harness dialect name, or a dialect TOML");
+  command->add_option("--channel", args->port.channels, "Sampler type of a channel: N=2d|cube|3d");
+  command->add_option("--stage", args->port.stage, "vertex|fragment (default: detected)");
   command->callback([args, &exit_code] { exit_code = RunFix(*args); });
 }
 

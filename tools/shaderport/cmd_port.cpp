@@ -18,8 +18,8 @@
 #include "driver/port/port_file.h"
 #include "driver/port/port_report.h"
 #include "driver/read_input.h"
+#include "port_arguments.h"
 #include "rule/harness_dialect.h"
-#include "rules/shadertoy/builtin_dialects.h"
 #include "toolchain/emit.h"
 
 namespace shaderport::cli {
@@ -38,45 +38,6 @@ struct PortArgs {
   int msl_version = 20000;
   int jobs = 0;
 };
-
-bool ParseChannel(const std::string& spec, driver::PortOptions& options) {
-  const size_t eq = spec.find('=');
-  if (eq != 1 || spec[0] < '0' || spec[0] > '3') return false;
-  const std::string kind = spec.substr(2);
-  rule::ChannelKind& slot = options.channels[spec[0] - '0'];
-  if (kind == "2d") {
-    slot = rule::ChannelKind::k2D;
-  } else if (kind == "cube") {
-    slot = rule::ChannelKind::kCube;
-  } else if (kind == "3d") {
-    slot = rule::ChannelKind::k3D;
-  } else {
-    return false;
-  }
-  return true;
-}
-
-// --dialect: a built-in dialect name (shadertoy, webgl1, webgl2) or a TOML file.
-bool ResolveDialect(const std::string& value, driver::PortOptions& options, SourceManager& sources,
-                    std::optional<rule::HarnessDialect>& harness) {
-  if (value.empty()) return true;
-  if (auto dialect = driver::ParseDialect(value)) {
-    options.dialect = dialect;
-    return true;
-  }
-  rule::DialectLoadResult loaded = rules::LoadDialect(value, sources);
-  if (!loaded.dialect) {
-    for (const Diagnostic& d : loaded.diagnostics) {
-      std::fprintf(stderr, "shaderport port: --dialect %s: %s [%s]\n", value.c_str(),
-                   d.message.c_str(), d.rule_id.c_str());
-    }
-    return false;
-  }
-  if (loaded.dialect->NameMatches("shadertoy")) options.dialect = driver::Dialect::kShaderToy;
-  harness = std::move(loaded.dialect);
-  options.harness = &*harness;
-  return true;
-}
 
 std::filesystem::path OutputPathFor(const std::string& input, const std::string& out_dir,
                                     driver::Stage stage, const std::string& extension) {
@@ -105,20 +66,9 @@ int RunPort(const PortArgs& args) {
   driver::PortOptions options;
   options.mode = rule::PortMode::kPort;
   std::optional<rule::HarnessDialect> harness;
-  if (!ResolveDialect(args.dialect, options, sources, harness)) return kExitUsage;
-  for (const std::string& spec : args.channels) {
-    if (!ParseChannel(spec, options)) {
-      std::fprintf(stderr, "shaderport port: bad --channel '%s' (want N=2d|cube|3d)\n",
-                   spec.c_str());
-      return kExitUsage;
-    }
-  }
-  if (!args.stage.empty()) {
-    options.stage = driver::ParseStage(args.stage);
-    if (!options.stage) {
-      std::fprintf(stderr, "shaderport port: bad --stage '%s'\n", args.stage.c_str());
-      return kExitUsage;
-    }
+  if (!ApplyPortArguments("port", {args.dialect, args.channels, args.stage}, options, sources,
+                          harness)) {
+    return kExitUsage;
   }
   toolchain::EmitOptions emit_options;
   emit_options.kind = *emit_kind;

@@ -109,6 +109,21 @@ TEST(FixCli, InPlaceWriteFailureLeavesOriginalAndNoTemporaryFile) {
   EXPECT_NE(fixed.out, before) << "the fix must change something for this test to mean anything";
 }
 
+// `fix` takes the same --dialect/--channel/--stage as `port`.
+TEST(FixCli, DialectChannelAndStageOptions) {
+  const fs::path dir = TempDir("fix-options");
+  // Code with no mainImage is not detected as ShaderToy: read as WebGL1, iTime is
+  // undeclared and nothing is fixed; told it is ShaderToy, the int literal is.
+  Write(dir / "wave.glsl", "float wave() { return sin(iTime * 2); }\n");
+  const CommandResult plain = RunShaderport("fix wave.glsl", dir);
+  EXPECT_EQ(plain.out.find("iTime * 2.0"), std::string::npos) << plain.out;
+  const CommandResult told = RunShaderport("fix --dialect shadertoy wave.glsl", dir);
+  EXPECT_NE(told.out.find("iTime * 2.0"), std::string::npos) << told.out << told.err;
+  EXPECT_EQ(RunShaderport("fix --dialect no-such-dialect wave.glsl", dir).exit_code, 2);
+  EXPECT_EQ(RunShaderport("fix --channel 7=cube wave.glsl", dir).exit_code, 2);
+  EXPECT_EQ(RunShaderport("fix --stage sideways wave.glsl", dir).exit_code, 2);
+}
+
 TEST(RulesCli, DocsRulesMdIsTheOutputOfRules) {
   const CommandResult result = RunShaderport("rules", SHADERPORT_SOURCE_DIR);
   ASSERT_EQ(result.exit_code, 0) << result.err;
