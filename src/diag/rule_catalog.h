@@ -9,9 +9,9 @@
 namespace shaderport {
 
 struct RuleDescription {
-  std::string_view id;           // "category/kebab-name"
-  std::string_view summary;      // one line, sentence case, no final period
-  std::string_view help;         // what it means and what to do about it
+  std::string_view id;       // "category/kebab-name"
+  std::string_view summary;  // one line, sentence case, no final period
+  std::string_view help;     // what it means and what to do about it
 };
 
 // All entries, sorted by id.

@@ -10,7 +10,7 @@ namespace shaderport::validate {
 struct StageLinkResult {
   bool compiled = false;  // both stages compiled (a link is only tried then)
   bool linked = false;
-  std::string log;        // glslang's compile and link messages
+  std::string log;  // glslang's compile and link messages
 };
 
 // Both texts are whole shaders (with their #version). Thread-safe.

@@ -31,8 +31,8 @@ size_t LinkPortedPairs(std::vector<PortResult>& results) {
     diagnostic.severity = Severity::kError;
     diagnostic.rule_id = "port/stages-do-not-link";
     diagnostic.range = {pair.fragment->file->Id(), 0, 0};
-    diagnostic.message = "the ported shader does not link with '" + pair.vertex->file->Name() +
-                         "': " + link.log;
+    diagnostic.message =
+        "the ported shader does not link with '" + pair.vertex->file->Name() + "': " + link.log;
     while (!diagnostic.message.empty() && (diagnostic.message.back() == '\n')) {
       diagnostic.message.pop_back();
     }

@@ -50,8 +50,8 @@ void RenderSource(const SourceFile& file, const DetectedKind& kind,
 // For callers that compose the text themselves (the port pipeline): complete
 // `#version 300 es` texts and a map from their lines to the user's source.
 struct PreparedShader {
-  std::string vertex_text;    // empty: built-in full-screen triangle
-  std::string fragment_text;  // empty: built-in flat shader (vertex drawn on a mesh)
+  std::string vertex_text;         // empty: built-in full-screen triangle
+  std::string fragment_text;       // empty: built-in flat shader (vertex drawn on a mesh)
   bool fullscreen_vertex = false;  // vertex_text draws the full-screen triangle
   std::function<std::optional<SourceRange>(render::ShaderStage, uint32_t)> map_line;
   // Lines of RenderFileOptions::base.buffer_passes[pass] (ShaderToy multipass).

@@ -22,11 +22,11 @@ inline constexpr uint32_t kNoMacroUse = UINT32_MAX;
 struct PpToken {
   TokenKind kind = TokenKind::kEndOfFile;
   Punct punct = Punct::kNone;
-  std::string_view text;   // spelling; points into a SourceFile or into PreprocessResult storage
-  SourceRange spelling;    // where its characters are written (inside a macro body for expanded
-                           // tokens; the whole `a ## b` for pasted ones)
-  SourceRange expansion;   // what it stands for in the file being compiled: its own spelling
-                           // when not from a macro, else the range of the outermost macro use
+  std::string_view text;  // spelling; points into a SourceFile or into PreprocessResult storage
+  SourceRange spelling;   // where its characters are written (inside a macro body for expanded
+                          // tokens; the whole `a ## b` for pasted ones)
+  SourceRange expansion;  // what it stands for in the file being compiled: its own spelling
+                          // when not from a macro, else the range of the outermost macro use
   uint32_t macro_use = kNoMacroUse;  // innermost MacroUse that produced it, if any
   bool leading_space = false;
   bool at_line_start = false;
@@ -39,15 +39,15 @@ struct PpToken {
 // One expansion of a macro; uses nest through `parent`.
 struct MacroUse {
   std::string name;
-  SourceRange use;          // the macro name and, for function-like macros, its arguments
-  SourceRange definition;   // the #define line's macro name
+  SourceRange use;         // the macro name and, for function-like macros, its arguments
+  SourceRange definition;  // the #define line's macro name
   uint32_t parent = kNoMacroUse;
 };
 
 struct VersionDirective {
   bool present = false;
-  int number = 100;            // 100 when absent (GLSL ES 1.00)
-  std::string profile;         // "es" or ""
+  int number = 100;     // 100 when absent (GLSL ES 1.00)
+  std::string profile;  // "es" or ""
   SourceRange range;
 };
 
@@ -58,8 +58,8 @@ struct ExtensionDirective {
 };
 
 struct PragmaDirective {
-  std::string text;    // the tokens after `#pragma`, joined by single spaces
-  SourceRange range;   // the whole directive line
+  std::string text;   // the tokens after `#pragma`, joined by single spaces
+  SourceRange range;  // the whole directive line
 };
 
 struct PreprocessOptions {
@@ -71,7 +71,7 @@ struct PreprocessOptions {
 };
 
 struct PreprocessResult {
-  std::vector<PpToken> tokens;             // ends with one kEndOfFile token
+  std::vector<PpToken> tokens;  // ends with one kEndOfFile token
   std::vector<MacroUse> macro_uses;
   VersionDirective version;
   std::vector<ExtensionDirective> extensions;

@@ -40,7 +40,8 @@ class BadInputTest : public ::testing::Test {
       const std::string& printed = command == "check" ? result.out : result.err;
       EXPECT_EQ(result.exit_code, 1) << command << " " << name << "\n" << printed;
       EXPECT_NE(printed.find("[" + expected + "]"), std::string::npos)
-          << command << " " << name << "\n" << printed.substr(0, 2000);
+          << command << " " << name << "\n"
+          << printed.substr(0, 2000);
     }
   }
 

@@ -34,8 +34,7 @@ TEST_F(CheckRenderTest, FragmentInputsAreFedAndAGoodPictureHasNoFinding) {
 }
 
 TEST_F(CheckRenderTest, ConstantPictureIsAWarningAndFailsOnlyWhenAsked) {
-  Write("flat.glsl",
-        "void mainImage(out vec4 c, in vec2 p) { c = vec4(0.25, 0.5, 0.75, 1.0); }\n");
+  Write("flat.glsl", "void mainImage(out vec4 c, in vec2 p) { c = vec4(0.25, 0.5, 0.75, 1.0); }\n");
   const CommandResult result = RunShaderport("check --render --format github flat.glsl", dir_);
   EXPECT_EQ(result.exit_code, 0);
   EXPECT_NE(result.out.find("title=render/single-colour"), std::string::npos) << result.out;

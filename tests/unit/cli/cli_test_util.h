@@ -28,9 +28,9 @@ inline std::string ReadWholeFile(const std::filesystem::path& path) {
 inline CommandResult RunShaderport(const std::string& args, const std::filesystem::path& directory,
                                    const std::string& environment = "NO_COLOR=1") {
   static int counter = 0;
-  const std::filesystem::path err_file = std::filesystem::temp_directory_path() /
-                                         ("shaderport-cli-" + std::to_string(::getpid()) + "-" +
-                                          std::to_string(counter++) + ".err");
+  const std::filesystem::path err_file =
+      std::filesystem::temp_directory_path() /
+      ("shaderport-cli-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ".err");
   const std::string command = "cd '" + directory.string() + "' && env " + environment + " '" +
                               SHADERPORT_BINARY + "' " + args + " 2>'" + err_file.string() + "'";
   CommandResult result;

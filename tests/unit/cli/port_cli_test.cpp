@@ -99,7 +99,8 @@ TEST(FixCli, InPlaceWriteFailureLeavesOriginalAndNoTemporaryFile) {
   Write(dir / "a.frag", "void main() { float x = 1; gl_FragColor = vec4(x); }\n");
   const std::string before = ReadWholeFile(dir / "a.frag");
   const CommandResult result =
-      RunShaderport("fix --in-place a.frag", dir, "NO_COLOR=1 sh -c 'trap \"\" XFSZ; ulimit -f 0; exec \"$0\" \"$@\"'");
+      RunShaderport("fix --in-place a.frag", dir,
+                    "NO_COLOR=1 sh -c 'trap \"\" XFSZ; ulimit -f 0; exec \"$0\" \"$@\"'");
   EXPECT_NE(result.exit_code, 0) << result.err;
   EXPECT_EQ(ReadWholeFile(dir / "a.frag"), before);
   size_t files = 0;

@@ -15,8 +15,9 @@ namespace fs = std::filesystem;
 
 class TempDir {
  public:
-  TempDir() : path_(fs::temp_directory_path() / ("shaderport-test-" + std::to_string(::getpid()) +
-                                                 "-" + std::to_string(counter_++))) {
+  TempDir()
+      : path_(fs::temp_directory_path() / ("shaderport-test-" + std::to_string(::getpid()) + "-" +
+                                           std::to_string(counter_++))) {
     fs::create_directories(path_);
   }
   ~TempDir() { fs::remove_all(path_); }
@@ -88,12 +89,12 @@ TEST(DetectKindTest, VersionMainImageAndExtensionDecide) {
   EXPECT_EQ(toy.dialect, Dialect::kShaderToy);
   EXPECT_EQ(toy.pass, ShaderToyPass::kImage);
   EXPECT_EQ(toy.stage, Stage::kFragment);
-  EXPECT_EQ(DetectKind("void mainCubemap(out vec4 c, in vec2 p, in vec3 o, in vec3 d){}", "c.glsl")
-                .pass,
-            ShaderToyPass::kCubemap);
-  EXPECT_EQ(DetectKind("attribute vec3 p; void main(){ gl_Position = vec4(p,1.); }", "a.glsl")
-                .stage,
-            Stage::kVertex);
+  EXPECT_EQ(
+      DetectKind("void mainCubemap(out vec4 c, in vec2 p, in vec3 o, in vec3 d){}", "c.glsl").pass,
+      ShaderToyPass::kCubemap);
+  EXPECT_EQ(
+      DetectKind("attribute vec3 p; void main(){ gl_Position = vec4(p,1.); }", "a.glsl").stage,
+      Stage::kVertex);
   EXPECT_EQ(DetectKind("void main(){}", "a.vs").stage, Stage::kVertex);
 }
 

@@ -271,9 +271,10 @@ TEST(ConformanceAgreementTest, VerdictsAndErrorLinesMatchGlslangValidator) {
       ++check_agreed;
     }
   }
-  std::printf("%zu stages: %zu agree with glslangValidator (%zu accepted), %zu crash it; "
-              "shaderport check agrees on %zu\n",
-              cases.size(), agreed, accepted, cli_crashes, check_agreed);
+  std::printf(
+      "%zu stages: %zu agree with glslangValidator (%zu accepted), %zu crash it; "
+      "shaderport check agrees on %zu\n",
+      cases.size(), agreed, accepted, cli_crashes, check_agreed);
   EXPECT_EQ(cli_crashes, 1u);  // macro-expansion-tricky.html#0 fragment
 }
 
