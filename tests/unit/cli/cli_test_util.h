@@ -5,9 +5,9 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
+
+#include "golden.h"
 
 namespace shaderport::testing {
 
@@ -16,13 +16,6 @@ struct CommandResult {
   std::string out;
   std::string err;
 };
-
-inline std::string ReadWholeFile(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
 
 // `args` is passed to the shell as is; `directory` is the working directory.
 inline CommandResult RunShaderport(const std::string& args, const std::filesystem::path& directory,
@@ -44,25 +37,6 @@ inline CommandResult RunShaderport(const std::string& args, const std::filesyste
   result.err = ReadWholeFile(err_file);
   std::filesystem::remove(err_file);
   return result;
-}
-
-// Compares `actual` with a golden file, or rewrites it when SHADERPORT_UPDATE_GOLDENS=1.
-inline ::testing::AssertionResult MatchesGolden(const std::string& actual,
-                                                const std::filesystem::path& golden) {
-  const char* update = std::getenv("SHADERPORT_UPDATE_GOLDENS");
-  if (update != nullptr && std::string(update) == "1") {
-    std::filesystem::create_directories(golden.parent_path());
-    std::ofstream(golden, std::ios::binary) << actual;
-    return ::testing::AssertionSuccess();
-  }
-  if (!std::filesystem::exists(golden)) {
-    return ::testing::AssertionFailure()
-           << golden << " is missing; run with SHADERPORT_UPDATE_GOLDENS=1 and review it";
-  }
-  const std::string expected = ReadWholeFile(golden);
-  if (expected == actual) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "output differs from " << golden << "\n--- actual ---\n"
-                                       << actual;
 }
 
 inline std::filesystem::path SourceDir() { return SHADERPORT_SOURCE_DIR; }

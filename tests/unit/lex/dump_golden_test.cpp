@@ -7,6 +7,7 @@
 #include <string>
 
 #include "glsl/lex/lexer.h"
+#include "golden.h"
 #include "pp_test_util.h"
 #include "test_corpora.h"
 
@@ -29,14 +30,8 @@ constexpr GoldenCase kCases[] = {
 };
 
 void CompareWithGolden(const std::string& file_name, const std::string& actual) {
-  const std::string path = std::string(SHADERPORT_SOURCE_DIR) + "/tests/golden/lex/" + file_name;
-  const char* update = std::getenv("SHADERPORT_UPDATE_GOLDENS");
-  if (update && std::string(update) == "1") {
-    std::ofstream(path, std::ios::binary) << actual;
-    return;
-  }
-  EXPECT_EQ(testing::ReadFile(path), actual)
-      << path << " differs; rerun with SHADERPORT_UPDATE_GOLDENS=1 if the change is intended";
+  EXPECT_TRUE(shaderport::testing::MatchesGolden(
+      actual, std::string(SHADERPORT_SOURCE_DIR) + "/tests/golden/lex/" + file_name));
 }
 
 TEST(DumpGolden, Tokens) {

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "golden.h"
 #include "render/png_io.h"
 
 namespace shaderport::render::testing {
@@ -16,10 +17,7 @@ inline std::string GoldenPath(const std::string& name) {
   return std::string(SHADERPORT_SOURCE_DIR) + "/tests/golden/render/" + name + ".png";
 }
 
-inline bool UpdatingGoldens() {
-  const char* update = std::getenv("SHADERPORT_UPDATE_GOLDENS");
-  return update != nullptr && std::string(update) == "1";
-}
+using shaderport::testing::UpdatingGoldens;
 
 inline ::testing::AssertionResult MatchesWithinTolerance(const ImageRgba8& actual,
                                                          const ImageRgba8& golden) {

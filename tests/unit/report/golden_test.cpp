@@ -1,5 +1,7 @@
 // Every output format on the sample report, compared with tests/golden/report/.
 // SHADERPORT_UPDATE_GOLDENS=1 rewrites the files instead of comparing.
+#include "golden.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -18,17 +20,7 @@ std::string GoldenPath(const std::string& name) {
 }
 
 void ExpectGolden(const std::string& name, const std::string& actual) {
-  const char* update = std::getenv("SHADERPORT_UPDATE_GOLDENS");
-  if (update != nullptr && std::string(update) == "1") {
-    std::ofstream(GoldenPath(name), std::ios::binary) << actual;
-    return;
-  }
-  std::ifstream in(GoldenPath(name), std::ios::binary);
-  ASSERT_TRUE(in) << "missing golden " << GoldenPath(name)
-                  << " (run with SHADERPORT_UPDATE_GOLDENS=1)";
-  std::stringstream expected;
-  expected << in.rdbuf();
-  EXPECT_EQ(expected.str(), actual) << "golden " << name << " differs";
+  EXPECT_TRUE(shaderport::testing::MatchesGolden(actual, GoldenPath(name)));
 }
 
 TEST(ReportGolden, Text) {

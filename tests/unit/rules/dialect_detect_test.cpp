@@ -16,7 +16,8 @@ std::string Detected(std::string_view text) {
 }
 
 std::string Corpus(const std::string& path) {
-  return shadertoy_test::ReadText(std::filesystem::path(SHADERPORT_SOURCE_DIR) / "corpus" / path);
+  return shaderport::testing::ReadWholeFile(std::filesystem::path(SHADERPORT_SOURCE_DIR) /
+                                            "corpus" / path);
 }
 
 TEST(DialectDetect, EntryPointMeansShaderToy) {

@@ -18,7 +18,8 @@ struct Row {
 
 // corpus/MANIFEST: tab-separated path, origin, dialect, stage, expect.
 std::vector<Row> Manifest() {
-  const std::string text = ReadText(fs::path(SHADERPORT_SOURCE_DIR) / "corpus" / "MANIFEST");
+  const std::string text =
+      shaderport::testing::ReadWholeFile(fs::path(SHADERPORT_SOURCE_DIR) / "corpus" / "MANIFEST");
   std::vector<Row> rows;
   std::istringstream lines(text);
   std::string line;
@@ -35,7 +36,8 @@ std::vector<Row> Manifest() {
 
 void ExpectPorts(const Row& row, const char* dialect_name) {
   SCOPED_TRACE(row.path);
-  const std::string text = ReadText(fs::path(SHADERPORT_SOURCE_DIR) / "corpus" / row.path);
+  const std::string text =
+      shaderport::testing::ReadWholeFile(fs::path(SHADERPORT_SOURCE_DIR) / "corpus" / row.path);
   const rule::PortSettings settings = HarnessSettings(rules::FindBuiltinDialect(dialect_name));
   ASSERT_NE(settings.harness, nullptr);
   const rule::FixEngineResult ported = Port(text, settings);

@@ -61,7 +61,7 @@ TEST(ShadertoyGolden, CasesExist) { EXPECT_GE(AllCases().size(), 15u); }
 TEST(ShadertoyGolden, EveryCase) {
   for (const Case& c : AllCases()) {
     SCOPED_TRACE(c.input.string());
-    const std::string text = ReadText(c.input);
+    const std::string text = shaderport::testing::ReadWholeFile(c.input);
     const rule::PortSettings settings = CaseSettings(text);
     ASSERT_NE(settings.harness, nullptr);
 
@@ -82,9 +82,12 @@ TEST(ShadertoyGolden, EveryCase) {
     const bool rule_found = std::any_of(found.begin(), found.end(), [&](const Diagnostic& d) {
       return d.rule_id.starts_with(c.rule_prefix);
     });
-    EXPECT_EQ(rule_found, !stem.starts_with("keep-")) << FormatDiagnostics(text, found);
-    CheckGolden(c.input.parent_path() / (stem + ".diag"), FormatDiagnostics(text, found));
-    CheckGolden(c.input.parent_path() / (stem + ".out.frag"), ported.text);
+    EXPECT_EQ(rule_found, !stem.starts_with("keep-"))
+        << shaderport::testing::FormatFindings(text, found);
+    EXPECT_TRUE(shaderport::testing::MatchesGolden(shaderport::testing::FormatFindings(text, found),
+                                                   c.input.parent_path() / (stem + ".diag")));
+    EXPECT_TRUE(shaderport::testing::MatchesGolden(ported.text,
+                                                   c.input.parent_path() / (stem + ".out.frag")));
     const auto compiled = CompileEssl300(ported.text);
     EXPECT_EQ(compiled.Accepted(true), !stem.starts_with("unfixable-"))
         << Messages(compiled) << ported.text;

@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "diag/diagnostic.h"
+#include "finding_format.h"
+#include "golden.h"
 #include "rule/fix_engine.h"
 #include "rule/rule.h"
 #include "rule/rule_context.h"
@@ -22,28 +24,6 @@
 #include "validate/glslang_validator.h"
 
 namespace shaderport::shadertoy_test {
-
-inline std::string ReadText(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
-
-inline bool UpdatingGoldens() {
-  const char* value = std::getenv("SHADERPORT_UPDATE_GOLDENS");
-  return value != nullptr && std::string(value) == "1";
-}
-
-inline void CheckGolden(const std::filesystem::path& path, const std::string& actual) {
-  if (UpdatingGoldens()) {
-    std::ofstream(path, std::ios::binary) << actual;
-    return;
-  }
-  ASSERT_TRUE(std::filesystem::exists(path))
-      << path << " is missing; run with SHADERPORT_UPDATE_GOLDENS=1";
-  EXPECT_EQ(ReadText(path), actual) << "golden " << path;
-}
 
 // ShaderToy code is GLSL ES 3.00 behind the site's header, whose HW_PERFORMANCE
 // the analysis must see until the port defines it itself.
@@ -100,31 +80,6 @@ inline validate::ValidationResult CompileEssl300(const std::string& text) {
 inline std::string Messages(const validate::ValidationResult& result) {
   std::string out;
   for (const Diagnostic& d : result.diagnostics) out += d.message + "\n";
-  return out;
-}
-
-inline std::string FormatDiagnostics(const std::string& text, const DiagnosticList& diagnostics) {
-  const SourceFile file(0, "input", text);
-  auto at = [&](uint32_t offset) {
-    const LineColumn lc = file.LocationOf(offset);
-    return std::to_string(lc.line) + ":" + std::to_string(lc.column);
-  };
-  std::string out;
-  for (const Diagnostic& d : diagnostics) {
-    out += at(d.range.begin) + ": " + SeverityName(d.severity) + " [" + d.rule_id + "] " +
-           d.message + "\n";
-    for (const DiagnosticNote& note : d.notes) {
-      out += "  note" + (note.range.Valid() ? " " + at(note.range.begin) : std::string()) + ": " +
-             note.message + "\n";
-    }
-    for (const FixIt& fix : d.fixes) {
-      std::string replacement;
-      for (char c : fix.replacement)
-        replacement += c == '\n' ? std::string("\\n") : std::string(1, c);
-      out +=
-          "  fix " + at(fix.range.begin) + "-" + at(fix.range.end) + ": \"" + replacement + "\"\n";
-    }
-  }
   return out;
 }
 

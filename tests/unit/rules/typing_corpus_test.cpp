@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "golden.h"
 #include "typing_test_support.h"
 
 namespace shaderport::typing_test {
@@ -16,16 +17,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string ReadFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
-
 TEST(TypingCorpus, StrictTypingCasesAreFixed) {
   const fs::path root = fs::path(SHADERPORT_SOURCE_DIR) / "corpus";
-  std::istringstream manifest(ReadFile(root / "MANIFEST"));
+  std::istringstream manifest(shaderport::testing::ReadWholeFile(root / "MANIFEST"));
   std::string line;
   int broken = 0;
   int fixed_count = 0;
@@ -38,7 +32,7 @@ TEST(TypingCorpus, StrictTypingCasesAreFixed) {
     const Kind kind = fields[2] == "shadertoy" ? Kind::kShaderToy : Kind::kWebGL;
     const rule::ShaderStage stage =
         fields[3] == "vertex" ? rule::ShaderStage::kVertex : rule::ShaderStage::kFragment;
-    const std::string text = ReadFile(root / fields[0]);
+    const std::string text = shaderport::testing::ReadWholeFile(root / fields[0]);
     SCOPED_TRACE(fields[0]);
     bool accepted = false;
     Compile(text, kind, stage, &accepted);

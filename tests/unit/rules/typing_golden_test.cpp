@@ -14,55 +14,18 @@
 #include <fstream>
 #include <sstream>
 
+#include "finding_format.h"
+#include "golden.h"
 #include "typing_test_support.h"
 
 namespace shaderport::typing_test {
 namespace {
 
+using shaderport::testing::FormatFindings;
+using shaderport::testing::MatchesGolden;
+using shaderport::testing::ReadWholeFile;
+
 namespace fs = std::filesystem;
-
-std::string ReadFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
-
-bool Updating() {
-  const char* value = std::getenv("SHADERPORT_UPDATE_GOLDENS");
-  return value != nullptr && std::string(value) == "1";
-}
-
-void CheckGolden(const fs::path& path, const std::string& actual) {
-  if (Updating()) {
-    std::ofstream(path, std::ios::binary) << actual;
-    return;
-  }
-  ASSERT_TRUE(fs::exists(path)) << path << " is missing; run with SHADERPORT_UPDATE_GOLDENS=1";
-  EXPECT_EQ(ReadFile(path), actual) << "golden " << path;
-}
-
-std::string Format(const std::string& text, const DiagnosticList& diagnostics) {
-  const SourceFile file(0, "input", text);
-  auto at = [&](uint32_t offset) {
-    const LineColumn lc = file.LocationOf(offset);
-    return std::to_string(lc.line) + ":" + std::to_string(lc.column);
-  };
-  std::string out;
-  for (const Diagnostic& d : diagnostics) {
-    out += at(d.range.begin) + ": " + SeverityName(d.severity) + " [" + d.rule_id + "] " +
-           d.message + "\n";
-    for (const DiagnosticNote& note : d.notes) out += "  note: " + note.message + "\n";
-    for (const FixIt& fix : d.fixes) {
-      std::string replacement;
-      for (char c : fix.replacement)
-        replacement += c == '\n' ? std::string("\\n") : std::string(1, c);
-      out += "  fix " + at(fix.range.begin) + "-" + at(fix.range.end) + ": \"" + replacement +
-             "\"" + (fix.safety == FixSafety::kSafe ? "" : " (suggestion)") + "\n";
-    }
-  }
-  return out;
-}
 
 struct Case {
   fs::path input;
@@ -109,19 +72,19 @@ TEST(TypingGolden, Cases) {
     const Kind kind = ext == ".glsl" ? Kind::kShaderToy : Kind::kWebGL;
     const rule::ShaderStage stage =
         ext == ".vert" ? rule::ShaderStage::kVertex : rule::ShaderStage::kFragment;
-    const std::string text = ReadFile(c.input);
+    const std::string text = ReadWholeFile(c.input);
     const std::string stem = c.input.stem().string();
 
     const DiagnosticList own = RunOneRule(*r, text, kind, stage);
     fs::path diag_path = c.input;
     diag_path.replace_extension(".diag");
-    CheckGolden(diag_path, Format(text, own));
+    EXPECT_TRUE(MatchesGolden(FormatFindings(text, own), diag_path));
     EXPECT_EQ(own.empty(), stem.starts_with("keep-"));
 
     const rule::FixEngineResult fixed = FixTyping(text, kind, stage);
     fs::path out_path = c.input;
     out_path.replace_extension(".out" + ext);
-    CheckGolden(out_path, fixed.text);
+    EXPECT_TRUE(MatchesGolden(fixed.text, out_path));
     EXPECT_TRUE(fixed.converged);
     if (stem.starts_with("unfixable-")) continue;
     bool accepted = false;

@@ -13,34 +13,19 @@
 #include <fstream>
 #include <sstream>
 
+#include "finding_format.h"
+#include "golden.h"
 #include "rules/registry.h"
 #include "webgl2_test_support.h"
 
 namespace shaderport::webgl2_test {
 namespace {
 
+using shaderport::testing::FormatFindings;
+using shaderport::testing::MatchesGolden;
+using shaderport::testing::ReadWholeFile;
+
 namespace fs = std::filesystem;
-
-std::string ReadFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
-
-bool Updating() {
-  const char* value = std::getenv("SHADERPORT_UPDATE_GOLDENS");
-  return value != nullptr && std::string(value) == "1";
-}
-
-void CheckGolden(const fs::path& path, const std::string& actual) {
-  if (Updating()) {
-    std::ofstream(path, std::ios::binary) << actual;
-    return;
-  }
-  ASSERT_TRUE(fs::exists(path)) << path << " is missing; run with SHADERPORT_UPDATE_GOLDENS=1";
-  EXPECT_EQ(ReadFile(path), actual) << "golden " << path;
-}
 
 struct Case {
   fs::path input;
@@ -84,7 +69,7 @@ TEST(Webgl2Golden, Cases) {
     SCOPED_TRACE(c.input.string());
     const rule::Rule* r = rules::FindRule(c.rule_id);
     ASSERT_NE(r, nullptr) << c.rule_id;
-    const std::string text = ReadFile(c.input);
+    const std::string text = ReadWholeFile(c.input);
     const std::string stem = c.input.stem().string();
     const std::string ext = c.input.extension().string();
     const auto stage = ext == ".vert" ? rule::ShaderStage::kVertex : rule::ShaderStage::kFragment;
@@ -92,24 +77,26 @@ TEST(Webgl2Golden, Cases) {
 
     const RuleRun run = RunOneRule(*r, text, stage, rule::PortMode::kPort, version);
     if (stem.starts_with("keep-")) {
-      EXPECT_TRUE(run.diagnostics.empty()) << FormatDiagnostics(text, run.diagnostics);
+      EXPECT_TRUE(run.diagnostics.empty())
+          << shaderport::testing::FormatFindings(text, run.diagnostics);
     } else {
       EXPECT_FALSE(run.diagnostics.empty());
     }
     for (const Diagnostic& d : run.diagnostics) EXPECT_EQ(d.rule_id, c.rule_id);
-    CheckGolden(c.input.parent_path() / (stem + ".diag"), FormatDiagnostics(text, run.diagnostics));
+    EXPECT_TRUE(MatchesGolden(shaderport::testing::FormatFindings(text, run.diagnostics),
+                              c.input.parent_path() / (stem + ".diag")));
 
     const rule::FixEngineResult ported = PortWithWebgl2Rules(text, stage, version);
     EXPECT_TRUE(ported.converged);
-    CheckGolden(c.input.parent_path() / (stem + ".out" + ext), ported.text);
+    EXPECT_TRUE(MatchesGolden(ported.text, c.input.parent_path() / (stem + ".out" + ext)));
     if (!stem.starts_with("unfixable-")) {
       EXPECT_TRUE(ported.text.starts_with("#version 300 es\n")) << ported.text;
       const auto compiled = Compile(ported.text, stage);
       EXPECT_TRUE(compiled.Accepted(false))
           << ported.text << "\n"
           << Messages(compiled) << "remaining:\n"
-          << FormatDiagnostics(text, ported.remaining) << "front end:\n"
-          << FormatDiagnostics(text, ported.front_end);
+          << shaderport::testing::FormatFindings(text, ported.remaining) << "front end:\n"
+          << shaderport::testing::FormatFindings(text, ported.front_end);
       const rule::FixEngineResult again = PortWithWebgl2Rules(ported.text, stage, 300);
       EXPECT_EQ(again.text, ported.text) << "porting twice changed the text";
     }

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "golden.h"
 #include "rules/registry.h"
 #include "webgl2_test_support.h"
 
@@ -19,13 +20,6 @@ const rule::Rule& Rule(std::string_view id) {
   const rule::Rule* r = rules::FindRule(id);
   EXPECT_NE(r, nullptr) << id;
   return *r;
-}
-
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
 }
 
 TEST(Webgl2Rules, RegisteredWithScopes) {
@@ -52,7 +46,8 @@ TEST(Webgl2Rules, ReservedNamesFixThreeHundredCode) {
       "void main() { c = vec4(sample); }\n";
   const RuleRun run =
       RunOneRule(Rule("webgl2/reserved-names"), text, ShaderStage::kFragment, PortMode::kFix, 300);
-  ASSERT_EQ(run.diagnostics.size(), 1u) << FormatDiagnostics(text, run.diagnostics);
+  ASSERT_EQ(run.diagnostics.size(), 1u)
+      << shaderport::testing::FormatFindings(text, run.diagnostics);
   EXPECT_EQ(run.diagnostics[0].severity, Severity::kError);
   EXPECT_EQ(run.fixed,
             "#version 300 es\nprecision mediump float;\nuniform float sample_;\nout vec4 c;\n"
@@ -117,7 +112,7 @@ TEST(Webgl2Rules, SsaoCorpusPortsAndValidates) {
                          "ssao.frag"};
   for (const char* name : files) {
     SCOPED_TRACE(name);
-    const std::string text = ReadFile(dir + name);
+    const std::string text = shaderport::testing::ReadWholeFile(dir + name);
     ASSERT_FALSE(text.empty());
     const ShaderStage stage =
         std::string(name).ends_with(".vert") ? ShaderStage::kVertex : ShaderStage::kFragment;
@@ -125,7 +120,8 @@ TEST(Webgl2Rules, SsaoCorpusPortsAndValidates) {
     const auto compiled = Compile(result.text, stage);
     EXPECT_TRUE(result.text.starts_with("#version 300 es\n")) << result.text;
     EXPECT_TRUE(compiled.Accepted(false))
-        << result.text << Messages(compiled) << FormatDiagnostics(text, result.remaining);
+        << result.text << Messages(compiled)
+        << shaderport::testing::FormatFindings(text, result.remaining);
     EXPECT_EQ(PortWithWebgl2Rules(result.text, stage, 300).text, result.text);
     ported_ok += compiled.Accepted(false) && result.text.starts_with("#version 300 es\n");
   }

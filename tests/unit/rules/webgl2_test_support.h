@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "diag/diagnostic.h"
+#include "finding_format.h"
 #include "rule/fix_engine.h"
 #include "rule/rule.h"
 #include "rule/rule_context.h"
@@ -56,31 +57,6 @@ inline RuleRun RunOneRule(const rule::Rule& r, const std::string& text, rule::Sh
   auto applied = ApplyEdits(text, edits);
   run.fixed = applied ? applied->text : text;
   return run;
-}
-
-inline std::string FormatDiagnostics(const std::string& text, const DiagnosticList& diagnostics) {
-  const SourceFile file(0, "input", text);
-  auto at = [&](uint32_t offset) {
-    const LineColumn lc = file.LocationOf(offset);
-    return std::to_string(lc.line) + ":" + std::to_string(lc.column);
-  };
-  std::string out;
-  for (const Diagnostic& d : diagnostics) {
-    out += at(d.range.begin) + ": " + SeverityName(d.severity) + " [" + d.rule_id + "] " +
-           d.message + "\n";
-    for (const DiagnosticNote& note : d.notes) {
-      out += "  note" + (note.range.Valid() ? " " + at(note.range.begin) : std::string()) + ": " +
-             note.message + "\n";
-    }
-    for (const FixIt& fix : d.fixes) {
-      std::string replacement;
-      for (char c : fix.replacement)
-        replacement += c == '\n' ? std::string("\\n") : std::string(1, c);
-      out += "  fix " + at(fix.range.begin) + "-" + at(fix.range.end) + ": \"" + replacement +
-             "\"" + (fix.safety == FixSafety::kSafe ? "" : " (suggestion)") + "\n";
-    }
-  }
-  return out;
 }
 
 inline std::vector<const rule::Rule*> Webgl2Rules() {

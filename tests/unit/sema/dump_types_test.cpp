@@ -7,17 +7,11 @@
 #include <fstream>
 #include <sstream>
 
+#include "golden.h"
 #include "sema_test_util.h"
 
 namespace shaderport::glsl {
 namespace {
-
-std::string ReadFile(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // Types, then one line per mismatch, so the golden also pins TypeMismatch.
 std::string Render(const testing::Analyzed& a) {
@@ -32,18 +26,13 @@ std::string Render(const testing::Analyzed& a) {
 TEST(DumpTypesTest, Goldens) {
   const std::filesystem::path dir =
       std::filesystem::path(SHADERPORT_SOURCE_DIR) / "tests" / "golden" / "sema";
-  const char* update = std::getenv("SHADERPORT_UPDATE_GOLDENS");
   int cases = 0;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     if (entry.path().extension() != ".frag") continue;
     ++cases;
-    auto a = testing::AnalyzeText(ReadFile(entry.path()));
+    auto a = testing::AnalyzeText(shaderport::testing::ReadWholeFile(entry.path()));
     std::string actual = Render(*a);
-    std::filesystem::path expected_path = entry.path().string() + ".types";
-    if (update != nullptr && std::string(update) == "1") {
-      std::ofstream(expected_path, std::ios::binary) << actual;
-    }
-    EXPECT_EQ(actual, ReadFile(expected_path)) << entry.path();
+    EXPECT_TRUE(shaderport::testing::MatchesGolden(actual, entry.path().string() + ".types"));
   }
   EXPECT_GE(cases, 1);
 }

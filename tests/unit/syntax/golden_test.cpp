@@ -1,5 +1,7 @@
 // Golden DumpAst outputs: tests/golden/syntax/<name>.glsl -> <name>.ast.
 // Regenerate with SHADERPORT_UPDATE_GOLDENS=1; never edit the .ast files by hand.
+#include "golden.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -11,13 +13,6 @@
 
 namespace shaderport::glsl::testing {
 namespace {
-
-std::string ReadFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 // The dump followed by the diagnostics, one a line.
 std::string Render(const Parsed& parsed) {
@@ -34,15 +29,10 @@ class GoldenTest : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(GoldenTest, DumpMatches) {
   std::string base = std::string(SHADERPORT_SOURCE_DIR) + "/tests/golden/syntax/" + GetParam();
-  std::string input = ReadFile(base + ".glsl");
+  std::string input = shaderport::testing::ReadWholeFile(base + ".glsl");
   ASSERT_FALSE(input.empty()) << base;
   std::string actual = Render(*ParseText(input, 100));
-  const char* update = std::getenv("SHADERPORT_UPDATE_GOLDENS");
-  if (update != nullptr && std::string(update) == "1") {
-    std::ofstream(base + ".ast", std::ios::binary) << actual;
-    GTEST_SKIP() << "updated " << base << ".ast";
-  }
-  EXPECT_EQ(actual, ReadFile(base + ".ast")) << "regenerate with SHADERPORT_UPDATE_GOLDENS=1";
+  EXPECT_TRUE(shaderport::testing::MatchesGolden(actual, base + ".ast"));
 }
 
 INSTANTIATE_TEST_SUITE_P(Syntax, GoldenTest,

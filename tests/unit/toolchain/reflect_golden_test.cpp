@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "emit_test_util.h"
+#include "golden.h"
 #include "json_schema_subset.h"
 
 namespace shaderport::toolchain {
@@ -45,14 +46,7 @@ void CheckGolden(const std::string& golden_name, const std::string& json) {
       testing::SchemaErrors(Schema(), nlohmann::json::parse(json));
   EXPECT_TRUE(errors.empty()) << errors.front();
   const fs::path golden = kGolden / (golden_name + ".json");
-  const char* update = std::getenv("SHADERPORT_UPDATE_GOLDENS");
-  if (update != nullptr && std::string(update) == "1") {
-    fs::create_directories(kGolden);
-    WriteText(golden, json);
-    return;
-  }
-  ASSERT_TRUE(fs::exists(golden)) << golden << " missing; run with SHADERPORT_UPDATE_GOLDENS=1";
-  EXPECT_EQ(json, ReadText(golden));
+  EXPECT_TRUE(shaderport::testing::MatchesGolden(json, golden));
 }
 
 TEST(ReflectGolden, HandWrittenShaders) {
