@@ -26,15 +26,6 @@ bool IsLimitBreach(std::string_view rule_id) {
   return std::find(kLimitRules.begin(), kLimitRules.end(), rule_id) != kLimitRules.end();
 }
 
-Diagnostic WholeFileError(const SourceFile& file, std::string rule_id, std::string message) {
-  Diagnostic diagnostic;
-  diagnostic.severity = Severity::kError;
-  diagnostic.rule_id = std::move(rule_id);
-  diagnostic.range = {file.Id(), 0, 0};
-  diagnostic.message = std::move(message);
-  return diagnostic;
-}
-
 DetectedKind ResolveKind(const FileJob& job, const CheckOptions& options, const SourceFile& file) {
   DetectedKind kind = DetectKind(file.Text(), job.path);
   if (job.config != nullptr) {
@@ -131,8 +122,9 @@ FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceMana
   InputText input = ReadInputFile(job.path);
   if (!input.text) {
     report.file = &sources.Add(job.path.string(), "");
-    report.diagnostics.push_back(
-        WholeFileError(*report.file, std::move(input.rule_id), std::move(input.message)));
+    report.diagnostics.push_back(MakeDiagnostic(Severity::kError, std::move(input.rule_id),
+                                                {report.file->Id(), 0, 0},
+                                                std::move(input.message)));
     return report;
   }
   const SourceFile& file = sources.Add(job.path.string(), std::move(*input.text));

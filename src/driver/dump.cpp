@@ -10,11 +10,8 @@ DumpResult DumpFile(const std::filesystem::path& path, DumpKind kind, SourceMana
   InputText input = ReadInputFile(path);
   if (!input.text) {
     result.diagnostics.file = &sources.Add(path.string(), "");
-    Diagnostic diagnostic;
-    diagnostic.rule_id = input.rule_id;
-    diagnostic.message = input.message;
-    diagnostic.range = {result.diagnostics.file->Id(), 0, 0};
-    result.diagnostics.diagnostics.push_back(std::move(diagnostic));
+    result.diagnostics.diagnostics.push_back(MakeDiagnostic(
+        Severity::kError, input.rule_id, {result.diagnostics.file->Id(), 0, 0}, input.message));
     return result;
   }
   const SourceFile& file = sources.Add(path.string(), std::move(*input.text));

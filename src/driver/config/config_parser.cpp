@@ -67,12 +67,8 @@ class ConfigParser {
 
   void Report(Severity severity, std::string rule, const toml::source_region& where,
               std::string message) {
-    Diagnostic d;
-    d.severity = severity;
-    d.rule_id = std::move(rule);
-    d.range = RangeOf(where);
-    d.message = std::move(message);
-    result_.diagnostics.push_back(std::move(d));
+    result_.diagnostics.push_back(
+        MakeDiagnostic(severity, std::move(rule), RangeOf(where), std::move(message)));
   }
 
   void UnknownKey(const toml::key& key, std::string_view what) {

@@ -8,18 +8,7 @@
 #include "driver/render_check/varying_feeder.h"
 
 namespace shaderport::driver {
-namespace {
-
-// Line starts of `text`, so a 1-based Mesa line becomes a byte range.
-std::vector<uint32_t> LineStarts(std::string_view text) {
-  std::vector<uint32_t> starts = {0};
-  for (size_t i = 0; i < text.size(); ++i) {
-    if (text[i] == '\n') starts.push_back(static_cast<uint32_t>(i + 1));
-  }
-  return starts;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 validate::ChannelTypes ChannelTypesOf(std::string_view text, validate::ChannelTypes fallback) {
   validate::ChannelTypes types = fallback;
@@ -62,25 +51,26 @@ RenderFileResult RenderPortResult(const PortResult& result, const RenderFileOpti
     shader.vertex_text = FeederVertexShader(result.text);
     shader.fullscreen_vertex = true;
   }
+  // Mesa's lines are lines of the ported text; its source map leads back to the user's file.
   struct LineMap {
-    std::vector<uint32_t> starts;
+    SourceFile ported;
     SourceMap map;
     FileId file;
-    uint32_t text_size;
   };
-  auto lines =
-      std::make_shared<LineMap>(LineMap{LineStarts(result.text), result.map, result.file->Id(),
-                                        static_cast<uint32_t>(result.text.size())});
+  auto lines = std::make_shared<LineMap>(
+      LineMap{SourceFile(kNoFile, "<ported>", result.text), result.map, result.file->Id()});
   const render::ShaderStage user_stage = result.output_stage == Stage::kVertex
                                              ? render::ShaderStage::kVertex
                                              : render::ShaderStage::kFragment;
   shader.map_line = [lines, user_stage](render::ShaderStage stage,
                                         uint32_t line) -> std::optional<SourceRange> {
     if (stage != user_stage) return std::nullopt;  // the generated vertex shader
-    if (line == 0 || line > lines->starts.size()) return std::nullopt;
-    const uint32_t begin = lines->starts[line - 1];
-    const uint32_t end = line < lines->starts.size() ? lines->starts[line] - 1 : lines->text_size;
-    if (lines->map.OutputSize() != lines->text_size) return SourceRange{lines->file, 0, 0};
+    if (line == 0 || line > lines->ported.LineCount()) return std::nullopt;
+    const uint32_t begin = lines->ported.LineStart(line);
+    const auto end = static_cast<uint32_t>(begin + lines->ported.LineText(line).size());
+    if (lines->map.OutputSize() != lines->ported.Text().size()) {
+      return SourceRange{lines->file, 0, 0};
+    }
     const auto [first, last] = lines->map.ToOriginalRange(begin, end);
     return SourceRange{lines->file, first, last};
   };

@@ -27,16 +27,11 @@ size_t LinkPortedPairs(std::vector<PortResult>& results) {
         validate::LinkStages(pair.vertex->text, pair.fragment->text);
     ++linked;
     if (link.linked) continue;
-    Diagnostic diagnostic;
-    diagnostic.severity = Severity::kError;
-    diagnostic.rule_id = "port/stages-do-not-link";
-    diagnostic.range = {pair.fragment->file->Id(), 0, 0};
-    diagnostic.message =
-        "the ported shader does not link with '" + pair.vertex->file->Name() + "': " + link.log;
-    while (!diagnostic.message.empty() && (diagnostic.message.back() == '\n')) {
-      diagnostic.message.pop_back();
-    }
-    pair.fragment->diagnostics.push_back(std::move(diagnostic));
+    std::string log = link.log;
+    while (!log.empty() && log.back() == '\n') log.pop_back();
+    pair.fragment->diagnostics.push_back(MakeDiagnostic(
+        Severity::kError, "port/stages-do-not-link", {pair.fragment->file->Id(), 0, 0},
+        "the ported shader does not link with '" + pair.vertex->file->Name() + "': " + log));
   }
   return linked;
 }

@@ -11,12 +11,9 @@ namespace shaderport::driver {
 namespace {
 
 Diagnostic Note(SourceRange range, std::string message, Severity severity = Severity::kNote) {
-  Diagnostic d;
-  d.severity = severity;
-  d.rule_id = severity == Severity::kNote ? "render/not-rendered" : "input/unreadable";
-  d.range = range;
-  d.message = std::move(message);
-  return d;
+  return MakeDiagnostic(severity,
+                        severity == Severity::kNote ? "render/not-rendered" : "input/unreadable",
+                        range, std::move(message));
 }
 
 // "Buffer C" -> 2; -1 otherwise.
