@@ -10,7 +10,7 @@ packages=(
   glslang-dev glslang-tools spirv-tools
   libspirv-cross-c-shared-dev spirv-cross
   libosmesa6-dev libpng-dev
-  libegl1 libegl-mesa0
+  libegl1 libegl-mesa0 libgl1-mesa-dri
   libgtest-dev libgmock-dev googletest libbenchmark-dev
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libfmt-dev
 )
