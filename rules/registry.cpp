@@ -21,6 +21,19 @@ std::vector<const rule::Rule*> BuildRegistry() {
       &TypingIntLiteralForFloatRule(),  // typing/int-literal-for-float
       &TypingNonConstantGlobalInitializerRule(),  // typing/non-constant-global-initializer
       &TypingScalarToVectorRule(),  // typing/scalar-to-vector
+      &WebglBlockLayoutRule(),  // webgl/block-layout
+      &WebglExpressionComplexityRule(),  // webgl/expression-complexity
+      &WebglForbiddenOperatorRule(),  // webgl/forbidden-operator
+      &WebglFragDataAndColorRule(),  // webgl/frag-data-and-color
+      &WebglIndexExpressionRule(),  // webgl/index-expression
+      &WebglInvariantRule(),  // webgl/invariant
+      &WebglLoopFormRule(),  // webgl/loop-form
+      &WebglLoopIndexWriteRule(),  // webgl/loop-index-write
+      &WebglRecursionRule(),  // webgl/recursion
+      &WebglReservedNameRule(),  // webgl/reserved-name
+      &WebglStructInSignatureRule(),  // webgl/struct-in-signature
+      &WebglStructNestingRule(),  // webgl/struct-nesting
+      &WebglVersionRule(),  // webgl/version
       &Webgl2ExtensionsRule(),  // webgl2/extensions
       &Webgl2FragOutputsRule(),  // webgl2/frag-outputs
       &Webgl2InterfaceRule(),  // webgl2/interface
@@ -49,9 +62,17 @@ std::span<const rule::Rule* const> AllRules() {
 std::vector<const rule::Rule*> RulesForMode(rule::PortMode mode) {
   std::vector<const rule::Rule*> selected;
   for (const rule::Rule* r : AllRules()) {
-    if (mode == rule::PortMode::kPort || r->Info().scope == rule::RuleScope::kAlways) {
-      selected.push_back(r);
-    }
+    const rule::RuleScope scope = r->Info().scope;
+    if (scope == rule::RuleScope::kCheck) continue;
+    if (mode == rule::PortMode::kPort || scope == rule::RuleScope::kAlways) selected.push_back(r);
+  }
+  return selected;
+}
+
+std::vector<const rule::Rule*> CheckRules() {
+  std::vector<const rule::Rule*> selected;
+  for (const rule::Rule* r : AllRules()) {
+    if (r->Info().scope == rule::RuleScope::kCheck) selected.push_back(r);
   }
   return selected;
 }

@@ -13,8 +13,11 @@ namespace shaderport::rules {
 // All rules, sorted by id. Built once; the rules are immutable singletons.
 std::span<const rule::Rule* const> AllRules();
 
-// The rules that run in `mode`: kPort runs every rule, kFix only kAlways ones.
+// The rules that run in `mode`: kPort runs every porting rule, kFix only kAlways ones.
 std::vector<const rule::Rule*> RulesForMode(rule::PortMode mode);
+
+// The rules `shaderport check` runs beside glslang (scope kCheck).
+std::vector<const rule::Rule*> CheckRules();
 
 // The rule with this id, or nullptr.
 const rule::Rule* FindRule(std::string_view id);

@@ -21,6 +21,7 @@ constexpr auto kUnsorted = std::to_array<RuleDescription>({
 #include "diag/catalog/spirv.def"
 #include "diag/catalog/syntax.def"
 #include "diag/catalog/typing.def"
+#include "diag/catalog/webgl.def"
 #include "diag/catalog/webgl2.def"
 #undef RULE
 });

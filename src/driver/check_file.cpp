@@ -12,6 +12,7 @@
 #include "driver/render_check/render_file.h"
 #include "driver/suppress/suppressions.h"
 #include "driver/validate_kinds.h"
+#include "driver/webgl_checks.h"
 #include "validate/glslang_validator.h"
 #include "validate/shadertoy_contract.h"
 
@@ -36,6 +37,20 @@ DetectedKind ResolveKind(const FileJob& job, const CheckOptions& options, const 
   if (options.dialect) kind.dialect = *options.dialect;
   if (options.stage) kind.stage = *options.stage;
   return kind;
+}
+
+// --target, then the config's [[files]] target, then the default for the code.
+Target ResolveTarget(const FileJob& job, const CheckOptions& options, const DetectedKind& kind,
+                     const SourceFile& file) {
+  if (options.target) return *options.target;
+  if (job.config != nullptr) {
+    const FileSettings settings = SettingsFor(*job.config, std::filesystem::absolute(job.path));
+    if (settings.target) return *settings.target;
+  }
+  if (kind.dialect == Dialect::kShaderToy) return Target::kWebGL2;
+  // By the code's own #version, whatever --dialect says about how it is written.
+  const Dialect written = DetectKind(file.Text(), job.path).dialect;
+  return written == Dialect::kWebGL1 ? Target::kWebGL1 : Target::kWebGL2;
 }
 
 validate::ValidationRequest ComposeRequest(const FileJob& job, const CheckOptions& options,
@@ -135,9 +150,18 @@ FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceMana
 
   const SourceFile* common = kind.dialect == Dialect::kShaderToy ? job.common : nullptr;
   // Our own front end runs first: it enforces the limits (glslang has none
-  // against, e.g., 100,000 nested parentheses), and its tokens give the
-  // suppression comments and inactive regions.
-  const FrontEndResult front = RunFrontEnd(file, common, kind, sources);
+  // against, e.g., 100,000 nested parentheses), its tokens give the suppression
+  // comments and inactive regions, and its tree feeds the WebGL rules.
+  WebglCheckSettings webgl;
+  webgl.stage = kind.stage;
+  webgl.shadertoy = kind.dialect == Dialect::kShaderToy;
+  webgl.target = ResolveTarget(job, options, kind, file);
+  FrontEndOptions front_options;
+  front_options.analyze = true;
+  front_options.channels = options.channels;
+  // WebGL 2 contexts allow 1024-character names in GLSL ES 1.00 code too.
+  front_options.max_identifier_length = webgl.target == Target::kWebGL2 ? 1024 : 256;
+  const FrontEndResult front = RunFrontEnd(file, common, kind, sources, front_options);
   for (const Diagnostic& diagnostic : front.diagnostics) {
     if (IsLimitBreach(diagnostic.rule_id)) report.diagnostics.push_back(diagnostic);
   }
@@ -145,7 +169,9 @@ FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceMana
 
   validate::ValidationResult result =
       validate::ValidateWithGlslang(ComposeRequest(job, options, kind, file, sources));
-  report.diagnostics = std::move(result.diagnostics);
+  AlignGlslangWithBrowser(file, front, webgl, result.diagnostics);
+  report.diagnostics = RunWebglChecks(file, front, webgl);
+  for (Diagnostic& diagnostic : result.diagnostics) report.diagnostics.push_back(std::move(diagnostic));
   if (common != nullptr && job.common_checked_separately) {
     // Common is an input of its own: its findings are reported once, there.
     std::erase_if(report.diagnostics,

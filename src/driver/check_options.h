@@ -15,6 +15,7 @@ struct CheckOptions {
   std::vector<std::filesystem::path> paths;
   std::optional<Dialect> dialect;               // --dialect: overrides detection and config
   std::optional<Stage> stage;                   // --stage
+  std::optional<Target> target;                 // --target: the WebGL context (default: by version)
   std::optional<std::filesystem::path> common;  // --common: ShaderToy Common for every pass
   validate::ChannelTypes channels{};            // --channel N=2d|cube|3d (default all 2D)
   std::optional<std::filesystem::path> config;  // --config: instead of searching upward

@@ -9,6 +9,8 @@ namespace shaderport::driver {
 
 enum class Dialect { kShaderToy, kWebGL1, kWebGL2 };
 enum class Stage { kVertex, kFragment };
+// The WebGL context the shader runs in (`--target`), apart from its language version.
+enum class Target { kWebGL1, kWebGL2 };
 // The ShaderToy tab a file stands for; it decides the site's generated main().
 enum class ShaderToyPass { kImage, kBuffer, kCubemap, kSound, kCommon };
 
@@ -16,6 +18,8 @@ std::string_view DialectName(Dialect dialect);  // "shadertoy", "webgl1", "webgl
 std::string_view StageName(Stage stage);        // "vertex", "fragment"
 std::optional<Dialect> ParseDialect(std::string_view name);
 std::optional<Stage> ParseStage(std::string_view name);
+std::string_view TargetName(Target target);  // "webgl1", "webgl2"
+std::optional<Target> ParseTarget(std::string_view name);
 
 struct DetectedKind {
   Dialect dialect = Dialect::kWebGL1;

@@ -6,8 +6,10 @@ namespace shaderport::driver {
 namespace {
 
 glsl::ParseResult ParseUnit(const std::vector<const SourceFile*>& files, int forced_version,
-                            bool shadertoy, glsl::PreprocessResult& preprocessed) {
+                            bool shadertoy, glsl::PreprocessResult& preprocessed,
+                            uint32_t max_identifier_length = 0) {
   glsl::PreprocessOptions options;
+  options.max_identifier_length = max_identifier_length;
   // The site defines HW_PERFORMANCE for every pass.
   if (shadertoy) options.predefined = {"HW_PERFORMANCE=1"};
   preprocessed = glsl::Preprocess(files, options);
@@ -32,7 +34,8 @@ FrontEndResult RunFrontEnd(const SourceFile& file, const SourceFile* common,
   if (shadertoy && common != nullptr) files.push_back(common);
   files.push_back(&file);
   // ShaderToy code is compiled by the site as GLSL ES 3.00 behind its header.
-  result.parsed = ParseUnit(files, shadertoy ? glsl::kEssl300 : 0, shadertoy, result.preprocessed);
+  result.parsed = ParseUnit(files, shadertoy ? glsl::kEssl300 : 0, shadertoy, result.preprocessed,
+                            options.max_identifier_length);
   Append(result.diagnostics, result.preprocessed.diagnostics);
   Append(result.diagnostics, result.parsed.diagnostics);
 

@@ -30,6 +30,8 @@ struct FrontEndResult {
 struct FrontEndOptions {
   bool analyze = false;
   validate::ChannelTypes channels{};
+  // Longest identifier; 0 picks the limit from the #version (see PreprocessOptions).
+  uint32_t max_identifier_length = 0;
 };
 
 // `sources` receives the generated ShaderToy header when the dialect needs it.

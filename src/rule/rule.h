@@ -18,7 +18,9 @@ namespace shaderport::rule {
 //    outputs, textures, the ShaderToy wrapper, ...
 //  - kAlways: also when fixing a file in its own dialect (`shaderport fix`):
 //    strict typing, reserved names in ES 3.00 code, ...
-enum class RuleScope { kPort, kAlways };
+//  - kCheck: only in `shaderport check`: what the WebGL target's compiler (the
+//    browser) rejects or warns about beyond glslang. Such rules never fix.
+enum class RuleScope { kPort, kAlways, kCheck };
 
 struct RuleInfo {
   std::string_view id;       // "category/kebab-name", also listed in src/diag/catalog/*.def

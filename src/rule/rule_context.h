@@ -24,6 +24,10 @@ enum class PortMode {
 
 enum class ShaderStage { kVertex, kFragment };
 
+// The WebGL context a shader will run in, apart from the GLSL ES version its
+// #version line picks: a WebGL2 context also compiles GLSL ES 1.00 code.
+enum class WebglTarget { kWebGL1, kWebGL2 };
+
 // Sampler kind chosen for a ShaderToy channel; kAuto lets the ShaderToy rule
 // infer it from how the code samples the channel.
 enum class ChannelKind { kAuto, k2D, kCube, k3D };
@@ -35,6 +39,9 @@ struct PortSettings {
   // (plain WebGL1/WebGL2 code).
   const HarnessDialect* harness = nullptr;
   int source_version = 100;  // the code's own GLSL ES version: 100 or 300
+  WebglTarget target = WebglTarget::kWebGL2;
+  // The #version line as written (0 when absent), for rules about the line itself.
+  int written_version = 0;
   ChannelKind channels[4] = {ChannelKind::kAuto, ChannelKind::kAuto, ChannelKind::kAuto,
                              ChannelKind::kAuto};
 };

@@ -20,6 +20,7 @@ struct CheckArgs {
   std::string fail_on;
   std::string dialect;
   std::string stage;
+  std::string target;
   std::string common;
   std::vector<std::string> channels;
   std::string config;
@@ -72,6 +73,10 @@ int RunCheckCommand(const CheckArgs& args) {
   if (!args.stage.empty()) {
     options.stage = driver::ParseStage(args.stage);
     if (!options.stage) return Usage("unknown --stage '" + args.stage + "'");
+  }
+  if (!args.target.empty()) {
+    options.target = driver::ParseTarget(args.target);
+    if (!options.target) return Usage("unknown --target '" + args.target + "'");
   }
   if (!args.fail_on.empty()) {
     static const std::map<std::string, Severity> kLevels = {
@@ -128,6 +133,9 @@ void AddCheckCommand(CLI::App& app, int& exit_code) {
   command->add_option("--dialect", args->dialect,
                       "shadertoy | webgl1 | webgl2 (default: detected per file)");
   command->add_option("--stage", args->stage, "vertex | fragment (default: from the extension)");
+  command->add_option("--target", args->target,
+                      "webgl1 | webgl2: the WebGL context the shader runs in (default: webgl2 "
+                      "for GLSL ES 3.00 and ShaderToy code, webgl1 for GLSL ES 1.00)");
   command->add_option("--common", args->common,
                       "ShaderToy Common code compiled before every ShaderToy pass "
                       "(default: common.glsl beside the pass)");

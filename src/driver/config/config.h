@@ -12,6 +12,7 @@
 //   glob = "toy/**"
 //   dialect = "shadertoy"                     # shadertoy | webgl1 | webgl2
 //   stage = "fragment"                        # vertex | fragment
+//   target = "webgl1"                         # webgl1 | webgl2
 #pragma once
 
 #include <filesystem>
@@ -40,6 +41,7 @@ struct FileOverride {
   std::string glob;
   std::optional<Dialect> dialect;
   std::optional<Stage> stage;
+  std::optional<Target> target;
 };
 
 struct Config {
@@ -83,6 +85,7 @@ bool IsIncluded(const Config& config, const std::filesystem::path& file);
 struct FileSettings {
   std::optional<Dialect> dialect;
   std::optional<Stage> stage;
+  std::optional<Target> target;
 };
 // Every [[files]] entry whose glob matches, later entries overriding earlier ones.
 FileSettings SettingsFor(const Config& config, const std::filesystem::path& file);

@@ -176,7 +176,8 @@ class ConfigParser {
     FileOverride entry;
     bool ok = true;
     for (auto&& [name, value] : table) {
-      const std::optional<std::string> text = name == "glob" || name == "dialect" || name == "stage"
+      const std::optional<std::string> text = name == "glob" || name == "dialect" || name == "stage" ||
+                                                          name == "target"
                                                   ? ExpectString(name, value)
                                                   : std::nullopt;
       if (name == "glob") {
@@ -198,8 +199,13 @@ class ConfigParser {
           BadValue(value, "'" + *text + "' is not a stage; use vertex or fragment");
         }
         ok = ok && entry.stage.has_value();
+      } else if (name == "target") {
+        if (text && !(entry.target = ParseTarget(*text))) {
+          BadValue(value, "'" + *text + "' is not a target; use webgl1 or webgl2");
+        }
+        ok = ok && entry.target.has_value();
       } else {
-        UnknownKey(name, "[[files]]; expected glob, dialect or stage");
+        UnknownKey(name, "[[files]]; expected glob, dialect, stage or target");
       }
     }
     if (ok && entry.glob.empty()) {

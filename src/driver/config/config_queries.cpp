@@ -98,6 +98,7 @@ FileSettings SettingsFor(const Config& config, const std::filesystem::path& file
     if (!GlobMatches(entry.glob, *path)) continue;
     if (entry.dialect) settings.dialect = entry.dialect;
     if (entry.stage) settings.stage = entry.stage;
+    if (entry.target) settings.target = entry.target;
   }
   return settings;
 }

@@ -1,0 +1,78 @@
+// webgl/forbidden-operator: operators WebGL disallows on some operand types.
+// - `?:` on arrays or structs: GLSL ES 1.00 (sections 5.2, 5.7) has no such
+//   operator, and WebGL 2 (spec section 5.26) keeps the ban for GLSL ES 3.00;
+//   WebGL 2 also forbids `?:` on void.
+// - `,` with a void, array or struct-containing-array operand (WebGL 2 section 5.26).
+// glslang follows plain GLSL ES 3.00 and accepts both.
+//
+//   S s = b ? s1 : s2;          // error: ternary on a struct
+//   float a[2] = (x, arr);      // error in WebGL 2: sequence on an array
+#include <string>
+
+#include "glsl/syntax/visit.h"
+#include "rules/all_rules.h"
+#include "rules/webgl/webgl_support.h"
+
+namespace shaderport::rules {
+namespace {
+
+constexpr std::string_view kId = "webgl/forbidden-operator";
+
+bool NotInSequence(const glsl::SemanticModel& model, const glsl::Type& type) {
+  return type.IsArray() || type.IsVoid() ||
+         (type.base == glsl::BaseType::kStruct && webgl::StructContainsArray(model, type));
+}
+
+class ForbiddenOperatorRule final : public rule::Rule {
+ public:
+  const rule::RuleInfo& Info() const override {
+    static const rule::RuleInfo info{
+        kId, "`?:` on arrays, structs or void, or `,` on void, arrays or structs with arrays",
+        "S s = b ? s1 : s2;", "", rule::RuleScope::kCheck};
+    return info;
+  }
+
+  void Run(rule::RuleContext& context) const override {
+    const glsl::SemanticModel& model = context.Model();
+    const bool strict_ternary = webgl::IsEssl100(context) || webgl::InWebgl2(context);
+    glsl::VisitPreorder(context.Tree(), [&](const glsl::Node& node, uint32_t) {
+      if (const auto* conditional = node.As<glsl::ConditionalExpr>()) {
+        if (conditional->if_true == nullptr) return true;
+        const glsl::Type& type = model.TypeOf(conditional->if_true->id);
+        const char* what = nullptr;
+        if (strict_ternary && type.IsArray()) what = "arrays";
+        if (strict_ternary && type.base == glsl::BaseType::kStruct && !type.IsArray()) {
+          what = "structs";
+        }
+        if (webgl::InWebgl2(context) && type.IsVoid()) what = "void";
+        if (what != nullptr) {
+          webgl::ReportError(context, kId, conditional->range,
+                             std::string("the ternary operator '?:' is not allowed on ") + what +
+                                 " in WebGL; use an if statement");
+        }
+        return true;
+      }
+      const auto* binary = node.As<glsl::BinaryExpr>();
+      if (binary == nullptr || binary->op != glsl::BinaryOp::kComma || !webgl::InWebgl2(context)) {
+        return true;
+      }
+      for (const glsl::Expr* operand : {binary->lhs, binary->rhs}) {
+        if (operand == nullptr || !NotInSequence(model, model.TypeOf(operand->id))) continue;
+        webgl::ReportError(context, kId, binary->op_range,
+                           "the sequence operator ',' is not allowed on void, arrays or structs "
+                           "containing arrays in WebGL 2");
+        break;
+      }
+      return true;
+    });
+  }
+};
+
+}  // namespace
+
+const rule::Rule& WebglForbiddenOperatorRule() {
+  static const ForbiddenOperatorRule rule;
+  return rule;
+}
+
+}  // namespace shaderport::rules

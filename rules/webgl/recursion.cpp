@@ -1,0 +1,114 @@
+// webgl/recursion: a function that calls itself, directly or through others.
+// GLSL ES forbids static recursion (1.00 section 6.1, 3.00 section 6.1); glslang
+// only notices it when linking a whole program, browsers reject the shader.
+//
+//   float a(float x);
+//   float b(float x) { return a(x); }
+//   float a(float x) { return b(x); }   // error: a -> b -> a
+#include <map>
+#include <string>
+#include <vector>
+
+#include "glsl/syntax/visit.h"
+#include "rules/all_rules.h"
+#include "rules/webgl/webgl_support.h"
+
+namespace shaderport::rules {
+namespace {
+
+constexpr std::string_view kId = "webgl/recursion";
+
+struct Call {
+  uint32_t callee = glsl::kNoSymbol;
+  const glsl::CallExpr* site = nullptr;
+};
+
+using CallGraph = std::map<uint32_t, std::vector<Call>>;
+
+CallGraph BuildCallGraph(const rule::RuleContext& context) {
+  CallGraph graph;
+  const glsl::SemanticModel& model = context.Model();
+  for (const glsl::Node* declaration : context.Tree().Root()->declarations) {
+    const auto* function = declaration->As<glsl::FunctionDeclaration>();
+    if (function == nullptr || function->body == nullptr) continue;
+    const uint32_t caller = model.SymbolAt(function->id);
+    if (caller == glsl::kNoSymbol) continue;
+    std::vector<Call>& calls = graph[caller];
+    glsl::VisitPreorder(*function->body, [&](const glsl::Node& node, uint32_t) {
+      const auto* call = node.As<glsl::CallExpr>();
+      if (call == nullptr || call->call_kind != glsl::CallKind::kFunction) return true;
+      const uint32_t callee = model.SymbolAt(call->id);
+      if (callee != glsl::kNoSymbol && model.symbols[callee].kind == glsl::SymbolKind::kFunction) {
+        calls.push_back({callee, call});
+      }
+      return true;
+    });
+  }
+  return graph;
+}
+
+class RecursionRule final : public rule::Rule {
+ public:
+  const rule::RuleInfo& Info() const override {
+    static const rule::RuleInfo info{kId, "A function calls itself, directly or through others",
+                                     "float f(float x) { return f(x); }", "",
+                                     rule::RuleScope::kCheck};
+    return info;
+  }
+
+  void Run(rule::RuleContext& context) const override {
+    const CallGraph graph = BuildCallGraph(context);
+    enum class Color { kWhite, kGray, kBlack };
+    std::map<uint32_t, Color> color;
+    const auto& symbols = context.Model().symbols;
+    for (const auto& [root, unused] : graph) {
+      if (color[root] != Color::kWhite) continue;
+      // Iterative depth-first search; `path` holds the functions on the stack.
+      struct Frame {
+        uint32_t function;
+        size_t next = 0;
+      };
+      std::vector<Frame> stack = {{root}};
+      std::vector<uint32_t> path = {root};
+      color[root] = Color::kGray;
+      while (!stack.empty()) {
+        Frame& frame = stack.back();
+        const auto found = graph.find(frame.function);
+        const std::vector<Call>* calls = found == graph.end() ? nullptr : &found->second;
+        if (calls == nullptr || frame.next >= calls->size()) {
+          color[frame.function] = Color::kBlack;
+          stack.pop_back();
+          path.pop_back();
+          continue;
+        }
+        const Call call = (*calls)[frame.next++];
+        Color& callee_color = color[call.callee];
+        if (callee_color == Color::kGray) {
+          std::string chain;
+          bool in_cycle = false;
+          for (uint32_t function : path) {
+            in_cycle = in_cycle || function == call.callee;
+            if (in_cycle) chain += symbols[function].name + " -> ";
+          }
+          chain += symbols[call.callee].name;
+          webgl::ReportError(context, kId, call.site->callee.range,
+                             "recursive call: " + chain +
+                                 "; GLSL ES does not allow recursion, browsers reject it");
+        } else if (callee_color == Color::kWhite) {
+          callee_color = Color::kGray;
+          stack.push_back({call.callee});
+          path.push_back(call.callee);
+        }
+      }
+    }
+  }
+};
+
+}  // namespace
+
+const rule::Rule& WebglRecursionRule() {
+  static const RecursionRule rule;
+  return rule;
+}
+
+}  // namespace shaderport::rules

@@ -1,0 +1,78 @@
+#include "driver/webgl_checks.h"
+
+#include <algorithm>
+#include <array>
+#include <string_view>
+
+#include "rule/rule_context.h"
+#include "rules/registry.h"
+#include "rules/webgl/glslang_divergence.h"
+
+namespace shaderport::driver {
+namespace {
+
+// Front-end findings that are WebGL rules rather than glslang's (glslang has no
+// identifier length limit): they count even though glslang also runs.
+bool IsWebglFrontEndRule(std::string_view rule_id) {
+  static constexpr std::array<std::string_view, 1> kIds = {"preprocessor/identifier-too-long"};
+  return std::find(kIds.begin(), kIds.end(), rule_id) != kIds.end();
+}
+
+rules::BrowserContext ToBrowserContext(const FrontEndResult& front,
+                                       const WebglCheckSettings& settings) {
+  rules::BrowserContext context;
+  context.webgl2 = settings.target == Target::kWebGL2;
+  context.version = settings.shadertoy ? 300 : front.preprocessed.version.number;
+  context.vertex = settings.stage == Stage::kVertex;
+  context.file = nullptr;
+  context.lexed = &front.lexed;
+  context.tree = &front.parsed.tree;
+  context.model = front.model ? &*front.model : nullptr;
+  context.preprocessed = &front.preprocessed;
+  context.front_end_errors = front.HasErrors();
+  return context;
+}
+
+}  // namespace
+
+Target DefaultTarget(Dialect dialect, const glsl::PreprocessResult& preprocessed) {
+  if (dialect == Dialect::kShaderToy) return Target::kWebGL2;
+  return preprocessed.version.number >= 300 ? Target::kWebGL2 : Target::kWebGL1;
+}
+
+DiagnosticList RunWebglChecks(const SourceFile& file, const FrontEndResult& front,
+                              const WebglCheckSettings& settings) {
+  DiagnosticList found;
+  for (const Diagnostic& diagnostic : front.diagnostics) {
+    if (IsWebglFrontEndRule(diagnostic.rule_id)) found.push_back(diagnostic);
+  }
+  if (!front.model) return found;
+  rule::PortSettings port_settings;
+  port_settings.mode = rule::PortMode::kFix;
+  port_settings.stage =
+      settings.stage == Stage::kVertex ? rule::ShaderStage::kVertex : rule::ShaderStage::kFragment;
+  port_settings.source_version = settings.shadertoy ? 300 : front.preprocessed.version.number;
+  port_settings.written_version =
+      front.preprocessed.version.present ? front.preprocessed.version.number : 0;
+  port_settings.target = settings.target == Target::kWebGL1 ? rule::WebglTarget::kWebGL1
+                                                            : rule::WebglTarget::kWebGL2;
+  for (const rule::Rule* check : rules::CheckRules()) {
+    rule::RuleContext context(file, front.lexed, front.preprocessed, front.parsed.tree,
+                              *front.model, port_settings);
+    check->Run(context);
+    for (Diagnostic& diagnostic : context.TakeDiagnostics()) found.push_back(std::move(diagnostic));
+  }
+  return found;
+}
+
+void AlignGlslangWithBrowser(const SourceFile& file, const FrontEndResult& front,
+                             const WebglCheckSettings& settings,
+                             DiagnosticList& glslang_diagnostics) {
+  rules::BrowserContext context = ToBrowserContext(front, settings);
+  context.file = &file;
+  for (Diagnostic& diagnostic : glslang_diagnostics) {
+    rules::AlignWithBrowser(context, diagnostic);
+  }
+}
+
+}  // namespace shaderport::driver

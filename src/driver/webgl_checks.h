@@ -1,0 +1,32 @@
+// The WebGL layer of `check`: what a browser's compiler (ANGLE) rejects or warns
+// about beyond glslang, and the glslang errors a browser does not raise.
+// docs/browser-divergence.md lists every place where the two disagree.
+#pragma once
+
+#include "diag/diagnostic.h"
+#include "driver/dialect.h"
+#include "driver/front_end.h"
+
+namespace shaderport::driver {
+
+struct WebglCheckSettings {
+  Target target = Target::kWebGL2;
+  Stage stage = Stage::kFragment;
+  bool shadertoy = false;
+};
+
+// The target a file runs in when nobody said: WebGL2 for GLSL ES 3.00 and ShaderToy
+// code, WebGL1 for GLSL ES 1.00 (as the page that would load it).
+Target DefaultTarget(Dialect dialect, const glsl::PreprocessResult& preprocessed);
+
+// Findings of the WebGL rules (rules/webgl/*) and of our front end's WebGL limits.
+DiagnosticList RunWebglChecks(const SourceFile& file, const FrontEndResult& front,
+                              const WebglCheckSettings& settings);
+
+// Rewrites glslang's findings where glslang and the browser disagree: an error the
+// browser does not raise becomes a note (or the browser's warning) that says why.
+void AlignGlslangWithBrowser(const SourceFile& file, const FrontEndResult& front,
+                             const WebglCheckSettings& settings,
+                             DiagnosticList& glslang_diagnostics);
+
+}  // namespace shaderport::driver
