@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "diag/diagnostic.h"
@@ -15,7 +16,10 @@ struct CheckOptions {
   std::vector<std::filesystem::path> paths;
   std::optional<Dialect> dialect;               // --dialect: overrides detection and config
   std::optional<Stage> stage;                   // --stage
-  std::optional<Target> target;                 // --target: the WebGL context (default: by version)
+  std::optional<Target> target;
+  // --link VS FS: programs to link; when empty, vertex and fragment files with the
+  // same stem in the same directory are linked.
+  std::vector<std::pair<std::filesystem::path, std::filesystem::path>> links;                 // --target: the WebGL context (default: by version)
   std::optional<std::filesystem::path> common;  // --common: ShaderToy Common for every pass
   validate::ChannelTypes channels{};            // --channel N=2d|cube|3d (default all 2D)
   std::optional<std::filesystem::path> config;  // --config: instead of searching upward

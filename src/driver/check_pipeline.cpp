@@ -3,6 +3,7 @@
 #include <map>
 
 #include "driver/check_file.h"
+#include "driver/check_link.h"
 #include "driver/config/find_config.h"
 #include "driver/input_files.h"
 #include "driver/parallel_for.h"
@@ -111,6 +112,12 @@ CheckRun RunCheck(const CheckOptions& options) {
   std::vector<FileReport> reports(jobs.size());
   ParallelFor(jobs.size(), options.jobs,
               [&](size_t i) { reports[i] = CheckFile(jobs[i], options, sources); });
+  // Programs link once both stages are checked (before renders, whose findings
+  // must not stop a link).
+  for (const auto& [vertex, fragment] : FindPrograms(jobs, options)) {
+    LinkProgram(jobs[vertex], jobs[fragment], options, sources, reports[vertex],
+                reports[fragment]);
+  }
   // Each render forks a child. Forking while other threads run can leave the child
   // waiting forever on a lock one of them held, so renders run here, one at a
   // time, once the parallel part has ended (llvmpipe draws on several threads itself).

@@ -21,6 +21,7 @@ struct CheckArgs {
   std::string dialect;
   std::string stage;
   std::string target;
+  std::vector<std::string> link;
   std::string common;
   std::vector<std::string> channels;
   std::string config;
@@ -78,6 +79,14 @@ int RunCheckCommand(const CheckArgs& args) {
     options.target = driver::ParseTarget(args.target);
     if (!options.target) return Usage("unknown --target '" + args.target + "'");
   }
+  if (!args.link.empty()) {
+    if (args.link.size() % 2 != 0) return Usage("--link takes a vertex and a fragment shader");
+    for (size_t i = 0; i + 1 < args.link.size(); i += 2) {
+      options.links.emplace_back(args.link[i], args.link[i + 1]);
+      options.paths.emplace_back(args.link[i]);
+      options.paths.emplace_back(args.link[i + 1]);
+    }
+  }
   if (!args.fail_on.empty()) {
     static const std::map<std::string, Severity> kLevels = {
         {"error", Severity::kError}, {"warning", Severity::kWarning}, {"note", Severity::kNote}};
@@ -102,6 +111,7 @@ int RunCheckCommand(const CheckArgs& args) {
   options.render_size = args.render_size;
   options.render_timeout = args.render_timeout;
 
+  if (options.paths.empty()) return Usage("no files or directories to check");
   driver::CheckRun run = driver::RunCheck(options);
   for (const std::string& error : run.usage_errors) {
     std::fprintf(stderr, "shaderport check: error: %s\n", error.c_str());
@@ -125,7 +135,7 @@ void AddCheckCommand(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<CheckArgs>();
   auto* command = app.add_subcommand(
       "check", "Report every problem in shaders, as glslang and browsers would compile them");
-  command->add_option("paths", args->paths, "Files and directories to check")->required();
+  command->add_option("paths", args->paths, "Files and directories to check");
   command->add_option("--format", args->format, "text | json | sarif | github")
       ->capture_default_str();
   command->add_option("--fail-on", args->fail_on,
@@ -136,6 +146,10 @@ void AddCheckCommand(CLI::App& app, int& exit_code) {
   command->add_option("--target", args->target,
                       "webgl1 | webgl2: the WebGL context the shader runs in (default: webgl2 "
                       "for GLSL ES 3.00 and ShaderToy code, webgl1 for GLSL ES 1.00)");
+  command->add_option("--link", args->link,
+                      "VS FS: check these two files as one program (repeatable; default: "
+                      "link NAME.vert with NAME.frag in the same directory)")
+      ->expected(2);
   command->add_option("--common", args->common,
                       "ShaderToy Common code compiled before every ShaderToy pass "
                       "(default: common.glsl beside the pass)");

@@ -1,0 +1,31 @@
+// WebGL's link rules for a vertex + fragment program, on our own trees: the
+// interface the two stages share must agree (varyings: type, presence, ES 1.00
+// invariance; uniforms and uniform blocks: type and precision), and the varyings
+// must fit the context's varying vectors by GLSL ES 1.00 Appendix A.7 packing.
+#pragma once
+
+#include "diag/diagnostic.h"
+#include "glsl/lex/preprocessor.h"
+#include "glsl/sema/semantic_model.h"
+#include "glsl/syntax/ast.h"
+
+namespace shaderport::rules {
+
+struct LinkStage {
+  const glsl::SyntaxTree* tree = nullptr;
+  const glsl::SemanticModel* model = nullptr;
+  const glsl::PreprocessResult* preprocessed = nullptr;
+  int version = 100;
+};
+
+struct LinkLimits {
+  // Chromium's limits as the conformance cases were sized (WebGL requires at least 8).
+  int max_varying_vectors = 31;
+};
+
+// Errors of rule ids webgl/link-varying, webgl/link-uniform, webgl/link-invariant and
+// webgl/varying-packing, placed on the declarations in either stage.
+DiagnosticList CheckProgramLink(const LinkStage& vertex, const LinkStage& fragment,
+                                const LinkLimits& limits = {});
+
+}  // namespace shaderport::rules
