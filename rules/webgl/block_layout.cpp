@@ -19,9 +19,9 @@ void CheckQualifiers(rule::RuleContext& context, const glsl::QualifierList& qual
     if (qualifier.kind != glsl::QualifierKind::kLayout) continue;
     for (const glsl::LayoutId& id : qualifier.layout_ids) {
       if (id.name.text != "packed" && id.name.text != "shared") continue;
-      webgl::ReportError(context, kId, id.name.range,
-                         "'" + id.name.text +
-                             "' block layout is not allowed in WebGL; only std140 is");
+      webgl::ReportError(
+          context, kId, id.name.range,
+          "'" + id.name.text + "' block layout is not allowed in WebGL; only std140 is");
     }
   }
 }
@@ -29,9 +29,9 @@ void CheckQualifiers(rule::RuleContext& context, const glsl::QualifierList& qual
 class BlockLayoutRule final : public rule::Rule {
  public:
   const rule::RuleInfo& Info() const override {
-    static const rule::RuleInfo info{kId, "A packed or shared block layout (WebGL allows std140 only)",
-                                     "layout(shared) uniform B { vec4 v; };", "",
-                                     rule::RuleScope::kCheck};
+    static const rule::RuleInfo info{
+        kId, "A packed or shared block layout (WebGL allows std140 only)",
+        "layout(shared) uniform B { vec4 v; };", "", rule::RuleScope::kCheck};
     return info;
   }
 

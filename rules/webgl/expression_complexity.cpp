@@ -20,8 +20,7 @@ constexpr uint32_t kMaxDepth = 256;
 class ExpressionComplexityRule final : public rule::Rule {
  public:
   const rule::RuleInfo& Info() const override {
-    static const rule::RuleInfo info{kId,
-                                     "Code nested deeper than browsers compile (256 levels)",
+    static const rule::RuleInfo info{kId, "Code nested deeper than browsers compile (256 levels)",
                                      "gl_FragColor = u + u + u + /* ... 1,000 times */ u;", "",
                                      rule::RuleScope::kCheck};
     return info;

@@ -18,9 +18,9 @@ constexpr std::string_view kId = "webgl/frag-data-and-color";
 class FragDataAndColorRule final : public rule::Rule {
  public:
   const rule::RuleInfo& Info() const override {
-    static const rule::RuleInfo info{kId, "A fragment shader uses both gl_FragColor and gl_FragData",
-                                     "gl_FragColor = c;\ngl_FragData[0] = c;", "",
-                                     rule::RuleScope::kCheck};
+    static const rule::RuleInfo info{
+        kId, "A fragment shader uses both gl_FragColor and gl_FragData",
+        "gl_FragColor = c;\ngl_FragData[0] = c;", "", rule::RuleScope::kCheck};
     return info;
   }
 

@@ -24,7 +24,8 @@ const glsl::Declarator* DeclaratorOnLine(const BrowserContext& context,
   glsl::VisitPreorder(*context.tree, [&](const glsl::Node& node, uint32_t depth) {
     if (found != nullptr) return false;
     const auto* declarator = node.As<glsl::Declarator>();
-    if (declarator == nullptr || declarator->range.file != context.file->Id()) return !node.IsExpr();
+    if (declarator == nullptr || declarator->range.file != context.file->Id())
+      return !node.IsExpr();
     if (LineOf(context, declarator->range.begin) <= line &&
         line <= LineOf(context, declarator->range.end)) {
       found = declarator;
@@ -64,7 +65,8 @@ bool AlignGlobalInitializer(const BrowserContext& context, Diagnostic& diagnosti
 // fold (`vec4(0.5).x`, `matrixCompMult(m, m)`, `(2, 3)`): browsers fold them.
 bool AlignConstantExpression(const BrowserContext& context, Diagnostic& diagnostic) {
   const bool initializer = diagnostic.message.find("non-constant initializer") != std::string::npos;
-  const bool array_size = diagnostic.message.find("array size must be a constant") != std::string::npos;
+  const bool array_size =
+      diagnostic.message.find("array size must be a constant") != std::string::npos;
   if (!initializer && !array_size) return false;
   bool global = false;
   const glsl::Declarator* declarator = DeclaratorOnLine(context, diagnostic, global);

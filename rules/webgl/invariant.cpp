@@ -29,8 +29,7 @@ bool BuiltinMayBeInvariant(std::string_view name, bool essl100, bool fragment) {
   return essl100 && (name == "gl_FragCoord" || name == "gl_PointCoord");
 }
 
-bool QualifiersMayBeInvariant(const glsl::QualifierList& qualifiers, bool essl100,
-                              bool fragment) {
+bool QualifiersMayBeInvariant(const glsl::QualifierList& qualifiers, bool essl100, bool fragment) {
   (void)fragment;  // the same qualifiers are outputs of either stage
   if (essl100) return qualifiers.Has(glsl::QualifierKind::kVarying);
   return qualifiers.Has(glsl::QualifierKind::kOut) && !qualifiers.Has(glsl::QualifierKind::kIn);

@@ -68,13 +68,12 @@ class LoopFormChecker {
     if (index == glsl::kNoSymbol) return glsl::kNoSymbol;
     const glsl::Type& type = context_.Model().symbols[index].type;
     if (!type.IsUnknown() && !(type == glsl::Type::Int() || type == glsl::Type::Float())) {
-      Error(declarator.name.range, "the loop index '" + declarator.name.text +
-                                       "' must be an int or a float scalar");
+      Error(declarator.name.range,
+            "the loop index '" + declarator.name.text + "' must be an int or a float scalar");
     }
     if (!Constant(declarator.initializer)) {
-      Error(declarator.initializer->range,
-            "the loop index '" + declarator.name.text +
-                "' must be initialised with a constant expression");
+      Error(declarator.initializer->range, "the loop index '" + declarator.name.text +
+                                               "' must be initialised with a constant expression");
     }
     return index;
   }
@@ -89,8 +88,7 @@ class LoopFormChecker {
       return;
     }
     if (!Constant(binary->rhs)) {
-      Error(binary->rhs->range,
-            "the loop index cannot be compared with a non-constant expression");
+      Error(binary->rhs->range, "the loop index cannot be compared with a non-constant expression");
     }
   }
 

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <array>
-#include <optional>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -173,7 +173,8 @@ const Footprint* Pack(std::vector<Footprint>& varyings, int max_rows) {
   std::stable_sort(varyings.begin(), varyings.end(), [](const Footprint& a, const Footprint& b) {
     return a.columns != b.columns ? a.columns > b.columns : a.rows > b.rows;
   });
-  std::vector<std::array<bool, 4>> grid(static_cast<size_t>(max_rows), {false, false, false, false});
+  std::vector<std::array<bool, 4>> grid(static_cast<size_t>(max_rows),
+                                        {false, false, false, false});
   for (const Footprint& varying : varyings) {
     bool placed = false;
     for (int column = 0; column + varying.columns <= 4 && !placed; ++column) {
@@ -219,17 +220,18 @@ DiagnosticList CheckProgramLink(const LinkStage& vertex, const LinkStage& fragme
           it != vs.globals.end() && it->second.role == Role::kVarying ? &it->second : nullptr;
       if (output == nullptr) {
         if (input.used) {
-          found.push_back(LinkError("webgl/link-varying", input.where,
-                                    "fragment input '" + name +
-                                        "' is used but the vertex shader does not write it",
-                                    {}, ""));
+          found.push_back(LinkError(
+              "webgl/link-varying", input.where,
+              "fragment input '" + name + "' is used but the vertex shader does not write it", {},
+              ""));
         }
         continue;
       }
-      if (output->type_name != input.type_name || output->type.array_size != input.type.array_size) {
+      if (output->type_name != input.type_name ||
+          output->type.array_size != input.type.array_size) {
         found.push_back(LinkError("webgl/link-varying", input.where,
-                                  "varying '" + name + "' is " + input.type_name +
-                                      " here but " + output->type_name + " in the vertex shader",
+                                  "varying '" + name + "' is " + input.type_name + " here but " +
+                                      output->type_name + " in the vertex shader",
                                   output->where, "declared here in the vertex shader"));
         continue;
       }
@@ -254,8 +256,8 @@ DiagnosticList CheckProgramLink(const LinkStage& vertex, const LinkStage& fragme
       } else if (other.precision != input.precision) {
         found.push_back(LinkError(
             "webgl/link-uniform", input.where,
-            "uniform '" + name + "' is " + glsl::PrecisionSpelling(input.precision) +
-                " here but " + glsl::PrecisionSpelling(other.precision) +
+            "uniform '" + name + "' is " + glsl::PrecisionSpelling(input.precision) + " here but " +
+                glsl::PrecisionSpelling(other.precision) +
                 " in the vertex shader; a uniform shared by both stages must have one precision",
             other.where, "declared here in the vertex shader"));
       }
@@ -290,16 +292,17 @@ DiagnosticList CheckProgramLink(const LinkStage& vertex, const LinkStage& fragme
             }
           }
         }
-        found.push_back(LinkError("webgl/link-invariant", where,
-                                  std::string(input) + " is invariant but the vertex shader's " +
-                                      output + " is not",
-                                  {}, ""));
+        found.push_back(LinkError(
+            "webgl/link-invariant", where,
+            std::string(input) + " is invariant but the vertex shader's " + output + " is not", {},
+            ""));
       }
     }
   }
   if (const Footprint* overflow = Pack(packed, limits.max_varying_vectors)) {
     found.push_back(LinkError("webgl/varying-packing", overflow->where,
-                              "varying '" + overflow->name + "' does not fit: the program's "
+                              "varying '" + overflow->name +
+                                  "' does not fit: the program's "
                                   "varyings need more than " +
                                   std::to_string(limits.max_varying_vectors) +
                                   " vectors when packed (GLSL ES 1.00 Appendix A.7)",

@@ -38,14 +38,16 @@ void CheckName(rule::RuleContext& context, const glsl::Name& name) {
 class ReservedNameRule final : public rule::Rule {
  public:
   const rule::RuleInfo& Info() const override {
-    static const rule::RuleInfo info{kId, "A declared name that WebGL reserves (webgl_, _webgl_, __)",
+    static const rule::RuleInfo info{kId,
+                                     "A declared name that WebGL reserves (webgl_, _webgl_, __)",
                                      "uniform vec4 webgl_color;", "", rule::RuleScope::kCheck};
     return info;
   }
 
   void Run(rule::RuleContext& context) const override {
     glsl::VisitPreorder(context.Tree(), [&](const glsl::Node& node, uint32_t) {
-      if (const auto* declarator = node.As<glsl::Declarator>()) CheckName(context, declarator->name);
+      if (const auto* declarator = node.As<glsl::Declarator>())
+        CheckName(context, declarator->name);
       if (const auto* parameter = node.As<glsl::ParameterDeclaration>()) {
         CheckName(context, parameter->name);
       }

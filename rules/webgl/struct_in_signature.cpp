@@ -29,13 +29,15 @@ class StructInSignatureRule final : public rule::Rule {
       if (function->return_type != nullptr && function->return_type->struct_def != nullptr) {
         webgl::ReportError(context, kId, function->return_type->struct_def->range,
                            "a function's return type cannot be a struct definition; define "
-                           "the struct before '" + function->name.text + "'");
+                           "the struct before '" +
+                               function->name.text + "'");
       }
       for (const glsl::ParameterDeclaration* parameter : function->parameters) {
         if (parameter->type == nullptr || parameter->type->struct_def == nullptr) continue;
         webgl::ReportError(context, kId, parameter->type->struct_def->range,
                            "a function parameter's type cannot be a struct definition; define "
-                           "the struct before '" + function->name.text + "'");
+                           "the struct before '" +
+                               function->name.text + "'");
       }
     }
   }

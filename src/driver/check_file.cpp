@@ -171,7 +171,8 @@ FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceMana
       validate::ValidateWithGlslang(ComposeRequest(job, options, kind, file, sources));
   AlignGlslangWithBrowser(file, front, webgl, result.diagnostics);
   report.diagnostics = RunWebglChecks(file, front, webgl);
-  for (Diagnostic& diagnostic : result.diagnostics) report.diagnostics.push_back(std::move(diagnostic));
+  for (Diagnostic& diagnostic : result.diagnostics)
+    report.diagnostics.push_back(std::move(diagnostic));
   if (common != nullptr && job.common_checked_separately) {
     // Common is an input of its own: its findings are reported once, there.
     std::erase_if(report.diagnostics,

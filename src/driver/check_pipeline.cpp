@@ -115,8 +115,7 @@ CheckRun RunCheck(const CheckOptions& options) {
   // Programs link once both stages are checked (before renders, whose findings
   // must not stop a link).
   for (const auto& [vertex, fragment] : FindPrograms(jobs, options)) {
-    LinkProgram(jobs[vertex], jobs[fragment], options, sources, reports[vertex],
-                reports[fragment]);
+    LinkProgram(jobs[vertex], jobs[fragment], options, sources, reports[vertex], reports[fragment]);
   }
   // Each render forks a child. Forking while other threads run can leave the child
   // waiting forever on a lock one of them held, so renders run here, one at a

@@ -54,8 +54,8 @@ DiagnosticList RunWebglChecks(const SourceFile& file, const FrontEndResult& fron
   port_settings.source_version = settings.shadertoy ? 300 : front.preprocessed.version.number;
   port_settings.written_version =
       front.preprocessed.version.present ? front.preprocessed.version.number : 0;
-  port_settings.target = settings.target == Target::kWebGL1 ? rule::WebglTarget::kWebGL1
-                                                            : rule::WebglTarget::kWebGL2;
+  port_settings.target =
+      settings.target == Target::kWebGL1 ? rule::WebglTarget::kWebGL1 : rule::WebglTarget::kWebGL2;
   for (const rule::Rule* check : rules::CheckRules()) {
     rule::RuleContext context(file, front.lexed, front.preprocessed, front.parsed.tree,
                               *front.model, port_settings);

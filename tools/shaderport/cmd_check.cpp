@@ -146,9 +146,10 @@ void AddCheckCommand(CLI::App& app, int& exit_code) {
   command->add_option("--target", args->target,
                       "webgl1 | webgl2: the WebGL context the shader runs in (default: webgl2 "
                       "for GLSL ES 3.00 and ShaderToy code, webgl1 for GLSL ES 1.00)");
-  command->add_option("--link", args->link,
-                      "VS FS: check these two files as one program (repeatable; default: "
-                      "link NAME.vert with NAME.frag in the same directory)")
+  command
+      ->add_option("--link", args->link,
+                   "VS FS: check these two files as one program (repeatable; default: "
+                   "link NAME.vert with NAME.frag in the same directory)")
       ->expected(2);
   command->add_option("--common", args->common,
                       "ShaderToy Common code compiled before every ShaderToy pass "
