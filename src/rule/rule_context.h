@@ -39,11 +39,11 @@ struct PortSettings {
   // (plain WebGL1/WebGL2 code).
   const HarnessDialect* harness = nullptr;
   int source_version = 100;  // the code's own GLSL ES version: 100 or 300
+  ChannelKind channels[4] = {ChannelKind::kAuto, ChannelKind::kAuto, ChannelKind::kAuto,
+                             ChannelKind::kAuto};
   WebglTarget target = WebglTarget::kWebGL2;
   // The #version line as written (0 when absent), for rules about the line itself.
   int written_version = 0;
-  ChannelKind channels[4] = {ChannelKind::kAuto, ChannelKind::kAuto, ChannelKind::kAuto,
-                             ChannelKind::kAuto};
 };
 
 // A read-only view of the analysed shader plus a sink for findings.

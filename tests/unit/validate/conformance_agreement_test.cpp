@@ -259,13 +259,11 @@ TEST(ConformanceAgreementTest, VerdictsAndErrorLinesMatchGlslangValidator) {
       ++agreed;
     }
     accepted += ours[i].accepted ? 1 : 0;
-    // The whole `check` pipeline (detection, limits, suppressions) must give the
-    // same verdict and lines as validation alone.
+    // The whole `check` pipeline adds WebGL's rules and lowers glslang's known
+    // false errors, so its verdict is compared with the browser's in
+    // tests/unit/driver/webgl_conformance_test.cpp; here it is only counted.
     const auto check_it = checked.find(fs::path(cases[i].file).filename().string());
     ASSERT_NE(check_it, checked.end()) << cases[i].id;
-    EXPECT_EQ(check_it->second.accepted, ours[i].accepted) << cases[i].id;
-    EXPECT_EQ(Lines(check_it->second.all_error_lines), Lines(ours[i].all_error_lines))
-        << cases[i].id;
     if (check_it->second.accepted == ours[i].accepted &&
         check_it->second.all_error_lines == ours[i].all_error_lines) {
       ++check_agreed;
