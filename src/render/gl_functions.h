@@ -74,7 +74,10 @@ namespace shaderport::render {
   X(PFNGLVERTEXATTRIBPOINTERPROC, VertexAttribPointer)         \
   X(PFNGLENABLEVERTEXATTRIBARRAYPROC, EnableVertexAttribArray) \
   X(PFNGLDRAWARRAYSPROC, DrawArrays)                           \
-  X(PFNGLDRAWELEMENTSPROC, DrawElements)
+  X(PFNGLDRAWELEMENTSPROC, DrawElements)                       \
+  X(PFNGLDRAWBUFFERSPROC, DrawBuffers)                         \
+  X(PFNGLREADBUFFERPROC, ReadBuffer)                           \
+  X(PFNGLGETFRAGDATALOCATIONPROC, GetFragDataLocation)
 
 struct GlFunctions {
 #define SHADERPORT_GL_MEMBER(type, name) type name = nullptr;

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "render/gl_program.h"
+#include "render/loop_cap.h"
 #include "render/render_mesh.h"
 #include "render/uniform_values.h"
 
@@ -51,6 +52,40 @@ ChannelOverrides OverridesFor(const std::array<int, 4>& channel_buffers,
                     static_cast<float>(request.width), static_cast<float>(request.height)};
   }
   return overrides;
+}
+
+// A second colour attachment for the loop probe, when the program writes one at
+// location 1 (see RenderRequest::loop_probe_output).
+GLuint AttachLoopProbe(const GlFunctions& gl, GLuint program, const RenderRequest& request,
+                       GLsizei width, GLsizei height) {
+  if (request.loop_probe_output.empty() ||
+      gl.GetFragDataLocation(program, request.loop_probe_output.c_str()) != 1) {
+    return 0;
+  }
+  GLuint texture = 0;
+  gl.GenTextures(1, &texture);
+  gl.BindTexture(GL_TEXTURE_2D, texture);
+  gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, nullptr);
+  gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, texture, 0);
+  gl.BindTexture(GL_TEXTURE_2D, 0);
+  const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  gl.DrawBuffers(2, buffers);
+  return texture;
+}
+
+void ReadLoopProbe(const GlFunctions& gl, GLsizei width, GLsizei height, RenderOutcome& outcome) {
+  std::vector<float> probe(static_cast<size_t>(width) * static_cast<size_t>(height) * 4);
+  gl.ReadBuffer(GL_COLOR_ATTACHMENT1);
+  gl.ReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, probe.data());
+  gl.ReadBuffer(GL_COLOR_ATTACHMENT0);
+  outcome.max_loop_iterations = 0;
+  for (size_t i = 0; i < probe.size(); i += 4) {
+    const float count = probe[i];
+    if (!(count > 0.0f)) continue;  // not written (the clear sentinel is negative) or NaN
+    const auto iterations = static_cast<int64_t>(std::min(count, 1e12f));
+    outcome.max_loop_iterations = std::max(outcome.max_loop_iterations, iterations);
+    if (static_cast<uint64_t>(iterations) >= kLlvmpipeLoopCap) ++outcome.loop_capped_pixels;
+  }
 }
 
 }  // namespace
@@ -115,6 +150,7 @@ RenderOutcome RenderInThisProcess(const RenderRequest& request, BackendKind back
     outcome.message = "the RGBA32F framebuffer is incomplete";
     return outcome;
   }
+  const GLuint probe = AttachLoopProbe(gl, program, request, width, height);
   CollectGlErrors(gl, "creating the framebuffers", outcome);
 
   GLuint vao = 0;
@@ -165,6 +201,7 @@ RenderOutcome RenderInThisProcess(const RenderRequest& request, BackendKind back
   outcome.pixels.resize(size_t{request.width} * request.height * 4);
   gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
   gl.ReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, outcome.pixels.data());
+  if (probe != 0) ReadLoopProbe(gl, width, height, outcome);
   CollectGlErrors(gl, "glReadPixels", outcome);
   outcome.status = RenderStatus::kOk;
   // The process exits right after: GL objects die with the context.

@@ -153,4 +153,29 @@ DiagnosticList LoopCapNotes(const SourceFile& file) {
   return notes;
 }
 
+DiagnosticList LoopCapFindings(const SourceFile& file, const RenderOutcome& outcome,
+                               const SourceRange& anchor) {
+  if (outcome.max_loop_iterations < 0) return LoopCapNotes(file);
+  if (outcome.loop_capped_pixels == 0) return {};
+  const std::string message =
+      "llvmpipe stopped the loops of " + std::to_string(outcome.loop_capped_pixels) + " of " +
+      std::to_string(uint64_t{outcome.width} * outcome.height) +
+      " pixels after 65535 iterations, so this picture is not what a browser draws: a browser "
+      "runs every iteration, and a loop that never ends hangs the GPU until the page loses its "
+      "WebGL context";
+  DiagnosticList found = LoopCapNotes(file);
+  if (found.empty()) {
+    Diagnostic d;
+    d.rule_id = "render/loop-cap";
+    d.range = anchor;
+    found.push_back(std::move(d));
+  }
+  for (Diagnostic& d : found) {
+    const bool unbounded = d.message.find("no visible bound") != std::string::npos;
+    d.severity = Severity::kWarning;
+    d.message = message + (unbounded ? " (this loop has no visible bound)" : "");
+  }
+  return found;
+}
+
 }  // namespace shaderport::render

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "diag/diagnostic.h"
+#include "render/render_request.h"
 #include "source/source_file.h"
 
 namespace shaderport::render {
@@ -13,5 +14,12 @@ inline constexpr uint64_t kLlvmpipeLoopCap = 65535;
 
 // Notes (render/loop-cap) at the loops that may exceed the cap.
 DiagnosticList LoopCapNotes(const SourceFile& file);
+
+// What the render's loop probe measured (RenderOutcome::max_loop_iterations): a
+// warning (render/loop-cap) at the loops the text scan suspects, or at `anchor`,
+// when pixels reached the cap; nothing when none did; the text scan's notes when
+// the probe could not be added.
+DiagnosticList LoopCapFindings(const SourceFile& file, const RenderOutcome& outcome,
+                               const SourceRange& anchor);
 
 }  // namespace shaderport::render

@@ -5,7 +5,7 @@
 namespace shaderport::render {
 namespace {
 
-constexpr uint32_t kMagic = 0x53505231;  // "SPR1"
+constexpr uint32_t kMagic = 0x53505232;  // "SPR2"
 constexpr uint32_t kMaxStrings = 1024;
 
 template <typename T>
@@ -51,6 +51,8 @@ std::string EncodeOutcome(const RenderOutcome& outcome) {
   Put(out, static_cast<int32_t>(outcome.failed_pass));
   Put(out, static_cast<uint32_t>(outcome.gl_errors.size()));
   for (const std::string& error : outcome.gl_errors) PutString(out, error);
+  Put(out, outcome.max_loop_iterations);
+  Put(out, outcome.loop_capped_pixels);
   Put(out, outcome.width);
   Put(out, outcome.height);
   Put(out, static_cast<uint64_t>(outcome.pixels.size()));
@@ -76,6 +78,9 @@ std::optional<RenderOutcome> DecodeOutcome(const std::string& bytes) {
   outcome.gl_errors.resize(errors);
   for (std::string& error : outcome.gl_errors) {
     if (!in.GetString(error)) return std::nullopt;
+  }
+  if (!in.Get(outcome.max_loop_iterations) || !in.Get(outcome.loop_capped_pixels)) {
+    return std::nullopt;
   }
   uint64_t count = 0;
   if (!in.Get(outcome.width) || !in.Get(outcome.height) || !in.Get(count) ||

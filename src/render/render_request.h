@@ -60,6 +60,9 @@ struct RenderRequest {
   ShaderToyInputs inputs;
   std::vector<BufferPass> buffer_passes;                  // ShaderToy multipass, in drawing order
   std::array<int, 4> channel_buffers = {-1, -1, -1, -1};  // the main pass's buffer inputs
+  // A fragment output (location 1) whose .x counts the loop iterations of each pixel
+  // (added by the driver's render text); empty or absent in the program: not read.
+  std::string loop_probe_output;
 };
 
 struct RenderOptions {
@@ -91,6 +94,10 @@ struct RenderOutcome {
   std::string link_log;
   int failed_pass = -1;                // index in buffer_passes whose compile/link failed; -1: main
   std::vector<std::string> gl_errors;  // "GL_INVALID_OPERATION after glDrawArrays"
+  // From the loop probe: the most loop iterations of any pixel (-1: not measured),
+  // and how many pixels reached llvmpipe's cap.
+  int64_t max_loop_iterations = -1;
+  uint32_t loop_capped_pixels = 0;
   uint32_t width = 0;
   uint32_t height = 0;
   std::vector<float> pixels;  // RGBA32F, rows bottom-up as glReadPixels returns them

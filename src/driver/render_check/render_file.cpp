@@ -3,8 +3,10 @@
 #include "driver/dialect.h"
 #include "driver/port/port_file.h"
 #include "driver/read_input.h"
+#include "driver/render_check/browser_render_text.h"
 #include "driver/render_check/composed_text.h"
 #include "driver/render_check/varying_feeder.h"
+#include "glsl/webgl_semantics/browser_semantics.h"
 #include "render/isolated_render.h"
 #include "render/loop_cap.h"
 #include "render/png_io.h"
@@ -39,9 +41,22 @@ render::ChannelKind KindOf(validate::ChannelType type) {
 void RenderPrepared(const PreparedShader& shader, const RenderFileOptions& options,
                     RenderFileResult& result) {
   render::RenderRequest request = options.base;
-  request.vertex_source = shader.vertex_text;
+  // Mesa compiles what a browser would hand its driver (zero-initialised variables,
+  // clamped indices), with a probe that tells when llvmpipe's loop cap was hit.
+  BrowserRenderTextOptions semantics;
+  semantics.webgl_semantics = options.webgl_semantics;
+  for (render::BufferPass& pass : request.buffer_passes) {
+    pass.fragment_source = BrowserRenderText(pass.fragment_source, semantics);
+  }
+  semantics.vertex_stage = true;
+  request.vertex_source = shader.fullscreen_vertex
+                              ? shader.vertex_text
+                              : BrowserRenderText(shader.vertex_text, semantics);
+  semantics.vertex_stage = false;
+  semantics.count_loop_iterations = true;
   request.fullscreen_vertex = shader.fullscreen_vertex;
-  request.fragment_source = shader.fragment_text;
+  request.fragment_source = BrowserRenderText(shader.fragment_text, semantics);
+  request.loop_probe_output = std::string(glsl::kLoopProbeOutput);
   for (size_t i = 0; i < 4; ++i) {
     request.inputs.channels[i].kind = KindOf(options.channel_types[i]);
     if (options.channel_images[i].empty()) continue;
@@ -65,7 +80,7 @@ void RenderPrepared(const PreparedShader& shader, const RenderFileOptions& optio
   if (outcome.status == render::RenderStatus::kOk) {
     result.image = render::ToImage(outcome);
     if (shader.user != nullptr) {
-      DiagnosticList notes = render::LoopCapNotes(*shader.user);
+      DiagnosticList notes = render::LoopCapFindings(*shader.user, outcome, shader.anchor);
       result.diagnostics.insert(result.diagnostics.end(), notes.begin(), notes.end());
     }
   }

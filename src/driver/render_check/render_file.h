@@ -27,6 +27,9 @@ struct RenderFileOptions {
   const SourceFile* common = nullptr;         // ShaderToy Common code, if any
   // Where the WebGL2 port of WebGL1 code is registered; RenderFile sets it.
   SourceManager* sources = nullptr;
+  // Apply what browsers do to WebGL shaders before Mesa compiles them (zero
+  // initialisation, index clamping); false draws what a native driver would.
+  bool webgl_semantics = true;
 };
 
 struct RenderFileResult {

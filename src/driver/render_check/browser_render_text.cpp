@@ -1,0 +1,22 @@
+#include "driver/render_check/browser_render_text.h"
+
+#include "glsl/webgl_semantics/browser_semantics.h"
+#include "source/source_manager.h"
+
+namespace shaderport::driver {
+
+std::string BrowserRenderText(std::string_view text, const BrowserRenderTextOptions& options) {
+  glsl::BrowserSemanticsOptions semantics;
+  semantics.zero_initialize = options.webgl_semantics;
+  semantics.clamp_indices = options.webgl_semantics;
+  semantics.zero_out_parameters = false;
+  semantics.count_loop_iterations = options.count_loop_iterations;
+  semantics.vertex_stage = options.vertex_stage;
+  SourceManager local;  // the transform needs a file with an id
+  const SourceFile& file = local.Add("<render>", std::string(text), true);
+  const SourceFile* parts[] = {&file};
+  glsl::BrowserSemanticsResult result = glsl::ApplyBrowserSemantics(parts, semantics);
+  return std::move(result.texts.front());
+}
+
+}  // namespace shaderport::driver

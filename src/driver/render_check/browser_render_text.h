@@ -1,0 +1,21 @@
+// The text Mesa compiles for a render: the complete shader with what browsers do
+// to WebGL shaders applied (glsl/webgl_semantics), so that the picture is the
+// page's. The user's file and the port output are never changed.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace shaderport::driver {
+
+struct BrowserRenderTextOptions {
+  bool webgl_semantics = true;         // zero initialisation and index clamping
+  bool count_loop_iterations = false;  // add the loop-cap probe output (main fragment pass)
+  bool vertex_stage = false;
+};
+
+// Lines keep their places, so maps from Mesa's line numbers stay valid. Text that
+// does not parse cleanly is returned as it is (Mesa then reports the error).
+std::string BrowserRenderText(std::string_view text, const BrowserRenderTextOptions& options);
+
+}  // namespace shaderport::driver

@@ -1,0 +1,52 @@
+// What browsers do to every WebGL shader before a driver sees it, done to our own
+// tree as byte edits, so that a native GL (Mesa) or SPIR-V compile of the text
+// behaves as the page would. Copies ANGLE's WebGL translation
+// (src/compiler/translator/tree_ops in ANGLE):
+//  - InitializeUninitializedLocals / DeferGlobalInitializers: locals and globals
+//    without an initializer start at zero;
+//  - initOutputVariables / initGLPosition: shader outputs start at zero;
+//  - ClampIndirectIndices: a non-constant index into a vector, matrix or sized
+//    array is clamped into range, for reads and writes;
+// plus, on request, an iteration counter written to a second fragment output so
+// that a render can tell when llvmpipe's silent loop cap was reached.
+// See docs/browser-divergence.md ("Rendering") for each transform.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "source/source_file.h"
+
+namespace shaderport::glsl {
+
+// The fragment output that receives the loop counter: .x = loop body executions of
+// the pixel's invocation (what llvmpipe caps at 65535).
+inline constexpr std::string_view kLoopProbeOutput = "shaderport_loop_probe";
+
+struct BrowserSemanticsOptions {
+  bool zero_initialize = true;  // locals, globals, outputs
+  bool zero_out_parameters = false;
+  bool clamp_indices = true;
+  bool count_loop_iterations = false;  // fragment shaders only
+  bool vertex_stage = false;
+};
+
+struct BrowserSemanticsResult {
+  std::vector<std::string> texts;  // one per input part, edited (or as given)
+  bool applied = false;            // false: the text did not parse cleanly, left unchanged
+  bool loop_probe = false;         // the probe output was added
+  uint32_t initialized = 0;        // variables given a zero initial value
+  uint32_t clamped = 0;            // indices clamped
+  uint32_t counted_loops = 0;      // loops instrumented
+  uint32_t skipped = 0;            // places inside macros that could not be edited safely
+};
+
+// `parts` are preprocessed as one translation unit (e.g. a generated header, Common,
+// the pass, a generated main()). Edits never add or remove a line, so line maps
+// made for the unedited parts stay valid.
+BrowserSemanticsResult ApplyBrowserSemantics(std::span<const SourceFile* const> parts,
+                                             const BrowserSemanticsOptions& options);
+
+}  // namespace shaderport::glsl

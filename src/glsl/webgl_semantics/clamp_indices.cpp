@@ -1,0 +1,94 @@
+// A non-constant index into a vector, a matrix or a sized array becomes
+// `clamp(i, 0, N - 1)`, for reads and for writes, as ANGLE's ClampIndirectIndices
+// does for WebGL: an out-of-range index then reads or writes the last element
+// instead of undefined memory (a browser draws it; a native driver may not).
+// GLSL ES 1.00 has no integer clamp(): there the clamp is done in float, as ANGLE does.
+#include "glsl/sema/language.h"
+#include "glsl/syntax/visit.h"
+#include "glsl/webgl_semantics/semantics_context.h"
+
+namespace shaderport::glsl {
+namespace {
+
+constexpr int kMaxConstantDepth = 64;
+
+// Constant expressions: literals, const variables and operators/constructors on them.
+bool IsConstant(const Expr* expr, const SemanticModel& model, int depth = 0) {
+  if (expr == nullptr || depth > kMaxConstantDepth) return false;
+  switch (expr->kind) {
+    case NodeKind::kLiteralExpr:
+      return true;
+    case NodeKind::kIdentifierExpr: {
+      const uint32_t symbol = model.SymbolAt(expr->id);
+      return symbol != kNoSymbol && model.symbols[symbol].is_const;
+    }
+    case NodeKind::kParenExpr:
+      return IsConstant(expr->As<ParenExpr>()->inner, model, depth + 1);
+    case NodeKind::kUnaryExpr: {
+      const auto* unary = expr->As<UnaryExpr>();
+      return unary->op != UnaryOp::kPreIncrement && unary->op != UnaryOp::kPreDecrement &&
+             unary->op != UnaryOp::kPostIncrement && unary->op != UnaryOp::kPostDecrement &&
+             IsConstant(unary->operand, model, depth + 1);
+    }
+    case NodeKind::kBinaryExpr: {
+      const auto* binary = expr->As<BinaryExpr>();
+      return binary->op != BinaryOp::kComma && IsConstant(binary->lhs, model, depth + 1) &&
+             IsConstant(binary->rhs, model, depth + 1);
+    }
+    case NodeKind::kConditionalExpr: {
+      const auto* conditional = expr->As<ConditionalExpr>();
+      return IsConstant(conditional->condition, model, depth + 1) &&
+             IsConstant(conditional->if_true, model, depth + 1) &&
+             IsConstant(conditional->if_false, model, depth + 1);
+    }
+    case NodeKind::kCallExpr: {
+      const auto* call = expr->As<CallExpr>();
+      if (call->call_kind != CallKind::kConstructor) return false;
+      for (const Expr* argument : call->arguments) {
+        if (!IsConstant(argument, model, depth + 1)) return false;
+      }
+      return true;
+    }
+    default:
+      return false;
+  }
+}
+
+// Number of elements the index selects from; 0 when unknown or not clampable.
+int32_t IndexedSize(const Type& type) {
+  if (type.IsArray()) return type.array_size > 0 ? type.array_size : 0;
+  if (type.IsMatrix()) return type.columns;
+  if (type.IsVector()) return type.rows;
+  return 0;
+}
+
+}  // namespace
+
+void ClampIndirectIndices(SemanticsContext& c) {
+  VisitPreorder(c.tree, [&](const Node& node, uint32_t) {
+    const auto* index = node.As<IndexExpr>();
+    if (index == nullptr || index->base == nullptr || index->index == nullptr) return true;
+    if (IsConstant(index->index, c.model)) return true;
+    const int32_t size = IndexedSize(c.model.TypeOf(index->base->id));
+    const Type& index_type = c.model.TypeOf(index->index->id);
+    if (size <= 0 || !index_type.IsIntegral() || !index_type.IsScalar()) return true;
+    const auto span = c.edits.Span(*index->index);
+    if (!span) {
+      ++c.result.skipped;
+      return true;
+    }
+    const std::string last = std::to_string(size - 1);
+    if (c.model.version < kEssl300) {
+      c.edits.Insert(span->file, span->begin, "int(clamp(float(");
+      c.edits.Insert(span->file, span->end, "), 0.0, " + last + ".0))");
+    } else {
+      const bool is_uint = index_type.base == BaseType::kUint;
+      c.edits.Insert(span->file, span->begin, is_uint ? "clamp(int(" : "clamp((");
+      c.edits.Insert(span->file, span->end, "), 0, " + last + ")");
+    }
+    ++c.result.clamped;
+    return true;
+  });
+}
+
+}  // namespace shaderport::glsl

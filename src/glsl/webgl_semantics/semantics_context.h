@@ -1,0 +1,68 @@
+// Internal to the browser-semantics transforms: the analysed shader they read and
+// the collector of the byte edits they make (by file, since a translation unit may
+// span a generated header, Common and the pass).
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "glsl/lex/preprocessor.h"
+#include "glsl/sema/semantic_model.h"
+#include "glsl/syntax/ast.h"
+#include "glsl/webgl_semantics/browser_semantics.h"
+#include "source/edit.h"
+
+namespace shaderport::glsl {
+
+class EditCollector {
+ public:
+  explicit EditCollector(const PreprocessResult& preprocessed) : pp_(preprocessed) {}
+
+  // The bytes a node stands for in one file, when edits around it are safe: its
+  // tokens are written in the file, or it covers whole macro uses exactly.
+  std::optional<SourceRange> Span(const Node& node) const;
+  // Offset just after the `{` that opens a compound statement.
+  std::optional<SourceRange> AfterOpeningBrace(const CompoundStatement& body) const;
+
+  void Insert(FileId file, uint32_t at, std::string text) {
+    edits_[file].push_back({at, at, std::move(text)});
+  }
+  const std::map<FileId, std::vector<Edit>>& Edits() const { return edits_; }
+
+ private:
+  bool StartsExpansion(uint32_t token) const;
+  bool EndsExpansion(uint32_t token) const;
+
+  const PreprocessResult& pp_;
+  std::map<FileId, std::vector<Edit>> edits_;
+};
+
+struct SemanticsContext {
+  const SyntaxTree& tree;
+  const SemanticModel& model;
+  const BrowserSemanticsOptions& options;
+  std::vector<uint32_t> parent;  // by node id; kNoNode for the root
+  EditCollector& edits;
+  BrowserSemanticsResult& result;
+
+  const Node* Parent(const Node& node) const {
+    const uint32_t p = parent[node.id];
+    return p == kNoNode ? nullptr : &tree.NodeAt(p);
+  }
+};
+
+// The definition of main(), if any.
+const FunctionDeclaration* FindMainDefinition(const SyntaxTree& tree);
+
+// Statements inserted at the start of main() by several transforms, in a fixed order.
+struct MainPrologue {
+  std::vector<std::string> statements;
+};
+
+void ZeroInitializeVariables(SemanticsContext& context, MainPrologue& prologue);
+void ClampIndirectIndices(SemanticsContext& context);
+void CountLoopIterations(SemanticsContext& context, MainPrologue& prologue);
+
+}  // namespace shaderport::glsl

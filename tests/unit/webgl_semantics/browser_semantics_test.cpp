@@ -1,0 +1,161 @@
+// The browser-semantics transforms: exact output text for each behaviour, and every
+// output must still compile in glslang with the same number of lines.
+#include "glsl/webgl_semantics/browser_semantics.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "sema/glslang_oracle.h"
+#include "source/source_manager.h"
+
+namespace shaderport::glsl {
+namespace {
+
+constexpr std::string_view kHead = "#version 300 es\nprecision highp float;\nout vec4 o;\n";
+
+BrowserSemanticsResult Apply(std::string_view body, BrowserSemanticsOptions options = {}) {
+  SourceManager sources;
+  const SourceFile& file = sources.Add("t.frag", std::string(kHead) + std::string(body));
+  const SourceFile* parts[] = {&file};
+  BrowserSemanticsResult result = ApplyBrowserSemantics(parts, options);
+  const std::string& text = result.texts.front();
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'),
+            std::count(file.Text().begin(), file.Text().end(), '\n'));
+  const auto compiled = testing::CompileWithGlslang(
+      text, options.vertex_stage ? ShaderStage::kVertex : ShaderStage::kFragment);
+  EXPECT_TRUE(compiled.ok) << text << "\n" << compiled.log;
+  return result;
+}
+
+std::string Body(const BrowserSemanticsResult& result) {
+  return result.texts.front().substr(kHead.size());
+}
+
+TEST(BrowserSemantics, ZeroInitializesLocalsOfEveryType) {
+  const auto result = Apply(
+      "struct S { float a; ivec2 b; };\n"
+      "void main() { vec4 c; int i, j = 2; bool b; mat3 m; S s; float a[2]; uint u;\n"
+      "o = c; }\n");
+  EXPECT_EQ(Body(result),
+            "struct S { float a; ivec2 b; };\n"
+            "void main() { o = vec4(0.0); vec4 c = vec4(0.0); int i = 0, j = 2; bool b = false; "
+            "mat3 m = mat3(0.0); S s = S(0.0, ivec2(0)); float a[2] = float[2](0.0, 0.0); "
+            "uint u = 0u;\n"
+            "o = c; }\n");
+  EXPECT_EQ(result.initialized, 8U);  // the output o and seven locals
+}
+
+TEST(BrowserSemantics, ZeroInitializesGlobalsButNotUniformsOrConstants) {
+  const auto result = Apply(
+      "uniform float t; const float k = 1.0; vec3 g; float h[3];\n"
+      "void main() { o = vec4(g, t + k + h[0]); }\n");
+  EXPECT_EQ(Body(result),
+            "uniform float t; const float k = 1.0; vec3 g = vec3(0.0); float h[3] = float[3](0.0, "
+            "0.0, 0.0);\n"
+            "void main() { o = vec4(0.0); o = vec4(g, t + k + h[0]); }\n");
+}
+
+TEST(BrowserSemantics, LongArraysAreZeroedInALoop) {
+  const auto result = Apply("void main() { float a[100]; o = vec4(a[5]); }\n");
+  EXPECT_EQ(Body(result),
+            "void main() { o = vec4(0.0); float a[100]; for (int shaderport_i = 0; shaderport_i < "
+            "100; ++shaderport_i) a[shaderport_i] = 0.0; o = vec4(a[5]); }\n");
+}
+
+TEST(BrowserSemantics, OutParametersOnlyWhenAsked) {
+  const std::string body = "void f(out vec3 v, inout float w) { w += 1.0; }\nvoid main() { }\n";
+  EXPECT_EQ(Body(Apply(body)),
+            "void f(out vec3 v, inout float w) { w += 1.0; }\nvoid main() { o = vec4(0.0); }\n");
+  BrowserSemanticsOptions options;
+  options.zero_out_parameters = true;
+  EXPECT_EQ(Body(Apply(body, options)),
+            "void f(out vec3 v, inout float w) { v = vec3(0.0); w += 1.0; }\n"
+            "void main() { o = vec4(0.0); }\n");
+}
+
+TEST(BrowserSemantics, ClampsDynamicIndicesOnly) {
+  BrowserSemanticsOptions options;
+  options.zero_initialize = false;
+  const auto result = Apply(
+      "uniform int n; uniform uint u; const int K = 1;\n"
+      "void main() { vec3 c = vec3(0); float a[4] = float[4](1.,2.,3.,4.); mat2 m = mat2(1.);\n"
+      "c[n] = a[n + 1]; c[K] = a[2]; c.x = m[u][n]; o = vec4(c, 1.); }\n",
+      options);
+  EXPECT_EQ(Body(result),
+            "uniform int n; uniform uint u; const int K = 1;\n"
+            "void main() { vec3 c = vec3(0); float a[4] = float[4](1.,2.,3.,4.); mat2 m = "
+            "mat2(1.);\n"
+            "c[clamp((n), 0, 2)] = a[clamp((n + 1), 0, 3)]; c[K] = a[2]; c.x = "
+            "m[clamp(int(u), 0, 1)][clamp((n), 0, 1)]; o = vec4(c, 1.); }\n");
+  EXPECT_EQ(result.clamped, 4U);
+}
+
+TEST(BrowserSemantics, MacroUsesAreWrappedWholeOrLeftAlone) {
+  BrowserSemanticsOptions options;
+  options.zero_initialize = false;
+  const auto result = Apply(
+      "#define IDX (n * 2)\n#define AT(v, i) v[i]\nuniform int n;\n"
+      "void main() { vec3 c = vec3(0); c[IDX] = 1.0; o = vec4(AT(c, n)); }\n",
+      options);
+  EXPECT_EQ(Body(result),
+            "#define IDX (n * 2)\n#define AT(v, i) v[i]\nuniform int n;\n"
+            "void main() { vec3 c = vec3(0); c[clamp((IDX), 0, 2)] = 1.0; o = vec4(AT(c, n)); }\n");
+  EXPECT_EQ(result.skipped, 1U);
+}
+
+TEST(BrowserSemantics, CountsLoopIterationsIntoASecondOutput) {
+  BrowserSemanticsOptions options;
+  options.zero_initialize = false;
+  options.count_loop_iterations = true;
+  const auto result = Apply(
+      "void main() { float s = 0.0; for (int i = 0; i < 9; i++) s += 1.0;\n"
+      "while (s > 0.0) { s -= 2.0; } o = vec4(s); }\n",
+      options);
+  EXPECT_TRUE(result.loop_probe);
+  EXPECT_EQ(result.counted_loops, 2U);
+  EXPECT_EQ(result.texts.front(),
+            "#version 300 es\nprecision highp float;\nlayout(location = 0) out vec4 o;\n"
+            "layout(location = 1) out highp vec4 shaderport_loop_probe; int shaderport_loop_count "
+            "= 0; void main() { shaderport_loop_probe = vec4(0.0); float s = 0.0; for (int i = 0; "
+            "i < 9; i++) { shaderport_loop_probe.x = float(++shaderport_loop_count); s += 1.0; }\n"
+            "while (s > 0.0) { shaderport_loop_probe.x = float(++shaderport_loop_count); s -= "
+            "2.0; } o = vec4(s); }\n");
+}
+
+TEST(BrowserSemantics, VertexShadersZeroTheirOutputsAndPosition) {
+  SourceManager sources;
+  const SourceFile& file = sources.Add(
+      "t.vert", "#version 300 es\nin vec4 p; out vec2 uv;\nvoid main() { vec2 t; uv = t; }\n");
+  const SourceFile* parts[] = {&file};
+  BrowserSemanticsOptions options;
+  options.vertex_stage = true;
+  const auto result = ApplyBrowserSemantics(parts, options);
+  EXPECT_EQ(result.texts.front(),
+            "#version 300 es\nin vec4 p; out vec2 uv;\nvoid main() { gl_Position = vec4(0.0); uv "
+            "= vec2(0.0); vec2 t = vec2(0.0); uv = t; }\n");
+}
+
+TEST(BrowserSemantics, BrokenCodeIsLeftAsItIs) {
+  SourceManager sources;
+  const SourceFile& file = sources.Add("t.frag", "#version 300 es\nvoid main() { vec4 c; +; }\n");
+  const SourceFile* parts[] = {&file};
+  const auto result = ApplyBrowserSemantics(parts, {});
+  EXPECT_FALSE(result.applied);
+  EXPECT_EQ(result.texts.front(), file.Text());
+}
+
+TEST(BrowserSemantics, PartsAreEditedSeparately) {
+  SourceManager sources;
+  const SourceFile& header =
+      sources.Add("h", "#version 300 es\nprecision highp float;\nout vec4 o;\nvec3 g;\n");
+  const SourceFile& user = sources.Add("u", "void main() { float x; o = vec4(g, x); }\n");
+  const SourceFile* parts[] = {&header, &user};
+  const auto result = ApplyBrowserSemantics(parts, {});
+  EXPECT_EQ(result.texts[0],
+            "#version 300 es\nprecision highp float;\nout vec4 o;\nvec3 g = vec3(0.0);\n");
+  EXPECT_EQ(result.texts[1], "void main() { o = vec4(0.0); float x = 0.0; o = vec4(g, x); }\n");
+}
+
+}  // namespace
+}  // namespace shaderport::glsl
