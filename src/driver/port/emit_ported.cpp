@@ -1,14 +1,17 @@
 #include "driver/port/emit_ported.h"
 
+#include "driver/render_check/browser_render_text.h"
+
 namespace shaderport::driver {
 namespace {
 
 // Text the port copied from the user's file maps back to it; text a rule
 // inserted stays in the ported file, where the user can see it.
-SourceRange ToUserRange(const SourceRange& range, const PortResult& result, FileId ported) {
-  if (range.file != ported || !result.map.IsCopied(range.begin, range.end)) return range;
-  const auto [begin, end] = result.map.ToOriginalRange(range.begin, range.end);
-  return {result.file->Id(), begin, end};
+SourceRange ToUserRange(const SourceRange& range, const SourceMap& map, FileId user,
+                        FileId ported) {
+  if (range.file != ported || !map.IsCopied(range.begin, range.end)) return range;
+  const auto [begin, end] = map.ToOriginalRange(range.begin, range.end);
+  return {user, begin, end};
 }
 
 }  // namespace
@@ -16,17 +19,24 @@ SourceRange ToUserRange(const SourceRange& range, const PortResult& result, File
 EmittedOutput EmitPorted(PortResult& result, const toolchain::EmitOptions& options,
                          SourceManager& sources) {
   EmittedOutput emitted;
-  const SourceFile& ported = sources.Add(result.file->Name() + " (ported)", result.text, true);
   const toolchain::Stage stage = result.output_stage == Stage::kVertex
                                      ? toolchain::Stage::kVertex
                                      : toolchain::Stage::kFragment;
+  // Native targets do not zero-initialise or clamp indices as browsers do: the
+  // leg compiles the port with the browser's semantics written out.
+  BrowserRenderTextOptions semantics;
+  semantics.vertex_stage = stage == toolchain::Stage::kVertex;
+  EditResult with_semantics = BrowserRenderTextWithMap(result.text, semantics);
+  const SourceMap map = SourceMap::Compose(result.map, with_semantics.map);
+  const SourceFile& ported =
+      sources.Add(result.file->Name() + " (ported)", std::move(with_semantics.text), true);
   toolchain::EmitOptions emit_options = options;
   emit_options.shadertoy = result.kind.dialect == Dialect::kShaderToy;
   toolchain::EmitResult leg = toolchain::Emit(ported, stage, emit_options);
   for (Diagnostic& diagnostic : leg.diagnostics) {
-    diagnostic.range = ToUserRange(diagnostic.range, result, ported.Id());
+    diagnostic.range = ToUserRange(diagnostic.range, map, result.file->Id(), ported.Id());
     for (DiagnosticNote& note : diagnostic.notes) {
-      note.range = ToUserRange(note.range, result, ported.Id());
+      note.range = ToUserRange(note.range, map, result.file->Id(), ported.Id());
     }
     diagnostic.fixes.clear();  // the leg's findings carry no fixes for the user's text
     result.diagnostics.push_back(std::move(diagnostic));

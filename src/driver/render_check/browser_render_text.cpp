@@ -5,7 +5,8 @@
 
 namespace shaderport::driver {
 
-std::string BrowserRenderText(std::string_view text, const BrowserRenderTextOptions& options) {
+EditResult BrowserRenderTextWithMap(std::string_view text,
+                                    const BrowserRenderTextOptions& options) {
   glsl::BrowserSemanticsOptions semantics;
   semantics.zero_initialize = options.webgl_semantics;
   semantics.clamp_indices = options.webgl_semantics;
@@ -16,7 +17,11 @@ std::string BrowserRenderText(std::string_view text, const BrowserRenderTextOpti
   const SourceFile& file = local.Add("<render>", std::string(text), true);
   const SourceFile* parts[] = {&file};
   glsl::BrowserSemanticsResult result = glsl::ApplyBrowserSemantics(parts, semantics);
-  return std::move(result.texts.front());
+  return {std::move(result.texts.front()), std::move(result.maps.front())};
+}
+
+std::string BrowserRenderText(std::string_view text, const BrowserRenderTextOptions& options) {
+  return BrowserRenderTextWithMap(text, options).text;
 }
 
 }  // namespace shaderport::driver

@@ -6,6 +6,8 @@
 #include <string>
 #include <string_view>
 
+#include "source/edit.h"
+
 namespace shaderport::driver {
 
 struct BrowserRenderTextOptions {
@@ -17,5 +19,9 @@ struct BrowserRenderTextOptions {
 // Lines keep their places, so maps from Mesa's line numbers stay valid. Text that
 // does not parse cleanly is returned as it is (Mesa then reports the error).
 std::string BrowserRenderText(std::string_view text, const BrowserRenderTextOptions& options);
+
+// The same, with the map from the edited text back to `text` (for the SPIR-V leg,
+// whose diagnostics must still reach the user's columns).
+EditResult BrowserRenderTextWithMap(std::string_view text, const BrowserRenderTextOptions& options);
 
 }  // namespace shaderport::driver

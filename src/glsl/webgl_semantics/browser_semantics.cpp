@@ -62,7 +62,10 @@ std::vector<uint32_t> ParentsOf(const SyntaxTree& tree) {
 BrowserSemanticsResult ApplyBrowserSemantics(std::span<const SourceFile* const> parts,
                                              const BrowserSemanticsOptions& options) {
   BrowserSemanticsResult result;
-  for (const SourceFile* part : parts) result.texts.emplace_back(part->Text());
+  for (const SourceFile* part : parts) {
+    result.texts.emplace_back(part->Text());
+    result.maps.push_back(SourceMap::Identity(static_cast<uint32_t>(part->Text().size())));
+  }
   const PreprocessResult preprocessed = Preprocess(parts);
   if (HasErrors(preprocessed.diagnostics)) return result;
   ParseOptions parse_options;
@@ -103,6 +106,7 @@ BrowserSemanticsResult ApplyBrowserSemantics(std::span<const SourceFile* const> 
       continue;
     }
     result.texts[i] = std::move(edited->text);
+    result.maps[i] = std::move(edited->map);
   }
   result.applied = true;
   return result;

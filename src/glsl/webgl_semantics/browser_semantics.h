@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "source/edit.h"
 #include "source/source_file.h"
 
 namespace shaderport::glsl {
@@ -35,6 +36,7 @@ struct BrowserSemanticsOptions {
 
 struct BrowserSemanticsResult {
   std::vector<std::string> texts;  // one per input part, edited (or as given)
+  std::vector<SourceMap> maps;     // per part: edited text -> the part as given
   bool applied = false;            // false: the text did not parse cleanly, left unchanged
   bool loop_probe = false;         // the probe output was added
   uint32_t initialized = 0;        // variables given a zero initial value

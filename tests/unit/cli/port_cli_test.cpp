@@ -125,5 +125,27 @@ TEST(RulesCli, ExplainPrintsRulesAndCatalogEntries) {
   EXPECT_NE(entry.out.find("internal/error"), std::string::npos);
 }
 
+// Native targets do not zero-initialise or clamp as browsers do: the SPIR-V leg
+// compiles the port with both written out (docs/browser-divergence.md).
+TEST(PortCli, SpirvLegKeepsTheBrowsersInitialisationAndClamping) {
+  const fs::path dir = TempDir("semantics");
+  Write(dir / "golf.glsl",
+        "void mainImage(out vec4 O, in vec2 U) {\n"
+        "  vec4 c;\n"
+        "  c += vec4(0.5);\n"
+        "  vec3 col = vec3(0);\n"
+        "  col[int(U.x) / 9] = 1.0;\n"
+        "  O = c + vec4(col, 0.0);\n"
+        "}\n");
+  const CommandResult result = RunShaderport("port --emit essl-roundtrip golf.glsl", dir);
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("vec4 c = vec4(0.0);"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find(", 0, 2)] = 1.0;"), std::string::npos) << result.out;
+  // The WebGL2 port itself stays as the user wrote it: the browser does this.
+  const CommandResult plain = RunShaderport("port golf.glsl", dir);
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_EQ(plain.out.find("clamp("), std::string::npos) << plain.out;
+}
+
 }  // namespace
 }  // namespace shaderport::testing
