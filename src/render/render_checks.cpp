@@ -80,7 +80,7 @@ DiagnosticList CheckPixels(const RenderOutcome& outcome, const CheckContext& con
   DiagnosticList out;
   const size_t count = size_t{outcome.width} * outcome.height;
   if (count == 0 || outcome.pixels.size() != count * 4) return out;
-  size_t non_finite = 0, first_non_finite = 0;
+  size_t non_finite = 0, first_non_finite = 0, nan = 0;
   size_t sentinel = 0, first_sentinel = 0;
   size_t initial = 0, first_initial = 0;
   size_t valid = 0, black = 0, white = 0, zero = 0;
@@ -95,6 +95,7 @@ DiagnosticList CheckPixels(const RenderOutcome& outcome, const CheckContext& con
     if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]) ||
         !std::isfinite(p[3])) {
       if (non_finite++ == 0) first_non_finite = i;
+      if (std::isnan(p[0]) || std::isnan(p[1]) || std::isnan(p[2]) || std::isnan(p[3])) ++nan;
       continue;
     }
     if (p[0] >= kSiteInitialValue && p[1] >= kSiteInitialValue && p[2] >= kSiteInitialValue) {
@@ -112,11 +113,19 @@ DiagnosticList CheckPixels(const RenderOutcome& outcome, const CheckContext& con
     if (c[0] == 255 && c[1] == 255 && c[2] == 255) ++white;
   }
   const std::string of_total = " of " + std::to_string(count) + " pixels";
-  if (non_finite > 0) {
-    out.push_back(MakeDiagnostic(Severity::kError, "render/nan-or-inf", context.anchor,
+  // Browsers draw NaN as a colour that depends on the GPU (Chromium's SwiftShader
+  // gives 0 or 255 depending on how the NaN arose); infinities clamp to 0 or 1 in
+  // an 8-bit canvas, the same everywhere, but spread through float buffers.
+  if (nan > 0) {
+    out.push_back(MakeDiagnostic(Severity::kWarning, "render/nan-or-inf", context.anchor,
+                                 std::to_string(nan) + of_total + " are NaN, first at " +
+                                     At(outcome, first_non_finite) +
+                                     ": browsers draw NaN in a colour that depends on the GPU"));
+  } else if (non_finite > 0) {
+    out.push_back(MakeDiagnostic(Severity::kNote, "render/nan-or-inf", context.anchor,
                                  std::to_string(non_finite) + of_total +
-                                     " are NaN or infinite, first at " +
-                                     At(outcome, first_non_finite)));
+                                     " are infinite, first at " + At(outcome, first_non_finite) +
+                                     ": an 8-bit canvas clamps them, float buffers keep them"));
   }
   if (initial > 0) {
     out.push_back(
@@ -149,8 +158,8 @@ DiagnosticList CheckPixels(const RenderOutcome& outcome, const CheckContext& con
   } else if (black == valid) {
     out.push_back(
         MakeDiagnostic(Severity::kWarning, "render/all-black", context.anchor,
-                       "the picture is entirely black (is fragColor assigned? Mesa leaves an "
-                       "unassigned output at zero)"));
+                       "the picture is entirely black: is fragColor assigned? Browsers start "
+                       "an unassigned output at 0 (black), not at the site's initial 1e20"));
   } else if (white == valid) {
     out.push_back(
         MakeDiagnostic(Severity::kWarning, "render/blown-out", context.anchor,

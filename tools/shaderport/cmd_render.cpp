@@ -1,4 +1,5 @@
 // `shaderport render PATH -o OUT.png`: draws one shader headless and checks the picture.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -27,6 +28,8 @@ struct RenderArgs {
   std::string backend;
   double timeout_seconds = 10.0;
   bool hermetic = false;
+  bool native = false;
+  std::string fail_on = "error";
 };
 
 int Usage(const std::string& message) {
@@ -80,6 +83,15 @@ int RunRender(const RenderArgs& args) {
   options.render.timeout =
       std::chrono::milliseconds(static_cast<int64_t>(args.timeout_seconds * 1000));
   options.render.hermetic = args.hermetic;
+  options.webgl_semantics = !args.native;
+  Severity fail_on = Severity::kError;
+  if (args.fail_on == "warning") {
+    fail_on = Severity::kWarning;
+  } else if (args.fail_on == "note") {
+    fail_on = Severity::kNote;
+  } else if (args.fail_on != "error") {
+    return Usage("unknown --fail-on '" + args.fail_on + "' (error, warning or note)");
+  }
 
   SourceManager sources;
   if (!args.common.empty()) {
@@ -114,7 +126,10 @@ int RunRender(const RenderArgs& args) {
     report_options.tool_version = SHADERPORT_VERSION;
     const std::string text = FormatReport(report, OutputFormat::kText, report_options);
     std::fwrite(text.data(), 1, text.size(), stderr);
-    if (HasErrors(report.files.front().diagnostics) && code == kExitOk) code = kExitFindings;
+    const bool fails = std::any_of(report.files.front().diagnostics.begin(),
+                                   report.files.front().diagnostics.end(),
+                                   [&](const Diagnostic& d) { return d.severity >= fail_on; });
+    if (fails && code == kExitOk) code = kExitFindings;
   }
   if (result.image) {
     std::printf("%s: rendered %ux%u in %.0f ms%s%s\n", args.path.c_str(), result.image->width,
@@ -152,6 +167,11 @@ void AddRenderCommand(CLI::App& app, int& exit_code) {
   command->add_option("--timeout", args->timeout_seconds,
                       "Seconds before the render is killed (default 10)");
   command->add_flag("--hermetic", args->hermetic, "Do not use or fill Mesa's shader cache");
+  command->add_flag("--native", args->native,
+                    "Draw as a native driver would: without the browser's zero initialisation "
+                    "and index clamping");
+  command->add_option("--fail-on", args->fail_on,
+                      "Lowest severity that fails the run: error (default), warning or note");
   command->callback([args, &exit_code] { exit_code = RunRender(*args); });
 }
 

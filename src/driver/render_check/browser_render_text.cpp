@@ -10,7 +10,7 @@ EditResult BrowserRenderTextWithMap(std::string_view text,
   glsl::BrowserSemanticsOptions semantics;
   semantics.zero_initialize = options.webgl_semantics;
   semantics.clamp_indices = options.webgl_semantics;
-  semantics.zero_out_parameters = false;
+  semantics.zero_out_parameters = options.webgl_semantics;
   semantics.count_loop_iterations = options.count_loop_iterations;
   semantics.vertex_stage = options.vertex_stage;
   SourceManager local;  // the transform needs a file with an id

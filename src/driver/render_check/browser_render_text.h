@@ -11,7 +11,7 @@
 namespace shaderport::driver {
 
 struct BrowserRenderTextOptions {
-  bool webgl_semantics = true;         // zero initialisation and index clamping
+  bool webgl_semantics = true;  // zero initialisation (out parameters too) and index clamping
   bool count_loop_iterations = false;  // add the loop-cap probe output (main fragment pass)
   bool vertex_stage = false;
 };
