@@ -1,0 +1,109 @@
+// `render` draws what Chromium draws: every shader of tests/render-parity/shaders is
+// rendered (64x64, hermetic) and compared with the picture headless Chromium made of
+// it (tests/render-parity/chromium, regenerated as its README says). Tolerance: no
+// 8x8 block's mean R, G or B differs by more than 12/255. Shaders listed in
+// expected-differences.txt must report the named finding instead.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include "driver/render_check/render_file.h"
+#include "render/png_io.h"
+
+namespace shaderport::driver {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kDir = fs::path(SHADERPORT_SOURCE_DIR) / "tests" / "render-parity";
+constexpr int kBlock = 8;
+constexpr double kTolerance = 12.0;
+
+// The largest difference of an 8x8 block's mean R, G or B, in 1/255 steps.
+double WorstBlockDifference(const render::ImageRgba8& a, const render::ImageRgba8& b) {
+  double worst = 0;
+  for (uint32_t by = 0; by < a.height; by += kBlock) {
+    for (uint32_t bx = 0; bx < a.width; bx += kBlock) {
+      for (size_t c = 0; c < 3; ++c) {
+        double sum = 0;
+        int n = 0;
+        for (uint32_t y = by; y < std::min(by + kBlock, a.height); ++y) {
+          for (uint32_t x = bx; x < std::min(bx + kBlock, a.width); ++x) {
+            const size_t at = (size_t{y} * a.width + x) * 4 + c;
+            sum += int{a.pixels[at]} - int{b.pixels[at]};
+            ++n;
+          }
+        }
+        worst = std::max(worst, std::abs(sum / n));
+      }
+    }
+  }
+  return worst;
+}
+
+std::map<std::string, std::string> ExpectedDifferences() {
+  std::map<std::string, std::string> expected;
+  std::ifstream in(kDir / "expected-differences.txt");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    std::string name, rule;
+    if (fields >> name >> rule) expected[name] = rule;
+  }
+  return expected;
+}
+
+RenderFileResult Render(const fs::path& shader, bool webgl_semantics, SourceManager& sources) {
+  RenderFileOptions options;
+  options.base.width = 64;
+  options.base.height = 64;
+  options.render.hermetic = true;
+  options.webgl_semantics = webgl_semantics;
+  return RenderFile(shader, sources, options);
+}
+
+TEST(BrowserParity, RenderMatchesChromiumOrSaysWhyNot) {
+  const auto expected = ExpectedDifferences();
+  int shaders = 0, differ_natively = 0;
+  for (const auto& entry : fs::directory_iterator(kDir / "shaders")) {
+    const std::string name = entry.path().stem().string();
+    SCOPED_TRACE(name);
+    ++shaders;
+    render::ImageRgba8 reference;
+    std::string error;
+    ASSERT_TRUE(render::ReadPng((kDir / "chromium" / (name + ".png")).string(), reference, error))
+        << error;
+    SourceManager sources;
+    const RenderFileResult result = Render(entry.path(), true, sources);
+    ASSERT_TRUE(result.image.has_value());
+    ASSERT_EQ(result.image->width, reference.width);
+    ASSERT_EQ(result.image->height, reference.height);
+    const double difference = WorstBlockDifference(*result.image, reference);
+    const auto found = expected.find(name);
+    if (found == expected.end()) {
+      EXPECT_LE(difference, kTolerance);
+    } else {
+      EXPECT_TRUE(std::any_of(result.diagnostics.begin(), result.diagnostics.end(),
+                              [&](const Diagnostic& d) { return d.rule_id == found->second; }))
+          << "expected " << found->second;
+    }
+    SourceManager native_sources;
+    const RenderFileResult native = Render(entry.path(), false, native_sources);
+    if (native.image && WorstBlockDifference(*native.image, reference) > kTolerance) {
+      ++differ_natively;
+    }
+  }
+  EXPECT_GE(shaders, 10);
+  // The set exercises real differences: without the browser's semantics most differ.
+  EXPECT_GE(differ_natively, shaders / 2);
+}
+
+}  // namespace
+}  // namespace shaderport::driver
