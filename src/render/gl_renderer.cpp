@@ -56,10 +56,10 @@ ChannelOverrides OverridesFor(const std::array<int, 4>& channel_buffers,
 
 // A second colour attachment for the loop probe, when the program writes one at
 // location 1 (see RenderRequest::loop_probe_output).
-GLuint AttachLoopProbe(const GlFunctions& gl, GLuint program, const RenderRequest& request,
-                       GLsizei width, GLsizei height) {
-  if (request.loop_probe_output.empty() ||
-      gl.GetFragDataLocation(program, request.loop_probe_output.c_str()) != 1) {
+GLuint AttachProbe(const GlFunctions& gl, GLuint program, const RenderRequest& request,
+                   GLsizei width, GLsizei height) {
+  if (request.probe_output.empty() ||
+      gl.GetFragDataLocation(program, request.probe_output.c_str()) != 1) {
     return 0;
   }
   GLuint texture = 0;
@@ -73,13 +73,17 @@ GLuint AttachLoopProbe(const GlFunctions& gl, GLuint program, const RenderReques
   return texture;
 }
 
-void ReadLoopProbe(const GlFunctions& gl, GLsizei width, GLsizei height, RenderOutcome& outcome) {
+void ReadProbe(const GlFunctions& gl, GLsizei width, GLsizei height, RenderOutcome& outcome) {
   std::vector<float> probe(static_cast<size_t>(width) * static_cast<size_t>(height) * 4);
   gl.ReadBuffer(GL_COLOR_ATTACHMENT1);
   gl.ReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, probe.data());
   gl.ReadBuffer(GL_COLOR_ATTACHMENT0);
   outcome.max_loop_iterations = 0;
+  outcome.unassigned_output_pixels = 0;
   for (size_t i = 0; i < probe.size(); i += 4) {
+    // .y: 1 where the colour output was assigned; the clear sentinel where the
+    // fragment was discarded (not this check's business).
+    if (probe[i + 1] == 0.0f) ++outcome.unassigned_output_pixels;
     const float count = probe[i];
     if (!(count > 0.0f)) continue;  // not written (the clear sentinel is negative) or NaN
     const auto iterations = static_cast<int64_t>(std::min(count, 1e12f));
@@ -150,7 +154,7 @@ RenderOutcome RenderInThisProcess(const RenderRequest& request, BackendKind back
     outcome.message = "the RGBA32F framebuffer is incomplete";
     return outcome;
   }
-  const GLuint probe = AttachLoopProbe(gl, program, request, width, height);
+  const GLuint probe = AttachProbe(gl, program, request, width, height);
   CollectGlErrors(gl, "creating the framebuffers", outcome);
 
   GLuint vao = 0;
@@ -201,7 +205,7 @@ RenderOutcome RenderInThisProcess(const RenderRequest& request, BackendKind back
   outcome.pixels.resize(size_t{request.width} * request.height * 4);
   gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
   gl.ReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, outcome.pixels.data());
-  if (probe != 0) ReadLoopProbe(gl, width, height, outcome);
+  if (probe != 0) ReadProbe(gl, width, height, outcome);
   CollectGlErrors(gl, "glReadPixels", outcome);
   outcome.status = RenderStatus::kOk;
   // The process exits right after: GL objects die with the context.

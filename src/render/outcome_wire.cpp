@@ -53,6 +53,7 @@ std::string EncodeOutcome(const RenderOutcome& outcome) {
   for (const std::string& error : outcome.gl_errors) PutString(out, error);
   Put(out, outcome.max_loop_iterations);
   Put(out, outcome.loop_capped_pixels);
+  Put(out, outcome.unassigned_output_pixels);
   Put(out, outcome.width);
   Put(out, outcome.height);
   Put(out, static_cast<uint64_t>(outcome.pixels.size()));
@@ -79,7 +80,8 @@ std::optional<RenderOutcome> DecodeOutcome(const std::string& bytes) {
   for (std::string& error : outcome.gl_errors) {
     if (!in.GetString(error)) return std::nullopt;
   }
-  if (!in.Get(outcome.max_loop_iterations) || !in.Get(outcome.loop_capped_pixels)) {
+  if (!in.Get(outcome.max_loop_iterations) || !in.Get(outcome.loop_capped_pixels) ||
+      !in.Get(outcome.unassigned_output_pixels)) {
     return std::nullopt;
   }
   uint64_t count = 0;

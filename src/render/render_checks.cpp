@@ -217,6 +217,25 @@ DiagnosticList CheckOutcome(const RenderOutcome& outcome, const CheckContext& co
   }
   if (HasErrors(out)) return out;  // an undefined picture needs no further checks
   DiagnosticList pixels = CheckPixels(outcome, context);
+  const size_t count = size_t{outcome.width} * outcome.height;
+  const auto unassigned =
+      static_cast<size_t>(std::max<int64_t>(outcome.unassigned_output_pixels, 0));
+  if (unassigned > 0 && unassigned == count) {
+    // The probe knows why the picture is black: say that instead of guessing.
+    std::erase_if(pixels, [](const Diagnostic& d) { return d.rule_id == "render/all-black"; });
+    out.push_back(MakeDiagnostic(
+        Severity::kError, "render/unwritten-pixels", context.anchor,
+        "the colour output (fragColor) is never assigned: browsers draw every pixel as 0 "
+        "(they zero-initialise it; the site's initial 1e20 does not survive in Chromium), "
+        "native GL, Vulkan and Metal leave it undefined"));
+  } else if (unassigned > 0) {
+    out.push_back(MakeDiagnostic(
+        Severity::kWarning, "render/unassigned-output", context.anchor,
+        std::to_string(unassigned) + " of " + std::to_string(count) +
+            " pixels never assign the colour output (fragColor): browsers draw them as 0 "
+            "(black, or transparent for a WebGL2 output), native targets leave them undefined; "
+            "assign it on every path"));
+  }
   out.insert(out.end(), pixels.begin(), pixels.end());
   return out;
 }

@@ -24,6 +24,9 @@ enum class ChannelKind : uint8_t { k2D, kCube, k3D };
 struct ChannelInput {
   ChannelKind kind = ChannelKind::k2D;
   ImageRgba8 image;  // used for k2D when non-empty, else a procedural texture
+  // The site feeds nothing to this channel: no texture is bound, so sampling gives
+  // (0, 0, 0, 1) and iChannelResolution is 0, as in the browser.
+  bool unbound = false;
 };
 
 // Deterministic values for the ShaderToy uniforms (set only where the program has them).
@@ -61,8 +64,9 @@ struct RenderRequest {
   std::vector<BufferPass> buffer_passes;                  // ShaderToy multipass, in drawing order
   std::array<int, 4> channel_buffers = {-1, -1, -1, -1};  // the main pass's buffer inputs
   // A fragment output (location 1) whose .x counts the loop iterations of each pixel
-  // (added by the driver's render text); empty or absent in the program: not read.
-  std::string loop_probe_output;
+  // and whose .y is 1 where the colour output was assigned (added by the driver's
+  // render text); empty or absent in the program: not read.
+  std::string probe_output;
 };
 
 struct RenderOptions {
@@ -98,6 +102,8 @@ struct RenderOutcome {
   // and how many pixels reached llvmpipe's cap.
   int64_t max_loop_iterations = -1;
   uint32_t loop_capped_pixels = 0;
+  // Pixels whose probe says the colour output was never assigned (-1: not measured).
+  int64_t unassigned_output_pixels = -1;
   uint32_t width = 0;
   uint32_t height = 0;
   std::vector<float> pixels;  // RGBA32F, rows bottom-up as glReadPixels returns them

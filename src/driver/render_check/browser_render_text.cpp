@@ -11,7 +11,7 @@ EditResult BrowserRenderTextWithMap(std::string_view text,
   semantics.zero_initialize = options.webgl_semantics;
   semantics.clamp_indices = options.webgl_semantics;
   semantics.zero_out_parameters = options.webgl_semantics;
-  semantics.count_loop_iterations = options.count_loop_iterations;
+  semantics.add_render_probe = options.add_render_probe;
   semantics.vertex_stage = options.vertex_stage;
   SourceManager local;  // the transform needs a file with an id
   const SourceFile& file = local.Add("<render>", std::string(text), true);

@@ -11,8 +11,8 @@
 namespace shaderport::driver {
 
 struct BrowserRenderTextOptions {
-  bool webgl_semantics = true;  // zero initialisation (out parameters too) and index clamping
-  bool count_loop_iterations = false;  // add the loop-cap probe output (main fragment pass)
+  bool webgl_semantics = true;    // zero initialisation (out parameters too) and index clamping
+  bool add_render_probe = false;  // loop counts and output writes (main fragment pass)
   bool vertex_stage = false;
 };
 

@@ -53,10 +53,10 @@ void RenderPrepared(const PreparedShader& shader, const RenderFileOptions& optio
                               ? shader.vertex_text
                               : BrowserRenderText(shader.vertex_text, semantics);
   semantics.vertex_stage = false;
-  semantics.count_loop_iterations = true;
+  semantics.add_render_probe = true;
   request.fullscreen_vertex = shader.fullscreen_vertex;
   request.fragment_source = BrowserRenderText(shader.fragment_text, semantics);
-  request.loop_probe_output = std::string(glsl::kLoopProbeOutput);
+  request.probe_output = std::string(glsl::kRenderProbeOutput);
   for (size_t i = 0; i < 4; ++i) {
     request.inputs.channels[i].kind = KindOf(options.channel_types[i]);
     if (options.channel_images[i].empty()) continue;

@@ -34,6 +34,7 @@ int BufferIndexFromSource(const std::string& src) {
 struct PassInputs {
   validate::ChannelTypes types{};
   std::array<int, 4> buffers = {-1, -1, -1, -1};
+  std::array<bool, 4> fed{};  // the record names an input for the channel
 };
 
 PassInputs InputsOf(const nlohmann::json& pass) {
@@ -47,6 +48,7 @@ PassInputs InputsOf(const nlohmann::json& pass) {
     const auto c = static_cast<size_t>(channel);
     const std::string ctype = input.value("ctype", "");
     inputs.types[c] = validate::ChannelTypeFromCtype(ctype);
+    inputs.fed[c] = true;
     if (ctype == "buffer") inputs.buffers[c] = BufferIndexFromSource(input.value("src", ""));
   }
   return inputs;
@@ -115,6 +117,9 @@ RenderFileResult RenderShaderToyJson(std::string_view name, std::string_view jso
   }
   const PassInputs image_inputs = InputsOf(*image);
   pass_options.base.channel_buffers = image_inputs.buffers;
+  // A channel the record feeds nothing is empty on the site: nothing bound.
+  for (size_t c = 0; c < 4; ++c)
+    pass_options.base.inputs.channels[c].unbound = !image_inputs.fed[c];
   pass_options.channel_types = image_inputs.types;
   auto [composed, code] = compose(*image, validate::PassType::kImage, image_inputs);
   PreparedShader prepared;

@@ -82,9 +82,7 @@ BrowserSemanticsResult ApplyBrowserSemantics(std::span<const SourceFile* const> 
   MainPrologue prologue;
   if (options.zero_initialize) ZeroInitializeVariables(context, prologue);
   if (options.clamp_indices) ClampIndirectIndices(context);
-  if (options.count_loop_iterations && !options.vertex_stage) {
-    CountLoopIterations(context, prologue);
-  }
+  if (options.add_render_probe && !options.vertex_stage) AddRenderProbe(context, prologue);
   if (!prologue.statements.empty()) {
     const FunctionDeclaration* main = FindMainDefinition(parsed.tree);
     const auto at = main != nullptr ? edits.AfterOpeningBrace(*main->body) : std::nullopt;

@@ -7,8 +7,9 @@
 //  - initOutputVariables / initGLPosition: shader outputs start at zero;
 //  - ClampIndirectIndices: a non-constant index into a vector, matrix or sized
 //    array is clamped into range, for reads and writes;
-// plus, on request, an iteration counter written to a second fragment output so
-// that a render can tell when llvmpipe's silent loop cap was reached.
+// plus, on request, a probe written to a second fragment output, so that a render
+// can tell when llvmpipe's silent loop cap was reached and which pixels never
+// assigned the colour output.
 // See docs/browser-divergence.md ("Rendering") for each transform.
 #pragma once
 
@@ -22,27 +23,29 @@
 
 namespace shaderport::glsl {
 
-// The fragment output that receives the loop counter: .x = loop body executions of
-// the pixel's invocation (what llvmpipe caps at 65535).
-inline constexpr std::string_view kLoopProbeOutput = "shaderport_loop_probe";
+// The fragment output (location 1) of the render probe: .x = loop body executions
+// of the pixel's invocation (what llvmpipe caps at 65535), .y = 1 where the colour
+// output was assigned.
+inline constexpr std::string_view kRenderProbeOutput = "shaderport_probe";
 
 struct BrowserSemanticsOptions {
   bool zero_initialize = true;  // locals, globals, outputs
   bool zero_out_parameters = false;
   bool clamp_indices = true;
-  bool count_loop_iterations = false;  // fragment shaders only
+  bool add_render_probe = false;  // fragment shaders only
   bool vertex_stage = false;
 };
 
 struct BrowserSemanticsResult {
-  std::vector<std::string> texts;  // one per input part, edited (or as given)
-  std::vector<SourceMap> maps;     // per part: edited text -> the part as given
-  bool applied = false;            // false: the text did not parse cleanly, left unchanged
-  bool loop_probe = false;         // the probe output was added
-  uint32_t initialized = 0;        // variables given a zero initial value
-  uint32_t clamped = 0;            // indices clamped
-  uint32_t counted_loops = 0;      // loops instrumented
-  uint32_t skipped = 0;            // places inside macros that could not be edited safely
+  std::vector<std::string> texts;     // one per input part, edited (or as given)
+  std::vector<SourceMap> maps;        // per part: edited text -> the part as given
+  bool applied = false;               // false: the text did not parse cleanly, left unchanged
+  bool render_probe = false;          // the probe output was added
+  bool tracks_output_writes = false;  // ... and its .y marks colour-output writes
+  uint32_t initialized = 0;           // variables given a zero initial value
+  uint32_t clamped = 0;               // indices clamped
+  uint32_t counted_loops = 0;         // loops instrumented
+  uint32_t skipped = 0;               // places inside macros that could not be edited safely
 };
 
 // `parts` are preprocessed as one translation unit (e.g. a generated header, Common,

@@ -63,6 +63,6 @@ struct MainPrologue {
 
 void ZeroInitializeVariables(SemanticsContext& context, MainPrologue& prologue);
 void ClampIndirectIndices(SemanticsContext& context);
-void CountLoopIterations(SemanticsContext& context, MainPrologue& prologue);
+void AddRenderProbe(SemanticsContext& context, MainPrologue& prologue);
 
 }  // namespace shaderport::glsl

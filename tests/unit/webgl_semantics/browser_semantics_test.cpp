@@ -104,23 +104,49 @@ TEST(BrowserSemantics, MacroUsesAreWrappedWholeOrLeftAlone) {
   EXPECT_EQ(result.skipped, 1U);
 }
 
-TEST(BrowserSemantics, CountsLoopIterationsIntoASecondOutput) {
+TEST(BrowserSemantics, RenderProbeCountsLoopsAndMarksOutputWrites) {
   BrowserSemanticsOptions options;
   options.zero_initialize = false;
-  options.count_loop_iterations = true;
+  options.add_render_probe = true;
   const auto result = Apply(
       "void main() { float s = 0.0; for (int i = 0; i < 9; i++) s += 1.0;\n"
-      "while (s > 0.0) { s -= 2.0; } o = vec4(s); }\n",
+      "while (s > 0.0) { s -= 2.0; } if (s < 0.0) o = vec4(s); }\n",
       options);
-  EXPECT_TRUE(result.loop_probe);
+  EXPECT_TRUE(result.render_probe);
+  EXPECT_TRUE(result.tracks_output_writes);
   EXPECT_EQ(result.counted_loops, 2U);
   EXPECT_EQ(result.texts.front(),
             "#version 300 es\nprecision highp float;\nlayout(location = 0) out vec4 o;\n"
-            "layout(location = 1) out highp vec4 shaderport_loop_probe; int shaderport_loop_count "
-            "= 0; void main() { shaderport_loop_probe = vec4(0.0); float s = 0.0; for (int i = 0; "
-            "i < 9; i++) { shaderport_loop_probe.x = float(++shaderport_loop_count); s += 1.0; }\n"
-            "while (s > 0.0) { shaderport_loop_probe.x = float(++shaderport_loop_count); s -= "
-            "2.0; } o = vec4(s); }\n");
+            "layout(location = 1) out highp vec4 shaderport_probe; int shaderport_loop_count = "
+            "0; void main() { shaderport_probe = vec4(0.0, 0.0, 0.0, 0.0); float s = 0.0; for "
+            "(int i = 0; i < 9; i++) { shaderport_probe.x = float(++shaderport_loop_count); s += "
+            "1.0; }\n"
+            "while (s > 0.0) { shaderport_probe.x = float(++shaderport_loop_count); s -= 2.0; } "
+            "if (s < 0.0) { o = vec4(s); shaderport_probe.y = 1.0; } }\n");
+}
+
+TEST(BrowserSemantics, RenderProbeMarksWritesOfMainImagesOutParameter) {
+  BrowserSemanticsOptions options;
+  options.zero_initialize = false;
+  options.add_render_probe = true;
+  const auto result = Apply(
+      "void paint(out vec4 c) { c = vec4(1.0); }\n"
+      "void mainImage(out vec4 f, vec2 p) { for (int i = 0; i < 2; i++) f.x += 1.0;\n"
+      "if (p.x > 1.0) paint(f); }\n"
+      "void main() { vec4 c = vec4(0.0); mainImage(c, gl_FragCoord.xy); o = c; }\n",
+      options);
+  EXPECT_TRUE(result.tracks_output_writes);
+  EXPECT_NE(
+      result.texts.front().find(
+          "for (int i = 0; i < 2; i++) { shaderport_probe.x = float(++shaderport_loop_count); "
+          "{ f.x += 1.0; shaderport_probe.y = 1.0; } }"),
+      std::string::npos)
+      << result.texts.front();
+  EXPECT_NE(result.texts.front().find("if (p.x > 1.0) { paint(f); shaderport_probe.y = 1.0; }"),
+            std::string::npos);
+  // Writes of `o` in main() are not the site's output: mainImage's parameter is.
+  EXPECT_NE(result.texts.front().find("mainImage(c, gl_FragCoord.xy); o = c; }"),
+            std::string::npos);
 }
 
 TEST(BrowserSemantics, VertexShadersZeroTheirOutputsAndPosition) {
