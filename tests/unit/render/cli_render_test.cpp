@@ -77,6 +77,37 @@ TEST_F(CliRender, ShaderToyJsonRendersBuffersAsMultipass) {
   EXPECT_EQ(image.pixels[0], 128);  // two frames of +0.25 in Buffer A, shown in red
 }
 
+// On the site a channel the record feeds nothing has no texture: sampling gives
+// (0, 0, 0, 1) and iChannelResolution is 0. A fed channel gets a stand-in texture.
+TEST_F(CliRender, ShaderToyJsonChannelsWithoutInputAreUnbound) {
+  const std::string code =
+      "void mainImage(out vec4 c, in vec2 p) {\n"
+      "  c = vec4(texture(iChannel1, p / iResolution.xy).rgb, 1.0) +\n"
+      "      vec4(0.0, 0.0, iChannelResolution[1].x, 0.0);\n}\n";
+  const std::string dir = ::testing::TempDir();
+  auto render = [&](const nlohmann::json& inputs, const std::string& name) {
+    nlohmann::json shader;
+    shader["passes"] = nlohmann::json::array(
+        {{{"type", "image"}, {"name", "Image"}, {"code", code}, {"inputs", inputs}}});
+    std::ofstream(dir + "/" + name + ".json") << shader.dump();
+    const CliRun run = RunCli("render --hermetic --size 8x8 " + dir + "/" + name + ".json -o " +
+                              dir + "/" + name + ".png");
+    ImageRgba8 image;
+    std::string error;
+    EXPECT_TRUE(ReadPng(dir + "/" + name + ".png", image, error)) << error << run.output;
+    return image;
+  };
+  const ImageRgba8 empty = render(nlohmann::json::array(), "unbound-channel");
+  ASSERT_EQ(empty.pixels.size(), 8u * 8u * 4u);
+  for (size_t i = 0; i < empty.pixels.size(); i += 4) {
+    ASSERT_EQ(empty.pixels[i] + empty.pixels[i + 1] + empty.pixels[i + 2], 0) << i;
+  }
+  const ImageRgba8 fed = render(
+      {{{"channel", 1}, {"ctype", "texture"}, {"src", "/media/a/noise.png"}}}, "fed-channel");
+  ASSERT_EQ(fed.pixels.size(), 8u * 8u * 4u);
+  EXPECT_EQ(fed.pixels[2], 255);  // iChannelResolution[1].x is the stand-in's size
+}
+
 TEST_F(CliRender, EndlessShaderIsKilledAndReported) {
   const std::string path = ::testing::TempDir() + "/render-endless.glsl";
   std::ofstream(path) << "#define S(x) x = sin(x) * cos(x * 1.1) + 0.1;\n"

@@ -1,0 +1,131 @@
+#!/usr/bin/env python3
+"""Sort render mismatches into float-precision ones and the rest, by experiment.
+
+A picture that differs between `shaderport render` (llvmpipe) and Chromium (SwiftShader)
+is either wrong (a semantic difference: shaderport must fix it) or chaotic: the shader
+amplifies last-bit differences of float arithmetic (hash noise built on sin, fract of
+large numbers, iterated maps), which no two GPUs agree on. This script tests each
+mismatch for the second kind with two perturbations that change nothing a person could
+see in a well-conditioned shader, rendering both with shaderport:
+
+  sin/cos  every sin and cos gets its argument reduced to [0, 2*pi) first (a different
+           but equally valid implementation of the same functions);
+  time     iTime = 1 + 2^-20 instead of 1 (one part in a million).
+
+If either perturbation alone moves shaderport's own picture beyond the comparison
+tolerance (8x8 block means, 12/255), the picture depends on float precision and the
+mismatch is classified `precision (sin/cos)` or `precision (iTime)`; otherwise it is
+`unexplained` and needs a look by hand.
+
+Run (from the repository root), after measure_render_parity.py --keep DIR:
+  python3 tools/browser/classify_mismatches.py --keep DIR --report REPORT.md -o causes.json
+The output maps id -> cause (JSON), usable as measure_render_parity.py --causes.
+Python 3 standard library only.
+"""
+
+import argparse
+import concurrent.futures
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import compare_pictures  # noqa: E402
+
+# Defined before the macros, so the functions call the real built-ins.
+REDUCED_TRIG = "".join(
+    "%s shaderport_%s(%s x) { return %s(x - 6.28318530718 * floor(x / 6.28318530718)); }\n"
+    % (t, f, t, f) for f in ("sin", "cos") for t in ("float", "vec2", "vec3", "vec4")
+) + "#define sin shaderport_sin\n#define cos shaderport_cos\n"
+
+
+def with_reduced_trig(code):
+    """The Image code with range-reduced sin/cos, kept after any #version/#extension lines."""
+    lines = code.split("\n")
+    insert = 0
+    for i, line in enumerate(lines):
+        if re.match(r"\s*#\s*(version|extension)\b", line):
+            insert = i + 1
+    return "\n".join(lines[:insert] + [REDUCED_TRIG] + lines[insert:])
+
+
+def render(binary, record, png, extra=()):
+    with tempfile.TemporaryDirectory() as tmp:
+        path = os.path.join(tmp, "record.json")
+        with open(path, "w", encoding="utf-8") as f:
+            json.dump(record, f)
+        cmd = [binary, "render", "--hermetic", "--size", "64x64", *extra, path, "-o", png]
+        subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, timeout=120)
+    return os.path.isfile(png)
+
+
+def differs(a, b):
+    if not (os.path.isfile(a) and os.path.isfile(b)):
+        return None
+    return not compare_pictures.compare_files(a, b)[0]
+
+
+def classify(job):
+    binary, directory = job
+    record_path = os.path.join(directory, "record.json")
+    with open(record_path, encoding="utf-8") as f:
+        record = json.load(f)
+    base = os.path.join(directory, "classify-base.png")
+    trig = os.path.join(directory, "classify-trig.png")
+    time = os.path.join(directory, "classify-time.png")
+    render(binary, record, base)
+    perturbed = json.loads(json.dumps(record))
+    for p in perturbed["passes"]:
+        p["code"] = with_reduced_trig(p["code"])
+    render(binary, perturbed, trig)
+    render(binary, record, time, ("--time", repr(1.0 + 2.0 ** -20)))
+    if differs(base, trig):
+        return "precision (sin/cos)"
+    if differs(base, time):
+        return "precision (iTime)"
+    if not os.path.isfile(base):
+        return "shaderport failed"
+    return "unexplained"
+
+
+def mismatch_ids(report):
+    ids = []
+    in_table = False
+    with open(report, encoding="utf-8") as f:
+        for line in f:
+            if line.startswith("## "):
+                in_table = line.strip() == "## Mismatches"
+            m = re.match(r"\| \[(\w+)\]", line)
+            if in_table and m:
+                ids.append(m.group(1))
+    return ids
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--keep", required=True, help="the --keep DIR of measure_render_parity.py")
+    ap.add_argument("--report", required=True, help="its Markdown report (the mismatch table)")
+    ap.add_argument("--shaderport", default="build/release/shaderport", help="shaderport binary")
+    ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("-o", "--output", required=True, help="JSON {id: cause}")
+    args = ap.parse_args()
+    ids = mismatch_ids(args.report)
+    jobs = [(os.path.abspath(args.shaderport), os.path.join(args.keep, i)) for i in ids]
+    with concurrent.futures.ProcessPoolExecutor(max_workers=args.jobs) as pool:
+        causes = dict(zip(ids, pool.map(classify, jobs)))
+    with open(args.output, "w", encoding="utf-8") as f:
+        json.dump(causes, f, indent=1, sort_keys=True)
+        f.write("\n")
+    counts = {}
+    for cause in causes.values():
+        counts[cause] = counts.get(cause, 0) + 1
+    for cause, n in sorted(counts.items(), key=lambda x: -x[1]):
+        print("%4d  %s" % (n, cause))
+
+
+if __name__ == "__main__":
+    main()
