@@ -11,6 +11,8 @@ namespace shaderport::rules {
 
 // clang-format off
 // ---- rule factories (sorted by rule id; one line per rule) ----
+const rule::Rule& PortabilityIndexRangeRule();  // portability/index-range
+const rule::Rule& PortabilityUninitializedReadRule();  // portability/uninitialized-read
 const rule::Rule& ShadertoyChannelTypesRule();  // shadertoy/channel-types
 const rule::Rule& ShadertoyGlobalTimeRule();  // shadertoy/global-time
 const rule::Rule& ShadertoyMainWrapperRule();  // shadertoy/main-wrapper

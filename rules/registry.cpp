@@ -11,6 +11,8 @@ std::vector<const rule::Rule*> BuildRegistry() {
   std::vector<const rule::Rule*> list = {
       // clang-format off
       // ---- rules (sorted by rule id; one line per rule: &FooRule(),) ----
+      &PortabilityIndexRangeRule(),  // portability/index-range
+      &PortabilityUninitializedReadRule(),  // portability/uninitialized-read
       &ShadertoyChannelTypesRule(),  // shadertoy/channel-types
       &ShadertoyGlobalTimeRule(),  // shadertoy/global-time
       &ShadertoyMainWrapperRule(),  // shadertoy/main-wrapper
@@ -64,7 +66,8 @@ std::vector<const rule::Rule*> RulesForMode(rule::PortMode mode) {
   for (const rule::Rule* r : AllRules()) {
     const rule::RuleScope scope = r->Info().scope;
     if (scope == rule::RuleScope::kCheck) continue;
-    if (mode == rule::PortMode::kPort || scope == rule::RuleScope::kAlways) selected.push_back(r);
+    const bool every_mode = scope == rule::RuleScope::kAlways || scope == rule::RuleScope::kLint;
+    if (mode == rule::PortMode::kPort || every_mode) selected.push_back(r);
   }
   return selected;
 }
@@ -72,7 +75,8 @@ std::vector<const rule::Rule*> RulesForMode(rule::PortMode mode) {
 std::vector<const rule::Rule*> CheckRules() {
   std::vector<const rule::Rule*> selected;
   for (const rule::Rule* r : AllRules()) {
-    if (r->Info().scope == rule::RuleScope::kCheck) selected.push_back(r);
+    const rule::RuleScope scope = r->Info().scope;
+    if (scope == rule::RuleScope::kCheck || scope == rule::RuleScope::kLint) selected.push_back(r);
   }
   return selected;
 }

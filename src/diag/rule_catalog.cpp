@@ -14,6 +14,7 @@ constexpr auto kUnsorted = std::to_array<RuleDescription>({
 #include "diag/catalog/input.def"
 #include "diag/catalog/internal.def"
 #include "diag/catalog/port.def"
+#include "diag/catalog/portability.def"
 #include "diag/catalog/preprocessor.def"
 #include "diag/catalog/render.def"
 #include "diag/catalog/semantic.def"

@@ -20,7 +20,10 @@ namespace shaderport::rule {
 //    strict typing, reserved names in ES 3.00 code, ...
 //  - kCheck: only in `shaderport check`: what the WebGL target's compiler (the
 //    browser) rejects or warns about beyond glslang. Such rules never fix.
-enum class RuleScope { kPort, kAlways, kCheck };
+//  - kLint: reported by `shaderport check`, and its safe fixes are applied by
+//    `shaderport fix` and `shaderport port`: code that works in browsers only
+//    because they define what native targets leave undefined (portability/*).
+enum class RuleScope { kPort, kAlways, kCheck, kLint };
 
 struct RuleInfo {
   std::string_view id;       // "category/kebab-name", also listed in src/diag/catalog/*.def

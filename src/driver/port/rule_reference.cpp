@@ -14,19 +14,28 @@ std::string CodeBlock(std::string_view code) {
 
 std::string_view ScopeName(rule::RuleScope scope) {
   switch (scope) {
-    case rule::RuleScope::kAlways: return "always";
-    case rule::RuleScope::kCheck: return "check";
-    case rule::RuleScope::kPort: break;
+    case rule::RuleScope::kAlways:
+      return "always";
+    case rule::RuleScope::kCheck:
+      return "check";
+    case rule::RuleScope::kLint:
+      return "lint";
+    case rule::RuleScope::kPort:
+      break;
   }
   return "port";
 }
 
 std::string ScopeLine(rule::RuleScope scope) {
   switch (scope) {
-    case rule::RuleScope::kAlways: return "Scope: always (`shaderport fix` and `shaderport port`)\n\n";
+    case rule::RuleScope::kAlways:
+      return "Scope: always (`shaderport fix` and `shaderport port`)\n\n";
     case rule::RuleScope::kCheck:
       return "Scope: check (`shaderport check`: what the WebGL target rejects beyond glslang)\n\n";
-    case rule::RuleScope::kPort: break;
+    case rule::RuleScope::kLint:
+      return "Scope: lint (`check` reports it; `fix` and `port` apply the fix)\n\n";
+    case rule::RuleScope::kPort:
+      break;
   }
   return "Scope: port (`shaderport port` only)\n\n";
 }
@@ -61,8 +70,7 @@ std::string RulesMarkdown() {
     std::string anchor(info.id);  // GitHub drops '/' from heading anchors
     std::erase(anchor, '/');
     text += "| [" + std::string(info.id) + "](#" + anchor + ") | " +
-            std::string(ScopeName(info.scope)) + " | " +
-            std::string(info.summary) + " |\n";
+            std::string(ScopeName(info.scope)) + " | " + std::string(info.summary) + " |\n";
   }
   text += "\n";
   for (const rule::Rule* r : all) text += RuleSection(*r);

@@ -1,0 +1,136 @@
+#include "rules/portability/portability_support.h"
+
+#include "glsl/sema/builtins.h"
+#include "glsl/syntax/visit.h"
+
+namespace shaderport::rules::portability {
+
+const glsl::Expr* Unparenthesized(const glsl::Expr* expr) {
+  while (expr != nullptr && expr->kind == glsl::NodeKind::kParenExpr) {
+    expr = static_cast<const glsl::ParenExpr*>(expr)->inner;
+  }
+  return expr;
+}
+
+namespace {
+
+ArgumentUse FromQualifier(glsl::ParamQualifier qualifier) {
+  switch (qualifier) {
+    case glsl::ParamQualifier::kOut:
+      return ArgumentUse::kWrite;
+    case glsl::ParamQualifier::kInOut:
+      return ArgumentUse::kReadWrite;
+    case glsl::ParamQualifier::kIn:
+      break;
+  }
+  return ArgumentUse::kRead;
+}
+
+// An unresolved built-in call: unknown when some overload writes that argument.
+ArgumentUse AnyBuiltinOverload(std::string_view name, size_t index) {
+  for (const glsl::BuiltinFunction* overload : glsl::BuiltinOverloads(name)) {
+    if (index < overload->params.size() &&
+        overload->params[index].qualifier != glsl::ParamQualifier::kIn) {
+      return ArgumentUse::kUnknown;
+    }
+  }
+  return ArgumentUse::kRead;
+}
+
+}  // namespace
+
+ArgumentUse ArgumentUseOf(const rule::RuleContext& context, const glsl::CallExpr& call,
+                          size_t index) {
+  if (call.call_kind != glsl::CallKind::kFunction) return ArgumentUse::kRead;
+  const glsl::SemanticModel& model = context.Model();
+  if (const auto found = model.builtin_calls.find(call.id); found != model.builtin_calls.end()) {
+    const glsl::BuiltinFunction* overload = found->second;
+    if (overload == nullptr) return AnyBuiltinOverload(call.callee.text, index);
+    if (index >= overload->params.size()) return ArgumentUse::kRead;
+    return FromQualifier(overload->params[index].qualifier);
+  }
+  const uint32_t symbol = model.SymbolAt(call.id);
+  if (symbol == glsl::kNoSymbol || symbol >= model.symbols.size()) {
+    return glsl::IsBuiltinFunctionName(call.callee.text)
+               ? AnyBuiltinOverload(call.callee.text, index)
+               : ArgumentUse::kUnknown;
+  }
+  const glsl::Symbol& function = model.symbols[symbol];
+  if (function.kind == glsl::SymbolKind::kBuiltinFunction) {
+    return AnyBuiltinOverload(call.callee.text, index);
+  }
+  if (function.kind != glsl::SymbolKind::kFunction) return ArgumentUse::kUnknown;
+  const uint32_t node = function.declaration;
+  if (node == glsl::kNoNode || node >= context.Tree().NodeCount()) return ArgumentUse::kUnknown;
+  const auto* declaration = context.Tree().NodeAt(node).As<glsl::FunctionDeclaration>();
+  if (declaration == nullptr) return ArgumentUse::kUnknown;
+  if (index >= declaration->parameters.size()) return ArgumentUse::kRead;
+  const glsl::QualifierList& qualifiers = declaration->parameters[index]->qualifiers;
+  if (qualifiers.Has(glsl::QualifierKind::kInOut)) return ArgumentUse::kReadWrite;
+  if (qualifiers.Has(glsl::QualifierKind::kOut)) return ArgumentUse::kWrite;
+  return ArgumentUse::kRead;
+}
+
+const glsl::IdentifierExpr* ChainRoot(const glsl::Expr* expr) {
+  while (expr != nullptr) {
+    switch (expr->kind) {
+      case glsl::NodeKind::kParenExpr:
+        expr = static_cast<const glsl::ParenExpr*>(expr)->inner;
+        break;
+      case glsl::NodeKind::kMemberExpr:
+        expr = static_cast<const glsl::MemberExpr*>(expr)->object;
+        break;
+      case glsl::NodeKind::kIndexExpr:
+        expr = static_cast<const glsl::IndexExpr*>(expr)->base;
+        break;
+      case glsl::NodeKind::kIdentifierExpr:
+        return static_cast<const glsl::IdentifierExpr*>(expr);
+      default:
+        return nullptr;
+    }
+  }
+  return nullptr;
+}
+
+std::optional<std::vector<int>> SwizzleComponents(std::string_view name) {
+  static constexpr std::string_view kSets[] = {"xyzw", "rgba", "stpq"};
+  if (name.empty() || name.size() > 4) return std::nullopt;
+  for (std::string_view set : kSets) {
+    std::vector<int> components;
+    for (char c : name) {
+      const size_t at = set.find(c);
+      if (at == std::string_view::npos) break;
+      components.push_back(static_cast<int>(at));
+    }
+    if (components.size() == name.size()) return components;
+  }
+  return std::nullopt;
+}
+
+void ForEachWrittenExpr(const rule::RuleContext& context, const glsl::Node& start,
+                        const std::function<void(const glsl::Expr& target)>& fn) {
+  glsl::VisitPreorder(start, [&](const glsl::Node& node, uint32_t) {
+    if (const auto* assignment = node.As<glsl::AssignmentExpr>()) {
+      if (assignment->lhs != nullptr) fn(*assignment->lhs);
+    } else if (const auto* unary = node.As<glsl::UnaryExpr>()) {
+      if (unary->op >= glsl::UnaryOp::kPreIncrement && unary->operand != nullptr) {
+        fn(*unary->operand);
+      }
+    } else if (const auto* call = node.As<glsl::CallExpr>()) {
+      for (size_t i = 0; i < call->arguments.size(); ++i) {
+        if (call->arguments[i] != nullptr &&
+            ArgumentUseOf(context, *call, i) != ArgumentUse::kRead) {
+          fn(*call->arguments[i]);
+        }
+      }
+    }
+    return true;
+  });
+}
+
+bool InThisFile(const rule::RuleContext& context, const SourceRange& range) {
+  return range.file == context.File().Id() && range.begin <= range.end &&
+         range.end <= context.Text().size();
+}
+
+}  // namespace shaderport::rules::portability

@@ -1,0 +1,6 @@
+precision mediump float;
+uniform float u;
+void main() {
+  float x;
+  gl_FragColor = vec4(x * u);
+}
