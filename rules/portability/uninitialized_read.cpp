@@ -449,7 +449,11 @@ class FunctionAnalysis {
       }
     });
     auto learn = [&](uint32_t symbol, const glsl::Expr* value) {
-      if (symbol >= model_.symbols.size() || !model_.symbols[symbol].type.IsScalar()) return;
+      // Locals only: a call may change a global behind our back.
+      if (symbol >= model_.symbols.size() || !model_.symbols[symbol].type.IsScalar() ||
+          model_.symbols[symbol].scope == 0 || model_.symbols[symbol].scope == glsl::kNoScope) {
+        return;
+      }
       const portability::Range range = FirstValue(value, known);
       if (std::isfinite(range.lo) || std::isfinite(range.hi)) known[symbol] = range;
     };
@@ -581,10 +585,15 @@ class FunctionAnalysis {
       case glsl::NodeKind::kIfStatement: {
         const auto* statement = static_cast<const glsl::IfStatement*>(node);
         Eval(statement->condition, depth + 1);
+        // A condition whose value is known (`#define MODE 1` ... `if (MODE == 1)`)
+        // takes one branch only; the other is never run.
+        const portability::Range condition = FirstValue(statement->condition, *known);
         const State before = state_;
+        if (condition.SurelyFalse()) state_.reachable = false;
         Statement(statement->then_branch, depth + 1);
         const State after_then = state_;
         state_ = before;
+        if (condition.SurelyTrue()) state_.reachable = false;
         Statement(statement->else_branch, depth + 1);
         state_ = Join(after_then, state_);
         return;
@@ -650,12 +659,12 @@ class FunctionAnalysis {
 
   void FixDeclaration(const Slot& slot, Diagnostic& diagnostic) const {
     const glsl::Declarator& declarator = *slot.declarator;
-    if (context_.InMacro(declarator.range) ||
-        !portability::InThisFile(context_, declarator.range)) {
+    if (context_.InMacro(declarator.range)) {
       diagnostic.notes.push_back(
           {declarator.name.range, "not fixed automatically: the declaration comes from a macro"});
       return;
     }
+    if (!portability::InThisFile(context_, declarator.range)) return;  // fixed with its file
     const auto zero = ZeroOf(slot);
     if (!zero) {
       diagnostic.notes.push_back(
@@ -674,6 +683,7 @@ class FunctionAnalysis {
                           tokens[body.first_token].macro_use == glsl::kNoMacroUse &&
                           tokens[body.first_token].text == "{" &&
                           portability::InThisFile(context_, tokens[body.first_token].spelling);
+    if (!portability::InThisFile(context_, slot.parameter->range)) return;
     if (!brace_ok || context_.InMacro(slot.parameter->range)) {
       diagnostic.notes.push_back(
           {slot.parameter->name.range, "not fixed automatically: the function comes from a macro"});

@@ -322,6 +322,15 @@ Range ValueRanges::Binary(const glsl::BinaryExpr& binary, int depth) const {
 }
 
 Range ValueRanges::Call(const glsl::CallExpr& call, int depth) const {
+  if (call.call_kind == glsl::CallKind::kMethod) {  // `a.length()` of a sized array
+    const glsl::Type type = call.object != nullptr ? model_.TypeOf(call.object->id) : glsl::Type{};
+    if (call.callee.text != "length") return ByType(call);
+    if (type.IsArray() && type.array_size > 0)
+      return {double(type.array_size), double(type.array_size)};
+    if (type.IsVector()) return {double(type.rows), double(type.rows)};
+    if (type.IsMatrix()) return {double(type.columns), double(type.columns)};
+    return ByType(call);
+  }
   if (call.call_kind == glsl::CallKind::kConstructor) {
     const glsl::Type& type = model_.TypeOf(call.id);
     if (call.arguments.size() != 1 || !type.IsScalar()) return ByType(call);
