@@ -522,20 +522,32 @@ class FunctionAnalysis {
     state_ = exit;
   }
 
-  void Switch(const glsl::SwitchStatement& statement, int depth) {
+  void Switch(const glsl::SwitchStatement& statement, const KnownValues& known, int depth) {
     Eval(statement.selector, depth + 1);
     const State selected = state_;
     state_.reachable = false;  // nothing runs before the first label
     bool has_default = false;
+    std::vector<double> labels;
     jumps_.push_back({false, {}, {}});
     if (statement.body != nullptr) {
       for (const glsl::Node* child : statement.body->statements) {
         if (const auto* label = child != nullptr ? child->As<glsl::CaseLabel>() : nullptr) {
           has_default = has_default || label->value == nullptr;
+          const portability::Range value = ranges_.Of(label->value);
+          if (label->value != nullptr && value.Single()) labels.push_back(value.lo);
           state_ = Join(state_, selected);
           continue;
         }
         Statement(child, depth + 1);
+      }
+    }
+    // Labels for every value the selector can take (`switch (k % 4u)`, cases 0u..3u)
+    // are as good as a default.
+    const portability::Range values = FirstValue(statement.selector, known);
+    if (!has_default && values.Finite() && values.hi - values.lo < 64.0) {
+      has_default = true;
+      for (double v = std::ceil(values.lo); v <= values.hi; v += 1.0) {
+        has_default = has_default && std::find(labels.begin(), labels.end(), v) != labels.end();
       }
     }
     JumpTarget target = std::move(jumps_.back());
@@ -628,7 +640,7 @@ class FunctionAnalysis {
         return;
       }
       case glsl::NodeKind::kSwitchStatement:
-        Switch(*static_cast<const glsl::SwitchStatement*>(node), depth);
+        Switch(*static_cast<const glsl::SwitchStatement*>(node), *known, depth);
         return;
       case glsl::NodeKind::kBreakStatement:
         if (!jumps_.empty()) jumps_.back().breaks.push_back(state_);
