@@ -20,7 +20,9 @@
 // followed per component (`O.rgb = c; O.a = 1.0;` writes all of O); a write into an
 // array element, matrix column or struct field writes the whole variable, so that
 // such code is never reported falsely. An inout argument is a read unless the
-// called function writes that parameter before reading it on every path.
+// called function writes that parameter before reading it on every path. A
+// harness entry point (mainImage) that returns with an out parameter entirely
+// unwritten is reported too: the site's main() reads it.
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -144,6 +146,10 @@ class FunctionAnalysis {
     }
     exit_.reachable = false;
     Statement(function_.body, 0);
+    if (state_.reachable && function_.body->HasTokens()) {
+      const SourceRange& body = function_.body->range;
+      Returns({body.file, body.end > body.begin ? body.end - 1 : body.end, body.end});
+    }
     exit_ = Join(exit_, state_);
   }
 
@@ -652,6 +658,7 @@ class FunctionAnalysis {
         return;
       case glsl::NodeKind::kReturnStatement:
         Eval(static_cast<const glsl::ReturnStatement*>(node)->value, depth + 1);
+        Returns(node->range);
         exit_ = Join(exit_, state_);
         EndPath();
         return;
@@ -711,6 +718,34 @@ class FunctionAnalysis {
     const SourceRange brace = tokens[body.first_token].spelling;
     diagnostic.fixes.push_back({{brace.file, brace.end, brace.end},
                                 " " + slot.parameter->name.text + " = " + *zero + ";"});
+  }
+
+  // A harness entry point (ShaderToy's mainImage, mainCubemap) returns to code that
+  // reads its out parameters: one left entirely unwritten on a path is read
+  // undefined there. (Other functions' callers often ignore an out parameter on
+  // the paths that skip it, `bool hit(..., out float t)`, so only these count.)
+  void Returns(const SourceRange& where) {
+    if (probe_ || !state_.reachable) return;
+    const std::string& name = function_.name.text;
+    if (name != "mainImage" && name != "mainCubemap") return;
+    for (size_t i = 0; i < slots_.size(); ++i) {
+      Slot& slot = slots_[i];
+      if (slot.parameter == nullptr || slot.reported || state_.written[i] != 0) continue;
+      slot.reported = true;
+      Diagnostic diagnostic =
+          MakeDiagnostic(Severity::kWarning, std::string(kId), where,
+                         "'" + model_.symbols[slot.symbol].name +
+                             "' (an out parameter) may be left unwritten "
+                             "when " +
+                             name +
+                             " returns here, and its caller reads it: browsers return 0, "
+                             "native GL, Vulkan and Metal leave it undefined");
+      diagnostic.notes.push_back({slot.parameter->name.range,
+                                  "an out parameter is not copied in: it starts undefined in "
+                                  "the function (GLSL ES section 6.1.1)"});
+      FixParameter(slot, diagnostic);
+      context_.Report(std::move(diagnostic));
+    }
   }
 
   void Report(const Slot& slot, uint8_t missing, const glsl::Expr& where) {
