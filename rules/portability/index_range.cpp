@@ -6,16 +6,14 @@
 //   vec3 col;
 //   for (int c = 0; c < 8; c++) col[c] = f(c);   // c runs 0..7, col has 3 components
 //
-// A small interval analysis of the index: literals and const variables, the index
-// of an enclosing `for (int i = A; i < B; i++)` loop (<=, >, >=, !=, ++i, i += k,
-// decrements) with constant bounds and no write to the index in the body, + - * /
-// with known ranges, clamp/min/max/abs, `% N` (-(N-1)..N-1, or 0..N-1 when the left
-// side is known non-negative), `& N`, int() and float(), float mod() by a constant.
-// Indices whose range is unknown are not reported, nor constant ones (a compile
-// error already). No fix: the intended bound is the author's to choose.
+// The index's range comes from the interval analysis of value_range.h (loop
+// bounds, constants, clamp/min/max, `% N`, `& N`, ...), narrowed by the guards
+// around the index: `if (i < 3) col[i]`, `if (i > 2) break;` before it, the
+// branches of `i == 6 ? 0 : i + 1`. Indices whose range is unknown are not
+// reported, nor constant ones (a compile error already). No fix: the intended
+// bound is the author's to choose.
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -181,8 +179,10 @@ class IndexRangeRule final : public rule::Rule {
       if (!index_type.IsIntegral() || !index_type.IsScalar()) return true;
       if (webgl::IsConstantExpression(model, *index->index, constant_rules)) return true;
       const double last = size - 1;
+      // Past the int range the arithmetic would wrap: that range is not known.
       auto outside = [&](const Range& r) {
-        return r.Finite() && r.lo <= r.hi && (r.lo < 0.0 || r.hi > last);
+        return r.Finite() && r.lo <= r.hi && r.lo >= -2147483648.0 && r.hi <= 4294967295.0 &&
+               (r.lo < 0.0 || r.hi > last);
       };
       if (!outside(ranges.Of(index->index))) return true;
       // Only now the guards around the index, which are slower to find.

@@ -449,11 +449,13 @@ class FunctionAnalysis {
   // are learnt, anything else written is forgotten.
   void Learn(const glsl::Node* statement, KnownValues& known) const {
     if (statement == nullptr) return;
-    portability::ForEachWrittenExpr(context_, *statement, [&](const glsl::Expr& target) {
-      if (const glsl::IdentifierExpr* root = portability::ChainRoot(&target)) {
-        known.erase(model_.SymbolAt(root->id));
-      }
-    });
+    if (!known.empty()) {  // (nested blocks would walk their statements again and again)
+      portability::ForEachWrittenExpr(context_, *statement, [&](const glsl::Expr& target) {
+        if (const glsl::IdentifierExpr* root = portability::ChainRoot(&target)) {
+          known.erase(model_.SymbolAt(root->id));
+        }
+      });
+    }
     auto learn = [&](uint32_t symbol, const glsl::Expr* value) {
       // Locals only: a call may change a global behind our back.
       if (symbol >= model_.symbols.size() || !model_.symbols[symbol].type.IsScalar() ||
