@@ -32,6 +32,8 @@ struct BrowserSemanticsOptions {
   bool zero_initialize = true;  // locals, globals, outputs
   bool zero_out_parameters = false;
   bool clamp_indices = true;
+  // smoothstep(a, a, x) as GPUs compute it (a step), not as llvmpipe folds it.
+  bool gpu_smoothstep_edges = true;
   bool add_render_probe = false;  // fragment shaders only
   bool vertex_stage = false;
 };
@@ -44,6 +46,7 @@ struct BrowserSemanticsResult {
   bool tracks_output_writes = false;  // ... and its .y marks colour-output writes
   uint32_t initialized = 0;           // variables given a zero initial value
   uint32_t clamped = 0;               // indices clamped
+  uint32_t smoothsteps = 0;           // smoothstep names renamed to the GPU-faithful helper
   uint32_t counted_loops = 0;         // loops instrumented
   uint32_t skipped = 0;               // places inside macros that could not be edited safely
 };

@@ -29,6 +29,9 @@ class EditCollector {
   void Insert(FileId file, uint32_t at, std::string text) {
     edits_[file].push_back({at, at, std::move(text)});
   }
+  void Replace(const SourceRange& range, std::string text) {
+    edits_[range.file].push_back({range.begin, range.end, std::move(text)});
+  }
   const std::map<FileId, std::vector<Edit>>& Edits() const { return edits_; }
 
  private:
@@ -64,5 +67,6 @@ struct MainPrologue {
 void ZeroInitializeVariables(SemanticsContext& context, MainPrologue& prologue);
 void ClampIndirectIndices(SemanticsContext& context);
 void AddRenderProbe(SemanticsContext& context, MainPrologue& prologue);
+void RewriteSmoothstepEdges(SemanticsContext& context, const PreprocessResult& preprocessed);
 
 }  // namespace shaderport::glsl

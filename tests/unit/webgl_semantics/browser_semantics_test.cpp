@@ -162,6 +162,35 @@ TEST(BrowserSemantics, VertexShadersZeroTheirOutputsAndPosition) {
             "= vec2(0.0); vec2 t = vec2(0.0); uv = t; }\n");
 }
 
+TEST(BrowserSemantics, SmoothstepIsRenamedInCallsAndMacroBodies) {
+  BrowserSemanticsOptions options;
+  options.zero_initialize = false;
+  const auto result = Apply(
+      "#define S(x, w) smoothstep(-w, w, x)\n"
+      "void main() { float v = smoothstep(0.1, 0.1, gl_FragCoord.x) + S(gl_FragCoord.y, 0.0);\n"
+      "o = vec4(smoothstep(vec3(0.2), vec3(0.2), vec3(v)), S(v, 0.0)); }\n",
+      options);
+  EXPECT_EQ(result.smoothsteps, 3U);  // two calls and the macro body's one token
+  const std::string& text = result.texts.front();
+  EXPECT_NE(text.find("#define S(x, w) shaderport_smoothstep(-w, w, x)\n"), std::string::npos);
+  EXPECT_NE(text.find("float v = shaderport_smoothstep(0.1, 0.1, gl_FragCoord.x)"),
+            std::string::npos);
+  EXPECT_NE(text.find("o = vec4(shaderport_smoothstep(vec3(0.2)"), std::string::npos);
+  EXPECT_NE(text.find("float shaderport_smoothstep(float a, float b, float x) { if (a == b)"),
+            std::string::npos);
+}
+
+TEST(BrowserSemantics, SmoothstepInAConstantInitializerStaysTheBuiltIn) {
+  BrowserSemanticsOptions options;
+  options.zero_initialize = false;
+  const auto result = Apply(
+      "const float k = smoothstep(0.0, 1.0, 0.5);\n"
+      "void main() { o = vec4(smoothstep(0.0, 1.0, k)); }\n",
+      options);
+  EXPECT_EQ(result.smoothsteps, 0U);
+  EXPECT_EQ(result.texts.front().find("shaderport_smoothstep"), std::string::npos);
+}
+
 TEST(BrowserSemantics, BrokenCodeIsLeftAsItIs) {
   SourceManager sources;
   const SourceFile& file = sources.Add("t.frag", "#version 300 es\nvoid main() { vec4 c; +; }\n");

@@ -1,0 +1,97 @@
+// smoothstep(a, b, x) with a == b: GLSL leaves the result undefined; GPUs (and
+// SwiftShader in Chromium) compute (x - a) / 0 = +-inf and clamp it, i.e. a step,
+// but llvmpipe folds the division under fast-math assumptions and draws garbage.
+// Calls of the built-in are renamed to shaderport_smoothstep, whose a == b case is
+// the step a browser draws (0 where x <= a, 1 where x > a; measured in Chromium).
+// The name is also renamed inside macro bodies (`#define S(x, w) smoothstep(-w, w, x)`):
+// there it can only mean the built-in. Nothing is renamed when a call is outside a
+// function body (a constant initializer may call the built-in, not a function).
+#include <set>
+#include <utility>
+
+#include "glsl/sema/language.h"
+#include "glsl/syntax/visit.h"
+#include "glsl/webgl_semantics/semantics_context.h"
+
+namespace shaderport::glsl {
+namespace {
+
+constexpr std::string_view kName = "shaderport_smoothstep";
+
+std::string Helpers() {
+  const std::string n(kName);
+  std::string text = "float " + n +
+                     "(float a, float b, float x) { if (a == b) return x > a ? 1.0 : 0.0; float t "
+                     "= clamp((x - a) / (b - a), 0.0, 1.0); return t * t * (3.0 - 2.0 * t); } ";
+  for (const char* v : {"vec2", "vec3", "vec4"}) {
+    const std::string t(v);
+    text += t + " " + n + "(" + t + " a, " + t + " b, " + t + " x) { " + t +
+            " t = clamp((x - a) / (b - a), 0.0, 1.0); t = t * t * (3.0 - 2.0 * t); return mix(t, " +
+            t + "(greaterThan(x, a)), equal(a, b)); } ";
+    text += t + " " + n + "(float a, float b, " + t + " x) { return " + n + "(" + t + "(a), " + t +
+            "(b), x); } ";
+  }
+  return text;
+}
+
+bool InsideFunctionBody(const SemanticsContext& c, const Node& node) {
+  for (const Node* at = c.Parent(node); at != nullptr; at = c.Parent(*at)) {
+    if (at->kind == NodeKind::kCompoundStatement && c.Parent(*at) != nullptr &&
+        c.Parent(*at)->kind == NodeKind::kFunctionDeclaration) {
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+void RewriteSmoothstepEdges(SemanticsContext& c, const PreprocessResult& preprocessed) {
+  if (c.model.version < kEssl300) return;
+  std::set<std::pair<FileId, uint32_t>> renamed;  // a macro body's token, once
+  std::vector<SourceRange> names;
+  bool safe = true;
+  VisitPreorder(c.tree, [&](const Node& node, uint32_t) {
+    const auto* call = node.As<CallExpr>();
+    if (call == nullptr || call->call_kind != CallKind::kFunction ||
+        call->callee.text != "smoothstep" || !c.model.builtin_calls.contains(call->id)) {
+      return true;
+    }
+    if (!InsideFunctionBody(c, *call) || !call->HasTokens()) {
+      safe = false;
+      return true;
+    }
+    const PpToken& token = preprocessed.tokens[call->first_token];
+    if (token.text != "smoothstep" || token.spelling.Size() != token.text.size()) {
+      safe = false;  // pasted with ## or otherwise not spelled as one token
+      return true;
+    }
+    if (renamed.insert({token.spelling.file, token.spelling.begin}).second) {
+      names.push_back(token.spelling);
+    }
+    return true;
+  });
+  if (!safe) {
+    c.result.skipped += static_cast<uint32_t>(names.size());
+    return;
+  }
+  if (names.empty()) return;
+  const Node* first_function = nullptr;
+  for (const Node* node : c.tree.Root()->declarations) {
+    const auto* function = node->As<FunctionDeclaration>();
+    if (function != nullptr && function->body != nullptr) {
+      first_function = node;
+      break;
+    }
+  }
+  const auto declare_at = first_function ? c.edits.Span(*first_function) : std::nullopt;
+  if (!declare_at) {
+    c.result.skipped += static_cast<uint32_t>(names.size());
+    return;
+  }
+  c.edits.Insert(declare_at->file, declare_at->begin, Helpers());
+  for (const SourceRange& name : names) c.edits.Replace(name, std::string(kName));
+  c.result.smoothsteps = static_cast<uint32_t>(names.size());
+}
+
+}  // namespace shaderport::glsl
