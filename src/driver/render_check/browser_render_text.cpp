@@ -11,6 +11,7 @@ EditResult BrowserRenderTextWithMap(std::string_view text,
   semantics.zero_initialize = options.webgl_semantics;
   semantics.clamp_indices = options.webgl_semantics;
   semantics.gpu_smoothstep_edges = options.webgl_semantics;
+  semantics.promote_precision = options.webgl_semantics;
   semantics.zero_out_parameters = options.webgl_semantics;
   semantics.add_render_probe = options.add_render_probe;
   semantics.vertex_stage = options.vertex_stage;

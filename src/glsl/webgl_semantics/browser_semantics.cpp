@@ -83,6 +83,7 @@ BrowserSemanticsResult ApplyBrowserSemantics(std::span<const SourceFile* const> 
   if (options.zero_initialize) ZeroInitializeVariables(context, prologue);
   if (options.clamp_indices) ClampIndirectIndices(context);
   if (options.gpu_smoothstep_edges) RewriteSmoothstepEdges(context, preprocessed);
+  if (options.promote_precision) PromotePrecision(context, preprocessed);
   if (options.add_render_probe && !options.vertex_stage) AddRenderProbe(context, prologue);
   if (!prologue.statements.empty()) {
     const FunctionDeclaration* main = FindMainDefinition(parsed.tree);

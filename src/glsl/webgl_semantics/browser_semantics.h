@@ -7,6 +7,10 @@
 //  - initOutputVariables / initGLPosition: shader outputs start at zero;
 //  - ClampIndirectIndices: a non-constant index into a vector, matrix or sized
 //    array is clamped into range, for reads and writes;
+// and where llvmpipe computes differently from desktop GPUs:
+//  - mediump and lowp are computed at 32 bits (Mesa lowers mediump to 16);
+//  - smoothstep(a, b, x) with a == b is the step GPUs draw (llvmpipe's fast math
+//    folds it into garbage; GLSL leaves it undefined);
 // plus, on request, a probe written to a second fragment output, so that a render
 // can tell when llvmpipe's silent loop cap was reached and which pixels never
 // assigned the colour output.
@@ -34,6 +38,8 @@ struct BrowserSemanticsOptions {
   bool clamp_indices = true;
   // smoothstep(a, a, x) as GPUs compute it (a step), not as llvmpipe folds it.
   bool gpu_smoothstep_edges = true;
+  // mediump and lowp computed at 32 bits, as desktop browsers do (Mesa uses 16).
+  bool promote_precision = true;
   bool add_render_probe = false;  // fragment shaders only
   bool vertex_stage = false;
 };
@@ -47,6 +53,7 @@ struct BrowserSemanticsResult {
   uint32_t initialized = 0;           // variables given a zero initial value
   uint32_t clamped = 0;               // indices clamped
   uint32_t smoothsteps = 0;           // smoothstep names renamed to the GPU-faithful helper
+  uint32_t promoted = 0;              // mediump / lowp keywords made highp
   uint32_t counted_loops = 0;         // loops instrumented
   uint32_t skipped = 0;               // places inside macros that could not be edited safely
 };

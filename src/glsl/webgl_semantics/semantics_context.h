@@ -68,5 +68,6 @@ void ZeroInitializeVariables(SemanticsContext& context, MainPrologue& prologue);
 void ClampIndirectIndices(SemanticsContext& context);
 void AddRenderProbe(SemanticsContext& context, MainPrologue& prologue);
 void RewriteSmoothstepEdges(SemanticsContext& context, const PreprocessResult& preprocessed);
+void PromotePrecision(SemanticsContext& context, const PreprocessResult& preprocessed);
 
 }  // namespace shaderport::glsl

@@ -191,6 +191,19 @@ TEST(BrowserSemantics, SmoothstepInAConstantInitializerStaysTheBuiltIn) {
   EXPECT_EQ(result.texts.front().find("shaderport_smoothstep"), std::string::npos);
 }
 
+TEST(BrowserSemantics, MediumAndLowPrecisionBecomeHigh) {
+  BrowserSemanticsOptions options;
+  options.zero_initialize = false;
+  const auto result = Apply(
+      "precision mediump int;\n#define P lowp\n"
+      "void main() { mediump float t = 1000.0; P vec2 v = vec2(t); o = vec4(v, 0.0, 1.0); }\n",
+      options);
+  EXPECT_EQ(result.promoted, 3U);
+  EXPECT_EQ(Body(result),
+            "precision highp int;\n#define P highp\n"
+            "void main() { highp float t = 1000.0; P vec2 v = vec2(t); o = vec4(v, 0.0, 1.0); }\n");
+}
+
 TEST(BrowserSemantics, BrokenCodeIsLeftAsItIs) {
   SourceManager sources;
   const SourceFile& file = sources.Add("t.frag", "#version 300 es\nvoid main() { vec4 c; +; }\n");
