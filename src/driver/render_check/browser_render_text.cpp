@@ -10,8 +10,8 @@ EditResult BrowserRenderTextWithMap(std::string_view text,
   glsl::BrowserSemanticsOptions semantics;
   semantics.zero_initialize = options.webgl_semantics;
   semantics.clamp_indices = options.webgl_semantics;
-  semantics.gpu_smoothstep_edges = options.webgl_semantics;
-  semantics.promote_precision = options.webgl_semantics;
+  semantics.gpu_smoothstep_edges = options.webgl_semantics && options.desktop_gpu_arithmetic;
+  semantics.promote_precision = options.webgl_semantics && options.desktop_gpu_arithmetic;
   semantics.zero_out_parameters = options.webgl_semantics;
   semantics.add_render_probe = options.add_render_probe;
   semantics.vertex_stage = options.vertex_stage;

@@ -11,7 +11,10 @@
 namespace shaderport::driver {
 
 struct BrowserRenderTextOptions {
-  bool webgl_semantics = true;    // zero initialisation (out parameters too) and index clamping
+  bool webgl_semantics = true;  // zero initialisation (out parameters too) and index clamping
+  // Also compute as desktop GPUs do where llvmpipe differs (32-bit mediump, smoothstep
+  // with equal edges). Off for the SPIR-V leg, whose output keeps the user's precision.
+  bool desktop_gpu_arithmetic = true;
   bool add_render_probe = false;  // loop counts and output writes (main fragment pass)
   bool vertex_stage = false;
 };
