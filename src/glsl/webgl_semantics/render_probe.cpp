@@ -55,11 +55,12 @@ uint32_t RootSymbol(const Expr* expr, const SemanticModel& model) {
   return kNoSymbol;
 }
 
-// Whether the statement assigns `target` (=, op=, ++/--, or passes it to a call).
-bool WritesTarget(const ExpressionStatement& statement, uint32_t target,
-                  const SemanticModel& model) {
+// Whether the statement or expression assigns `target` (=, op=, ++/--, or passes
+// it to a call).
+bool WritesTarget(const Node* code, uint32_t target, const SemanticModel& model) {
+  if (code == nullptr) return false;
   bool writes = false;
-  VisitPreorder(statement, [&](const Node& node, uint32_t) {
+  VisitPreorder(*code, [&](const Node& node, uint32_t) {
     if (const auto* assignment = node.As<AssignmentExpr>()) {
       writes = writes || RootSymbol(assignment->lhs, model) == target;
     } else if (const auto* unary = node.As<UnaryExpr>()) {
@@ -146,11 +147,34 @@ void AddRenderProbe(SemanticsContext& c, MainPrologue& prologue) {
   bool writes_complete = target.symbol != kNoSymbol;
   if (writes_complete) {
     VisitPreorder(*target.scope, [&](const Node& node, uint32_t) {
-      const auto* statement = node.As<ExpressionStatement>();
-      if (statement == nullptr) return true;
-      if (!WritesTarget(*statement, target.symbol, c.model)) return false;
-      const auto span = c.edits.Span(*statement);
+      // A for loop whose header writes the output is marked as a whole (its init is
+      // a statement that cannot be wrapped in braces).
+      const Node* marked = nullptr;
+      if (const auto* loop = node.As<ForStatement>()) {
+        const bool header_writes = WritesTarget(loop->init, target.symbol, c.model) ||
+                                   WritesTarget(loop->condition, target.symbol, c.model) ||
+                                   WritesTarget(loop->increment, target.symbol, c.model);
+        if (!header_writes) return true;
+        marked = loop;
+      } else if (const auto* statement = node.As<ExpressionStatement>()) {
+        const Node* parent = c.Parent(*statement);
+        if (parent != nullptr && parent->kind == NodeKind::kForStatement) {
+          const auto* header = parent->As<ForStatement>();
+          if (header->init == statement) return false;  // part of the header, seen above
+        }
+        if (!WritesTarget(statement, target.symbol, c.model)) return false;
+        marked = statement;
+      } else {
+        return true;
+      }
+      const auto span = c.edits.Span(*marked);
       writes_complete = writes_complete && span.has_value();
+      if (span && marked->kind == NodeKind::kForStatement) {
+        write_begins.push_back(
+            {{span->file, span->begin, span->begin}, "{ " + probe + ".y = 1.0; "});
+        write_ends.push_back({{span->file, span->end, span->end}, " }"});
+        return true;  // writes in the body are marked too
+      }
       if (span) {
         write_begins.push_back({{span->file, span->begin, span->begin}, "{ "});
         write_ends.push_back({{span->file, span->end, span->end}, " " + probe + ".y = 1.0; }"});

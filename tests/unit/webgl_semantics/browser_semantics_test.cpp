@@ -162,6 +162,23 @@ TEST(BrowserSemantics, VertexShadersZeroTheirOutputsAndPosition) {
             "= vec2(0.0); vec2 t = vec2(0.0); uv = t; }\n");
 }
 
+// Regression: a golfed loop whose header writes the output (`for (p = ...; ...; p *= ...)`)
+// was wrapped in braces inside the for header, which does not compile.
+TEST(BrowserSemantics, RenderProbeMarksOutputWritesInAForHeader) {
+  BrowserSemanticsOptions options;
+  options.zero_initialize = false;
+  options.add_render_probe = true;
+  const auto result = Apply(
+      "void mainImage(out vec4 p, vec2 f) { for (p = vec4(f, 1, 0); f.x-- > 0.; p *= .9) "
+      "p = (p + p.z) * .1; }\n"
+      "void main() { vec4 c = vec4(0.0); mainImage(c, gl_FragCoord.xy); o = c; }\n",
+      options);
+  EXPECT_TRUE(result.tracks_output_writes);
+  EXPECT_NE(result.texts.front().find("{ shaderport_probe.y = 1.0; for (p = vec4(f, 1, 0);"),
+            std::string::npos)
+      << result.texts.front();
+}
+
 TEST(BrowserSemantics, SmoothstepIsRenamedInCallsAndMacroBodies) {
   BrowserSemanticsOptions options;
   options.zero_initialize = false;
