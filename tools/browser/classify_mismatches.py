@@ -10,12 +10,20 @@ see in a well-conditioned shader, rendering both with shaderport:
 
   sin/cos  every sin and cos gets its argument reduced to [0, 2*pi) first (a different
            but equally valid implementation of the same functions);
-  time     iTime = 1 + 2^-20 instead of 1 (one part in a million).
+  time     iTime = 1 + 2^-20 instead of 1 (one part in a million);
+  fract    every fract(x) becomes fract(x * 1.0000001) (a last-bit change: hashes built
+           on fract, "hash without sine", and fused multiply-adds depend on it).
 
 If either perturbation alone moves shaderport's own picture beyond the comparison
 tolerance (8x8 block means, 12/255), the picture depends on float precision and the
-mismatch is classified `precision (sin/cos)` or `precision (iTime)`; otherwise it is
-`unexplained` and needs a look by hand.
+mismatch is classified `precision (sin/cos)`, `precision (iTime)` or `precision (fract)`.
+
+A third experiment looks for NaN: pow, log, log2, sqrt and inversesqrt get abs() of
+their argument (so no NaN arises from a negative one). When shaderport's picture of
+that variant matches Chromium's, the difference came from how NaN travels through
+later arithmetic (llvmpipe folds x * 0.0 to 0 and clamps NaN differently from
+SwiftShader; GLSL leaves all of it undefined): `NaN (undefined math)`. Everything else
+is `unexplained` and needs a look by hand.
 
 Run (from the repository root), after measure_render_parity.py --keep DIR:
   python3 tools/browser/classify_mismatches.py --keep DIR --report REPORT.md -o causes.json
@@ -43,14 +51,33 @@ REDUCED_TRIG = "".join(
 ) + "#define sin shaderport_sin\n#define cos shaderport_cos\n"
 
 
-def with_reduced_trig(code):
-    """The Image code with range-reduced sin/cos, kept after any #version/#extension lines."""
+NAN_FREE = "".join(
+    "%s shaderport_%s(%s x) { return %s(abs(x)); }\n" % (t, f, t, f)
+    for f in ("log", "log2", "sqrt", "inversesqrt") for t in ("float", "vec2", "vec3", "vec4")
+) + "".join(
+    "%s shaderport_pow(%s x, %s y) { return pow(abs(x), y); }\n" % (t, t, t)
+    for t in ("float", "vec2", "vec3", "vec4")
+) + "".join("#define %s shaderport_%s\n" % (f, f) for f in ("log", "log2", "sqrt", "inversesqrt", "pow"))
+
+
+def with_prelude(code, prelude):
+    """The Image code with `prelude` after any #version/#extension lines."""
     lines = code.split("\n")
     insert = 0
     for i, line in enumerate(lines):
         if re.match(r"\s*#\s*(version|extension)\b", line):
             insert = i + 1
-    return "\n".join(lines[:insert] + [REDUCED_TRIG] + lines[insert:])
+    return "\n".join(lines[:insert] + [prelude] + lines[insert:])
+
+
+PERTURBED_FRACT = "".join(
+    "%s shaderport_fract(%s x) { return fract(x * 1.0000001); }\n" % (t, t)
+    for t in ("float", "vec2", "vec3", "vec4")
+) + "#define fract shaderport_fract\n"
+
+
+def with_reduced_trig(code):
+    return with_prelude(code, REDUCED_TRIG)
 
 
 def render(binary, record, png, extra=()):
@@ -87,6 +114,20 @@ def classify(job):
         return "precision (sin/cos)"
     if differs(base, time):
         return "precision (iTime)"
+    fract = json.loads(json.dumps(record))
+    for p in fract["passes"]:
+        p["code"] = with_prelude(p["code"], PERTURBED_FRACT)
+    fract_png = os.path.join(directory, "classify-fract.png")
+    render(binary, fract, fract_png)
+    if differs(base, fract_png):
+        return "precision (fract)"
+    nan_free = json.loads(json.dumps(record))
+    for p in nan_free["passes"]:
+        p["code"] = with_prelude(p["code"], NAN_FREE)
+    nan_png = os.path.join(directory, "classify-nan.png")
+    render(binary, nan_free, nan_png)
+    if differs(nan_png, os.path.join(directory, "chromium.png")) is False:
+        return "NaN (undefined math)"
     if not os.path.isfile(base):
         return "shaderport failed"
     return "unexplained"
