@@ -22,7 +22,8 @@ Run (from the repository root):
 --keep DIR keeps DIR/<id>/{record.json,shaderport.png,chromium.png,shaderport.txt} for every
 shader, side.png (shaderport | Chromium | difference x4, scaled x4) for each mismatch, and
 DIR/summary.json (one entry per shader).
---causes FILE (JSON {id: cause}) adds a "cause" column with a manual classification.
+--causes FILE (JSON {id: cause}) adds a "cause" column with a manual classification;
+--notes FILE appends a Markdown section (how the causes were found).
 Python 3 standard library only; needs chromium and a built shaderport.
 """
 
@@ -30,6 +31,7 @@ import argparse
 import concurrent.futures
 import datetime
 import glob
+import hashlib
 import json
 import os
 import re
@@ -80,8 +82,10 @@ def select_records(corpus, limit):
 
 def run_shaderport(args):
     """Worker (runs in the process pool): one `shaderport render`."""
-    binary, rec_path, png_path, size, timeout = args
+    binary, rec_path, png_path, size, timeout, render_timeout = args
     cmd = [binary, "render", "--hermetic", "--size", size, rec_path, "-o", png_path]
+    if render_timeout:
+        cmd += ["--timeout", "%g" % render_timeout]
     t0 = time.time()
     try:
         proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=timeout)
@@ -160,10 +164,15 @@ def main(argv=None):
     ap.add_argument("--batch", type=int, default=20, help="shaders per Chromium page (default 20)")
     ap.add_argument("--shaderport-timeout", type=float, default=60.0,
                     help="seconds for one shaderport process (its own render timeout is 10 s)")
+    ap.add_argument("--render-timeout", type=float, default=0,
+                    help="pass --timeout SECONDS to shaderport render (default: not passed, "
+                    "its 10 s); a busy machine makes slow shaders time out at 10 s")
     ap.add_argument("--chromium", help="Chromium binary (default: chromium on PATH)")
     ap.add_argument("--threshold", type=float, default=compare_pictures.DEFAULT_THRESHOLD,
                     help="block mean threshold in byte units (default 12)")
     ap.add_argument("--causes", help="JSON file {id: cause} with a manual classification of mismatches")
+    ap.add_argument("--notes", help="Markdown file appended to the report (e.g. how the causes "
+                    "were found)")
     ap.add_argument("--out-md", help="write the Markdown report here")
     ap.add_argument("--keep", help="keep both PNGs and shaderport's output per shader, and a "
                     "side-by-side picture per mismatch, in this directory")
@@ -194,7 +203,8 @@ def main(argv=None):
             with open(rec_path, "w", encoding="utf-8") as f:
                 json.dump(rec, f)
             tasks.append((binary, rec_path, os.path.join(d, "shaderport.png"), args.size,
-                          args.shaderport_timeout))
+                          max(args.shaderport_timeout, (args.render_timeout or 10.0) + 30.0),
+                          args.render_timeout))
         t0 = time.time()
         with concurrent.futures.ProcessPoolExecutor(max_workers=args.jobs) as pool:
             sp_results = list(pool.map(run_shaderport, tasks))
@@ -319,8 +329,14 @@ def build_report(args, rows, total, binary, elapsed, t_sp, t_ch, causes):
     cmd = "python3 tools/browser/measure_render_parity.py %s" % corpus_name
     if args.limit:
         cmd += " --limit %d" % args.limit
+    if args.shaderport:
+        cmd += " --shaderport %s" % args.shaderport
+    if args.render_timeout:
+        cmd += " --render-timeout %g" % args.render_timeout
     if args.causes:
         cmd += " --causes %s" % os.path.relpath(os.path.abspath(args.causes), REPO)
+    if args.notes:
+        cmd += " --notes %s" % os.path.relpath(os.path.abspath(args.notes), REPO)
     if args.out_md:
         cmd += " --out-md %s" % os.path.relpath(os.path.abspath(args.out_md), REPO)
     lines.append(cmd)
@@ -330,10 +346,13 @@ def build_report(args, rows, total, binary, elapsed, t_sp, t_ch, causes):
                  "%d of %d records%s." % (corpus_name, n, total,
                                           " (first %d only)" % args.limit if args.limit else ""))
     built = datetime.datetime.fromtimestamp(os.path.getmtime(binary), datetime.timezone.utc)
-    lines.append("* shaderport: `%s render --hermetic --size %s REC.json -o out.png`; binary built "
-                 "%s UTC, repository HEAD %s at run time." %
-                 (os.path.relpath(binary, REPO), args.size, built.strftime("%Y-%m-%d %H:%M"),
-                  _git_rev()))
+    with open(binary, "rb") as f:
+        digest = hashlib.sha256(f.read()).hexdigest()[:12]
+    shown = os.path.relpath(binary, REPO) if binary.startswith(REPO + os.sep) else binary
+    extra = " --timeout %g" % args.render_timeout if args.render_timeout else ""
+    lines.append("* shaderport: `%s render --hermetic --size %s%s REC.json -o out.png`; binary built "
+                 "%s UTC (sha256 %s…), repository HEAD %s at run time." %
+                 (shown, args.size, extra, built.strftime("%Y-%m-%d %H:%M"), digest, _git_rev()))
     lines.append("* Chromium: %s, headless, `--use-angle=swiftshader`; the site's composition "
                  "(src/validate/shadertoy_contract.cpp) drawn into an RGBA8 framebuffer with "
                  "shaderport's uniform values (iTime 1, iFrame 0, iMouse 0, iDate 2025-01-01 12:00); "
@@ -425,6 +444,10 @@ def build_report(args, rows, total, binary, elapsed, t_sp, t_ch, causes):
     if not ch_failed:
         lines.append("| none | | | | | | |")
     lines.append("")
+    if args.notes:
+        with open(args.notes, encoding="utf-8") as f:
+            lines.append(f.read().rstrip("\n"))
+            lines.append("")
     lines.append("Shader code stays under each author's license (column license); see the URL for "
                  "the original.")
     lines.append("")
