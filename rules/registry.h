@@ -16,7 +16,7 @@ std::span<const rule::Rule* const> AllRules();
 // The rules that run in `mode`: kPort runs every porting rule, kFix only kAlways ones.
 std::vector<const rule::Rule*> RulesForMode(rule::PortMode mode);
 
-// The rules `shaderport check` runs beside glslang (scope kCheck).
+// The rules `shaderport check` runs beside glslang (scopes kCheck and kLint).
 std::vector<const rule::Rule*> CheckRules();
 
 // The rule with this id, or nullptr.

@@ -19,7 +19,8 @@ struct WebglCheckSettings {
 // code, WebGL1 for GLSL ES 1.00 (as the page that would load it).
 Target DefaultTarget(Dialect dialect, const glsl::PreprocessResult& preprocessed);
 
-// Findings of the WebGL rules (rules/webgl/*) and of our front end's WebGL limits.
+// Findings of the check and lint rules (rules/webgl/*, rules/portability/*) and of
+// our front end's WebGL limits.
 DiagnosticList RunWebglChecks(const SourceFile& file, const FrontEndResult& front,
                               const WebglCheckSettings& settings);
 
