@@ -71,7 +71,12 @@ ImageRgba8 ToImage(const RenderOutcome& outcome) {
   for (uint32_t y = 0; y < outcome.height; ++y) {
     const float* src = &outcome.pixels[(outcome.height - 1 - y) * row];
     uint8_t* dst = &image.pixels[y * row];
-    for (size_t i = 0; i < row; ++i) dst[i] = ToByte(src[i]);
+    for (size_t i = 0; i < row; i += 4) {
+      // A pixel never written (discarded) shows what a browser's canvas holds there:
+      // the transparent black it was cleared to, not the check's sentinel.
+      if (IsSentinel(&src[i])) continue;
+      for (size_t c = 0; c < 4; ++c) dst[i + c] = ToByte(src[i + c]);
+    }
   }
   return image;
 }

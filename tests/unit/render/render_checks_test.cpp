@@ -199,5 +199,16 @@ TEST(ToImage, FlipsRowsAndRoundsLikeA8BitCanvas) {
   EXPECT_EQ(image.pixels[2], 255);
 }
 
+// Regression: discarded pixels showed the clear sentinel's garish colour in the PNG;
+// a browser's canvas holds the transparent black it was cleared to.
+TEST(ToImage, DiscardedPixelsAreTransparentBlack) {
+  RenderOutcome outcome = Filled(0.2f, 0.4f, 0.6f);
+  std::copy(kSentinel.begin(), kSentinel.end(), outcome.pixels.begin());  // bottom-left
+  const ImageRgba8 image = ToImage(outcome);
+  const size_t bottom_left = (3 * 4 + 0) * 4;
+  for (size_t c = 0; c < 4; ++c) EXPECT_EQ(image.pixels[bottom_left + c], 0) << c;
+  EXPECT_EQ(image.pixels[1], 102);  // an ordinary pixel is unchanged
+}
+
 }  // namespace
 }  // namespace shaderport::render
