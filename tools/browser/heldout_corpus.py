@@ -39,8 +39,9 @@ def permissive(license_text):
 
 
 def git(dataset, *args):
-    return subprocess.run(["git", "-C", dataset, *args], capture_output=True, text=True,
-                          check=True).stdout
+    """Standard output, or None when git fails (a mirror may lack its largest blobs)."""
+    proc = subprocess.run(["git", "-C", dataset, *args], capture_output=True, text=True)
+    return proc.stdout if proc.returncode == 0 else None
 
 
 def to_record(raw):
@@ -67,11 +68,15 @@ def main():
     args = ap.parse_args()
     with open(args.shared, encoding="utf-8") as f:
         shared = {json.loads(line)["id"] for line in f if line.strip()}
-    files = sorted(p for p in git(args.dataset, "ls-tree", "-r", "HEAD", "--name-only").split()
+    files = sorted(p for p in (git(args.dataset, "ls-tree", "-r", "HEAD", "--name-only") or "").split()
                    if p.startswith("data/annotated/") and p.endswith(".jsonl"))
     seen, records = set(), []
     for path in files:
-        for line in git(args.dataset, "show", "HEAD:" + path).splitlines():
+        text = git(args.dataset, "show", "HEAD:" + path)
+        if text is None:
+            print("skipped (not readable): %s" % path)
+            continue
+        for line in text.splitlines():
             try:
                 raw = json.loads(line)
             except ValueError:
