@@ -12,11 +12,14 @@ see in a well-conditioned shader, rendering both with shaderport:
            but equally valid implementation of the same functions);
   time     iTime = 1 + 2^-20 instead of 1 (one part in a million);
   fract    every fract(x) becomes fract(x * 1.0000001) (a last-bit change: hashes built
-           on fract, "hash without sine", and fused multiply-adds depend on it).
+           on fract, "hash without sine", and fused multiply-adds depend on it);
+  bits     every floatBitsToInt/floatBitsToUint(x) gets x * 1.0000001 (hashes of the exact
+           IEEE bits of a float, which any rounding difference changes).
 
 If either perturbation alone moves shaderport's own picture beyond the comparison
 tolerance (8x8 block means, 12/255), the picture depends on float precision and the
-mismatch is classified `precision (sin/cos)`, `precision (iTime)` or `precision (fract)`.
+mismatch is classified `precision (sin/cos)`, `precision (iTime)`, `precision (fract)` or
+`precision (float bits)`.
 
 A third experiment looks for NaN: pow, log, log2, sqrt and inversesqrt get abs() of
 their argument (so no NaN arises from a negative one). When shaderport's picture of
@@ -76,6 +79,15 @@ PERTURBED_FRACT = "".join(
 ) + "#define fract shaderport_fract\n"
 
 
+PERTURBED_BITS = "".join(
+    "%s shaderport_%s(%s x) { return %s(x * 1.0000001); }\n" % (r, f, t, f)
+    for f, base in (("floatBitsToInt", "int"), ("floatBitsToUint", "uint"))
+    for t, r in (("float", base), ("vec2", base[0] + "vec2" if base == "uint" else "ivec2"),
+                 ("vec3", "uvec3" if base == "uint" else "ivec3"),
+                 ("vec4", "uvec4" if base == "uint" else "ivec4"))
+) + "#define floatBitsToInt shaderport_floatBitsToInt\n#define floatBitsToUint shaderport_floatBitsToUint\n"
+
+
 def with_reduced_trig(code):
     return with_prelude(code, REDUCED_TRIG)
 
@@ -121,6 +133,14 @@ def classify(job):
     render(binary, fract, fract_png)
     if differs(base, fract_png):
         return "precision (fract)"
+    if "floatBitsTo" in "".join(p["code"] for p in record["passes"]):
+        bits = json.loads(json.dumps(record))
+        for p in bits["passes"]:
+            p["code"] = with_prelude(p["code"], PERTURBED_BITS)
+        bits_png = os.path.join(directory, "classify-bits.png")
+        render(binary, bits, bits_png)
+        if differs(base, bits_png):
+            return "precision (float bits)"
     nan_free = json.loads(json.dumps(record))
     for p in nan_free["passes"]:
         p["code"] = with_prelude(p["code"], NAN_FREE)
