@@ -26,7 +26,9 @@ their argument (so no NaN arises from a negative one). When shaderport's picture
 that variant matches Chromium's, the difference came from how NaN travels through
 later arithmetic (llvmpipe folds x * 0.0 to 0 and clamps NaN differently from
 SwiftShader; GLSL leaves all of it undefined): `NaN (undefined math)`. Everything else
-is `unexplained` and needs a look by hand.
+is `unexplained` and needs a look by hand, except when shaderport's own render reported
+NaN pixels (render/nan-or-inf): then `NaN (reported by render)`, since browsers draw NaN in
+a GPU-dependent colour and the render already warns about it.
 
 Run (from the repository root), after measure_render_parity.py --keep DIR:
   python3 tools/browser/classify_mismatches.py --keep DIR --report REPORT.md -o causes.json
@@ -150,6 +152,11 @@ def classify(job):
         return "NaN (undefined math)"
     if not os.path.isfile(base):
         return "shaderport failed"
+    output = os.path.join(directory, "shaderport.txt")
+    if os.path.isfile(output):
+        with open(output, encoding="utf-8", errors="replace") as f:
+            if "[render/nan-or-inf]" in f.read():
+                return "NaN (reported by render)"
     return "unexplained"
 
 
