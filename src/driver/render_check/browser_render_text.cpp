@@ -1,5 +1,7 @@
 #include "driver/render_check/browser_render_text.h"
 
+#include <array>
+
 #include "glsl/webgl_semantics/browser_semantics.h"
 #include "source/source_manager.h"
 
@@ -17,7 +19,7 @@ EditResult BrowserRenderTextWithMap(std::string_view text,
   semantics.vertex_stage = options.vertex_stage;
   SourceManager local;  // the transform needs a file with an id
   const SourceFile& file = local.Add("<render>", std::string(text), true);
-  const SourceFile* parts[] = {&file};
+  const std::array<const SourceFile*, 1> parts = {&file};
   glsl::BrowserSemanticsResult result = glsl::ApplyBrowserSemantics(parts, semantics);
   return {std::move(result.texts.front()), std::move(result.maps.front())};
 }

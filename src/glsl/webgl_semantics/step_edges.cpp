@@ -18,18 +18,26 @@ namespace {
 
 constexpr std::string_view kName = "shaderport_smoothstep";
 
+// `@` stands for the vector type of each overload.
+constexpr std::string_view kScalarHelper =
+    "float shaderport_smoothstep(float a, float b, float x) { if (a == b) return x > a ? 1.0 : "
+    "0.0; float t = clamp((x - a) / (b - a), 0.0, 1.0); return t * t * (3.0 - 2.0 * t); } ";
+constexpr std::string_view kVectorHelpers =
+    "@ shaderport_smoothstep(@ a, @ b, @ x) { @ t = clamp((x - a) / (b - a), 0.0, 1.0); t = t * "
+    "t * (3.0 - 2.0 * t); return mix(t, @(greaterThan(x, a)), equal(a, b)); } "
+    "@ shaderport_smoothstep(float a, float b, @ x) { return shaderport_smoothstep(@(a), @(b), "
+    "x); } ";
+
 std::string Helpers() {
-  const std::string n(kName);
-  std::string text = "float " + n +
-                     "(float a, float b, float x) { if (a == b) return x > a ? 1.0 : 0.0; float t "
-                     "= clamp((x - a) / (b - a), 0.0, 1.0); return t * t * (3.0 - 2.0 * t); } ";
-  for (const char* v : {"vec2", "vec3", "vec4"}) {
-    const std::string t(v);
-    text += t + " " + n + "(" + t + " a, " + t + " b, " + t + " x) { " + t +
-            " t = clamp((x - a) / (b - a), 0.0, 1.0); t = t * t * (3.0 - 2.0 * t); return mix(t, " +
-            t + "(greaterThan(x, a)), equal(a, b)); } ";
-    text += t + " " + n + "(float a, float b, " + t + " x) { return " + n + "(" + t + "(a), " + t +
-            "(b), x); } ";
+  std::string text(kScalarHelper);
+  for (const std::string_view vector : {"vec2", "vec3", "vec4"}) {
+    for (const char c : kVectorHelpers) {
+      if (c == '@') {
+        text.append(vector);
+      } else {
+        text.push_back(c);
+      }
+    }
   }
   return text;
 }
