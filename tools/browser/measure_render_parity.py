@@ -22,7 +22,7 @@ Run (from the repository root):
 --keep DIR keeps DIR/<id>/{record.json,shaderport.png,chromium.png,shaderport.txt} for every
 shader, side.png (shaderport | Chromium | difference x4, scaled x4) for each mismatch, and
 DIR/summary.json (one entry per shader).
---causes FILE (JSON {id: cause}) adds a "cause" column with a manual classification;
+--causes FILE (JSON {id: cause}) adds a "cause" column with a classification (classify_mismatches.py or by hand);
 --notes FILE appends a Markdown section (how the causes were found).
 Python 3 standard library only; needs chromium and a built shaderport.
 """
@@ -170,7 +170,7 @@ def main(argv=None):
     ap.add_argument("--chromium", help="Chromium binary (default: chromium on PATH)")
     ap.add_argument("--threshold", type=float, default=compare_pictures.DEFAULT_THRESHOLD,
                     help="block mean threshold in byte units (default 12)")
-    ap.add_argument("--causes", help="JSON file {id: cause} with a manual classification of mismatches")
+    ap.add_argument("--causes", help="JSON file {id: cause} with a classification of the mismatches (classify_mismatches.py or by hand)")
     ap.add_argument("--notes", help="Markdown file appended to the report (e.g. how the causes "
                     "were found)")
     ap.add_argument("--out-md", help="write the Markdown report here")
@@ -384,7 +384,7 @@ def build_report(args, rows, total, binary, elapsed, t_sp, t_ch, causes):
                 key = c.split(":")[0].strip()
                 tally.setdefault(key, []).append(r["rec"]["id"])
         if tally:
-            lines.append("## Classified mismatches (manual, %d of %d)" %
+            lines.append("## Classified mismatches (%d of %d; how: see the notes)" %
                          (sum(len(v) for v in tally.values()), len(mismatch)))
             lines.append("")
             lines.append("| cause | shaders | ids |")
