@@ -47,7 +47,7 @@ LSAN_OPTIONS=suppressions=$root/tools/lsan.supp \
 if [[ -f tests/fuzz/CMakeLists.txt ]]; then
   echo "== fuzz build (clang, libFuzzer)"
   cmake --preset fuzz >/dev/null
-  cmake --build --preset fuzz -j "$jobs" --target fuzz_frontend
+  cmake --build --preset fuzz -j "$jobs" --target fuzz_frontend fuzz_webgl_semantics
   run_ctest build/fuzz fuzz
 fi
 
