@@ -7,27 +7,6 @@
 namespace shaderport::render {
 namespace {
 
-GLenum TargetOf(GLenum sampler_type) {
-  switch (sampler_type) {
-    case GL_SAMPLER_CUBE:
-    case GL_SAMPLER_CUBE_SHADOW:
-    case GL_INT_SAMPLER_CUBE:
-    case GL_UNSIGNED_INT_SAMPLER_CUBE:
-      return GL_TEXTURE_CUBE_MAP;
-    case GL_SAMPLER_3D:
-    case GL_INT_SAMPLER_3D:
-    case GL_UNSIGNED_INT_SAMPLER_3D:
-      return GL_TEXTURE_3D;
-    case GL_SAMPLER_2D_ARRAY:
-    case GL_SAMPLER_2D_ARRAY_SHADOW:
-    case GL_INT_SAMPLER_2D_ARRAY:
-    case GL_UNSIGNED_INT_SAMPLER_2D_ARRAY:
-      return GL_TEXTURE_2D_ARRAY;
-    default:
-      return GL_TEXTURE_2D;
-  }
-}
-
 void SetSampling(const GlFunctions& gl, GLenum target, GLenum wrap) {
   gl.TexParameteri(target, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   gl.TexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -42,7 +21,7 @@ void SetSampling(const GlFunctions& gl, GLenum target, GLenum wrap) {
 BoundTexture CreateChannelTexture(const GlFunctions& gl, GLenum sampler_type,
                                   const ImageRgba8& user_image) {
   BoundTexture bound;
-  const GLenum target = TargetOf(sampler_type);
+  const GLenum target = TextureTargetOf(sampler_type);
   bound.target = target;
   gl.GenTextures(1, &bound.name);
   gl.BindTexture(target, bound.name);
@@ -88,6 +67,27 @@ BoundTexture CreateChannelTexture(const GlFunctions& gl, GLenum sampler_type,
   }
   SetSampling(gl, GL_TEXTURE_2D, GL_REPEAT);
   return bound;
+}
+
+GLenum TextureTargetOf(GLenum sampler_type) {
+  switch (sampler_type) {
+    case GL_SAMPLER_CUBE:
+    case GL_SAMPLER_CUBE_SHADOW:
+    case GL_INT_SAMPLER_CUBE:
+    case GL_UNSIGNED_INT_SAMPLER_CUBE:
+      return GL_TEXTURE_CUBE_MAP;
+    case GL_SAMPLER_3D:
+    case GL_INT_SAMPLER_3D:
+    case GL_UNSIGNED_INT_SAMPLER_3D:
+      return GL_TEXTURE_3D;
+    case GL_SAMPLER_2D_ARRAY:
+    case GL_SAMPLER_2D_ARRAY_SHADOW:
+    case GL_INT_SAMPLER_2D_ARRAY:
+    case GL_UNSIGNED_INT_SAMPLER_2D_ARRAY:
+      return GL_TEXTURE_2D_ARRAY;
+    default:
+      return GL_TEXTURE_2D;
+  }
 }
 
 }  // namespace shaderport::render

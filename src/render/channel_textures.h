@@ -15,6 +15,10 @@ struct BoundTexture {
   float depth = 1;
 };
 
+// The texture target a sampler of this GL type reads (GL_TEXTURE_CUBE_MAP for
+// GL_SAMPLER_CUBE, ...).
+GLenum TextureTargetOf(GLenum sampler_type);
+
 // `sampler_type` is the uniform's GL type (GL_SAMPLER_2D, GL_SAMPLER_CUBE, ...);
 // `user_image` may be empty. The texture is bound to the active texture unit.
 BoundTexture CreateChannelTexture(const GlFunctions& gl, GLenum sampler_type,

@@ -86,9 +86,14 @@ struct Loop {
   bool unbounded = false;
 };
 
-}  // namespace
+// A loop that may exceed llvmpipe's cap, with the range of its keyword.
+struct SuspectLoop {
+  SourceRange keyword;
+  bool unbounded = false;   // no visible bound
+  uint64_t iterations = 0;  // estimated per pixel, nested loops multiplied
+};
 
-DiagnosticList LoopCapNotes(const SourceFile& file) {
+std::vector<SuspectLoop> SuspectLoops(const SourceFile& file) {
   const std::string text = BlankComments(file.Text());
   const auto defines = NumericDefines(text);
   std::vector<Loop> loops;
@@ -125,7 +130,7 @@ DiagnosticList LoopCapNotes(const SourceFile& file) {
     if (loop.body_end == std::string::npos) loop.body_end = text.size();
     loops.push_back(loop);
   }
-  DiagnosticList notes;
+  std::vector<SuspectLoop> suspects;
   for (size_t k = 0; k < loops.size(); ++k) {
     // Multiply by the bounds of the loops this one is nested in.
     double total = loops[k].iterations;
@@ -136,19 +141,27 @@ DiagnosticList LoopCapNotes(const SourceFile& file) {
     }
     const bool exceeds = total > static_cast<double>(kLlvmpipeLoopCap);
     if (!exceeds && !loops[k].unbounded) continue;
-    Diagnostic d;
-    d.severity = Severity::kNote;
-    d.rule_id = "render/loop-cap";
-    d.range = {file.Id(), static_cast<uint32_t>(loops[k].keyword),
-               static_cast<uint32_t>(loops[k].keyword + (text[loops[k].keyword] == 'f' ? 3 : 5))};
-    d.message = loops[k].unbounded
-                    ? "this loop has no visible bound; llvmpipe stops every shader invocation "
-                      "after 65535 loop iterations, so the smoke render may not show what a "
-                      "browser does"
-                    : "this loop may run about " + std::to_string(static_cast<uint64_t>(total)) +
-                          " iterations per pixel, more than llvmpipe's silent cap of 65535: the "
-                          "smoke render may not show what a browser does";
-    notes.push_back(std::move(d));
+    const auto keyword = static_cast<uint32_t>(loops[k].keyword);
+    suspects.push_back({{file.Id(), keyword, keyword + (text[keyword] == 'f' ? 3u : 5u)},
+                        loops[k].unbounded,
+                        static_cast<uint64_t>(total)});
+  }
+  return suspects;
+}
+
+}  // namespace
+
+DiagnosticList LoopCapNotes(const SourceFile& file) {
+  DiagnosticList notes;
+  for (const SuspectLoop& loop : SuspectLoops(file)) {
+    notes.push_back(MakeDiagnostic(
+        Severity::kNote, "render/loop-cap", loop.keyword,
+        loop.unbounded ? "this loop has no visible bound; llvmpipe stops every shader invocation "
+                         "after 65535 loop iterations, so the smoke render may not show what a "
+                         "browser does"
+                       : "this loop may run about " + std::to_string(loop.iterations) +
+                             " iterations per pixel, more than llvmpipe's silent cap of 65535: "
+                             "the smoke render may not show what a browser does"));
   }
   return notes;
 }
@@ -163,17 +176,14 @@ DiagnosticList LoopCapFindings(const SourceFile& file, const RenderOutcome& outc
       " pixels after 65535 iterations, so this picture is not what a browser draws: a browser "
       "runs every iteration, and a loop that never ends hangs the GPU until the page loses its "
       "WebGL context";
-  DiagnosticList found = LoopCapNotes(file);
-  if (found.empty()) {
-    Diagnostic d;
-    d.rule_id = "render/loop-cap";
-    d.range = anchor;
-    found.push_back(std::move(d));
+  DiagnosticList found;
+  for (const SuspectLoop& loop : SuspectLoops(file)) {
+    found.push_back(
+        MakeDiagnostic(Severity::kWarning, "render/loop-cap", loop.keyword,
+                       message + (loop.unbounded ? " (this loop has no visible bound)" : "")));
   }
-  for (Diagnostic& d : found) {
-    const bool unbounded = d.message.find("no visible bound") != std::string::npos;
-    d.severity = Severity::kWarning;
-    d.message = message + (unbounded ? " (this loop has no visible bound)" : "");
+  if (found.empty()) {
+    found.push_back(MakeDiagnostic(Severity::kWarning, "render/loop-cap", anchor, message));
   }
   return found;
 }

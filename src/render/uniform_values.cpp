@@ -53,27 +53,6 @@ bool IsSampler(GLenum type) {
   }
 }
 
-GLenum TargetOfSampler(GLenum type) {
-  switch (type) {
-    case GL_SAMPLER_CUBE:
-    case GL_SAMPLER_CUBE_SHADOW:
-    case GL_INT_SAMPLER_CUBE:
-    case GL_UNSIGNED_INT_SAMPLER_CUBE:
-      return GL_TEXTURE_CUBE_MAP;
-    case GL_SAMPLER_3D:
-    case GL_INT_SAMPLER_3D:
-    case GL_UNSIGNED_INT_SAMPLER_3D:
-      return GL_TEXTURE_3D;
-    case GL_SAMPLER_2D_ARRAY:
-    case GL_SAMPLER_2D_ARRAY_SHADOW:
-    case GL_INT_SAMPLER_2D_ARRAY:
-    case GL_UNSIGNED_INT_SAMPLER_2D_ARRAY:
-      return GL_TEXTURE_2D_ARRAY;
-    default:
-      return GL_TEXTURE_2D;
-  }
-}
-
 std::vector<float> Identity(int n) {
   std::vector<float> m(static_cast<size_t>(n * n), 0.0f);
   for (int i = 0; i < n; ++i) m[static_cast<size_t>(i * n + i)] = 1.0f;
@@ -255,7 +234,7 @@ void SetUniforms(const GlFunctions& gl, GLuint program, const RenderRequest& req
       const bool unbound =
           entry.channel >= 0 && request.inputs.channels[static_cast<size_t>(entry.channel)].unbound;
       if (unbound && !overridden) {
-        entry.target = TargetOfSampler(u.type);  // texture 0: incomplete, samples (0,0,0,1)
+        entry.target = TextureTargetOf(u.type);  // texture 0: incomplete, samples (0,0,0,1)
       } else if (!overridden) {
         static const ImageRgba8 kNoImage;
         const ImageRgba8& image =

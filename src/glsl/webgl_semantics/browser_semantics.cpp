@@ -46,6 +46,14 @@ const FunctionDeclaration* FindMainDefinition(const SyntaxTree& tree) {
   return nullptr;
 }
 
+const Node* FirstFunctionDefinition(const SyntaxTree& tree) {
+  for (const Node* node : tree.Root()->declarations) {
+    const auto* function = node->As<FunctionDeclaration>();
+    if (function != nullptr && function->body != nullptr) return node;
+  }
+  return nullptr;
+}
+
 namespace {
 
 std::vector<uint32_t> ParentsOf(const SyntaxTree& tree) {

@@ -29,14 +29,6 @@ const VariableDeclaration* SingleOutput(const SyntaxTree& tree) {
   return found;
 }
 
-const Node* FirstFunctionDefinition(const SyntaxTree& tree) {
-  for (const Node* node : tree.Root()->declarations) {
-    const auto* function = node->As<FunctionDeclaration>();
-    if (function != nullptr && function->body != nullptr) return node;
-  }
-  return nullptr;
-}
-
 // The variable an lvalue-ish expression names at its root (`o.xy[1]` -> o).
 uint32_t RootSymbol(const Expr* expr, const SemanticModel& model) {
   for (int depth = 0; expr != nullptr && depth < 64; ++depth) {

@@ -58,6 +58,8 @@ struct SemanticsContext {
 
 // The definition of main(), if any.
 const FunctionDeclaration* FindMainDefinition(const SyntaxTree& tree);
+// The first function definition: where global helper declarations are inserted.
+const Node* FirstFunctionDefinition(const SyntaxTree& tree);
 
 // Statements inserted at the start of main() by several transforms, in a fixed order.
 struct MainPrologue {

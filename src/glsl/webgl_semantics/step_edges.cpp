@@ -84,14 +84,7 @@ void RewriteSmoothstepEdges(SemanticsContext& c, const PreprocessResult& preproc
     return;
   }
   if (names.empty()) return;
-  const Node* first_function = nullptr;
-  for (const Node* node : c.tree.Root()->declarations) {
-    const auto* function = node->As<FunctionDeclaration>();
-    if (function != nullptr && function->body != nullptr) {
-      first_function = node;
-      break;
-    }
-  }
+  const Node* first_function = FirstFunctionDefinition(c.tree);
   const auto declare_at = first_function ? c.edits.Span(*first_function) : std::nullopt;
   if (!declare_at) {
     c.result.skipped += static_cast<uint32_t>(names.size());
