@@ -16,6 +16,7 @@
 #include "diag/rule_catalog.h"
 #include "finding_format.h"
 #include "golden.h"
+#include "rules/golden_cases.h"
 #include "typing_test_support.h"
 
 namespace shaderport::portability_test {
@@ -39,30 +40,9 @@ std::vector<const rule::Rule*> PortabilityRules() {
   return selected;
 }
 
-struct Case {
-  fs::path input;
-  std::string rule_id;
-};
+using Case = testing::GoldenCase;
 
-std::vector<Case> AllCases() {
-  std::vector<Case> cases;
-  const fs::path root = fs::path(SHADERPORT_SOURCE_DIR) / "tests" / "rules";
-  for (const auto& dir : fs::directory_iterator(root)) {
-    const std::string name = dir.path().filename().string();
-    if (!dir.is_directory() || !name.starts_with("portability-")) continue;
-    for (const auto& file : fs::directory_iterator(dir.path())) {
-      const std::string file_name = file.path().filename().string();
-      const std::string ext = file.path().extension().string();
-      if ((ext == ".frag" || ext == ".vert" || ext == ".glsl") &&
-          file_name.find(".out.") == std::string::npos) {
-        cases.push_back({file.path(), "portability/" + name.substr(12)});
-      }
-    }
-  }
-  std::sort(cases.begin(), cases.end(),
-            [](const Case& a, const Case& b) { return a.input < b.input; });
-  return cases;
-}
+std::vector<Case> AllCases() { return testing::GoldenCases("portability"); }
 
 // `shaderport fix` with the portability rules only.
 rule::FixEngineResult FixPortability(const std::string& text, Kind kind, rule::ShaderStage stage) {

@@ -16,6 +16,7 @@
 
 #include "finding_format.h"
 #include "golden.h"
+#include "rules/golden_cases.h"
 #include "typing_test_support.h"
 
 namespace shaderport::typing_test {
@@ -27,30 +28,9 @@ using shaderport::testing::ReadWholeFile;
 
 namespace fs = std::filesystem;
 
-struct Case {
-  fs::path input;
-  std::string rule_id;
-};
+using Case = testing::GoldenCase;
 
-std::vector<Case> AllCases() {
-  std::vector<Case> cases;
-  const fs::path root = fs::path(SHADERPORT_SOURCE_DIR) / "tests" / "rules";
-  for (const auto& dir : fs::directory_iterator(root)) {
-    const std::string name = dir.path().filename().string();
-    if (!dir.is_directory() || !name.starts_with("typing-")) continue;
-    for (const auto& file : fs::directory_iterator(dir.path())) {
-      const std::string file_name = file.path().filename().string();
-      const std::string ext = file.path().extension().string();
-      if ((ext == ".frag" || ext == ".vert" || ext == ".glsl") &&
-          file_name.find(".out.") == std::string::npos) {
-        cases.push_back({file.path(), "typing/" + name.substr(7)});
-      }
-    }
-  }
-  std::sort(cases.begin(), cases.end(),
-            [](const Case& a, const Case& b) { return a.input < b.input; });
-  return cases;
-}
+std::vector<Case> AllCases() { return testing::GoldenCases("typing"); }
 
 TEST(TypingGolden, EveryRuleHasCases) {
   for (const rule::Rule* r : TypingRules()) {
