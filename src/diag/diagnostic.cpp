@@ -14,6 +14,13 @@ const char* SeverityName(Severity severity) {
   return "error";
 }
 
+std::optional<Severity> SeverityFromName(std::string_view name) {
+  for (const Severity severity : {Severity::kNote, Severity::kWarning, Severity::kError}) {
+    if (name == SeverityName(severity)) return severity;
+  }
+  return std::nullopt;
+}
+
 Diagnostic MakeDiagnostic(Severity severity, std::string rule_id, SourceRange range,
                           std::string message) {
   Diagnostic diagnostic;

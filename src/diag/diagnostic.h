@@ -2,7 +2,9 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "source/source_file.h"
@@ -46,6 +48,8 @@ inline bool HasErrors(const DiagnosticList& diagnostics) {
 }
 
 const char* SeverityName(Severity severity);
+// The inverse of SeverityName ("note", "warning", "error"); nothing for other text.
+std::optional<Severity> SeverityFromName(std::string_view name);
 
 // A diagnostic with no notes or fixes yet.
 Diagnostic MakeDiagnostic(Severity severity, std::string rule_id, SourceRange range,

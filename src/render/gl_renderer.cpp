@@ -54,8 +54,8 @@ ChannelOverrides OverridesFor(const std::array<int, 4>& channel_buffers,
   return overrides;
 }
 
-// A second colour attachment for the loop probe, when the program writes one at
-// location 1 (see RenderRequest::loop_probe_output).
+// A second colour attachment for the render probe, when the program writes one at
+// location 1 (see RenderRequest::probe_output).
 GLuint AttachProbe(const GlFunctions& gl, GLuint program, const RenderRequest& request,
                    GLsizei width, GLsizei height) {
   if (request.probe_output.empty() ||

@@ -3,7 +3,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -88,11 +87,8 @@ int RunCheckCommand(const CheckArgs& args) {
     }
   }
   if (!args.fail_on.empty()) {
-    static const std::map<std::string, Severity> kLevels = {
-        {"error", Severity::kError}, {"warning", Severity::kWarning}, {"note", Severity::kNote}};
-    const auto it = kLevels.find(args.fail_on);
-    if (it == kLevels.end()) return Usage("unknown --fail-on '" + args.fail_on + "'");
-    options.fail_on = it->second;
+    options.fail_on = SeverityFromName(args.fail_on);
+    if (!options.fail_on) return Usage("unknown --fail-on '" + args.fail_on + "'");
   }
   for (const std::string& spec : args.channels) {
     if (!ParseChannel(spec, options.channels)) {

@@ -84,14 +84,8 @@ int RunRender(const RenderArgs& args) {
       std::chrono::milliseconds(static_cast<int64_t>(args.timeout_seconds * 1000));
   options.render.hermetic = args.hermetic;
   options.webgl_semantics = !args.native;
-  Severity fail_on = Severity::kError;
-  if (args.fail_on == "warning") {
-    fail_on = Severity::kWarning;
-  } else if (args.fail_on == "note") {
-    fail_on = Severity::kNote;
-  } else if (args.fail_on != "error") {
-    return Usage("unknown --fail-on '" + args.fail_on + "' (error, warning or note)");
-  }
+  const std::optional<Severity> fail_on = SeverityFromName(args.fail_on);
+  if (!fail_on) return Usage("unknown --fail-on '" + args.fail_on + "' (error, warning or note)");
 
   SourceManager sources;
   if (!args.common.empty()) {
@@ -128,7 +122,7 @@ int RunRender(const RenderArgs& args) {
     std::fwrite(text.data(), 1, text.size(), stderr);
     const bool fails = std::any_of(report.files.front().diagnostics.begin(),
                                    report.files.front().diagnostics.end(),
-                                   [&](const Diagnostic& d) { return d.severity >= fail_on; });
+                                   [&](const Diagnostic& d) { return d.severity >= *fail_on; });
     if (fails && code == kExitOk) code = kExitFindings;
   }
   if (result.image) {

@@ -108,6 +108,18 @@ TEST_F(CliRender, ShaderToyJsonChannelsWithoutInputAreUnbound) {
   EXPECT_EQ(fed.pixels[2], 255);  // iChannelResolution[1].x is the stand-in's size
 }
 
+// A warning (the measured loop cap) fails the run only with --fail-on warning.
+TEST_F(CliRender, FailOnWarningTurnsWarningsIntoAFailingExit) {
+  const std::string shader =
+      std::string(SHADERPORT_SOURCE_DIR) + "/tests/render-parity/shaders/long-loop.glsl";
+  const CliRun plain = RunCli("render --hermetic --size 8x8 " + shader);
+  EXPECT_EQ(plain.exit_code, 0) << plain.output;
+  EXPECT_NE(plain.output.find("[render/loop-cap]"), std::string::npos) << plain.output;
+  const CliRun strict = RunCli("render --hermetic --size 8x8 --fail-on warning " + shader);
+  EXPECT_EQ(strict.exit_code, 1) << strict.output;
+  EXPECT_EQ(RunCli("render --hermetic --fail-on severe " + shader).exit_code, 2);
+}
+
 TEST_F(CliRender, EndlessShaderIsKilledAndReported) {
   const std::string path = ::testing::TempDir() + "/render-endless.glsl";
   std::ofstream(path) << "#define S(x) x = sin(x) * cos(x * 1.1) + 0.1;\n"
