@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   AddRulesCommand(app, exit_code);
   AddExplainCommand(app, exit_code);
   AddReportCommand(app, exit_code);
+  AddMergeCommand(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
