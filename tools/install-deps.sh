@@ -2,24 +2,35 @@
 # Installs every build and test dependency of shaderport from Debian 12 packages.
 # Idempotent: packages already present are skipped, and apt is not touched at all
 # when nothing is missing.
+#   tools/install-deps.sh           everything the build and the test suite need
+#   tools/install-deps.sh --build   only what building and installing the
+#                                   executable needs (the GitHub Action uses this)
 set -euo pipefail
 
-packages=(
+build_packages=(
   build-essential cmake ninja-build pkg-config ccache git
-  clang-14 libclang-rt-14-dev clang-format clang-tidy
   glslang-dev glslang-tools spirv-tools
   libspirv-cross-c-shared-dev spirv-cross
   libosmesa6-dev libpng-dev
   libegl1 libegl-mesa0 libgl1-mesa-dri
-  libgtest-dev libgmock-dev googletest libbenchmark-dev
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libfmt-dev
 )
+test_packages=(
+  clang-14 libclang-rt-14-dev clang-format clang-tidy
+  libgtest-dev libgmock-dev googletest libbenchmark-dev
+  # The GitHub Action and pre-commit hook tests read YAML and run pre-commit.
+  python3-yaml pre-commit
+)
 
-# Node.js is only needed for the SARIF schema validation test. Some images ship a
-# Node.js build that bundles npm and conflicts with Debian's npm package, so only
-# ask for Debian's packages when no node/npm is on PATH.
-if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
-  packages+=(nodejs npm)
+packages=("${build_packages[@]}")
+if [[ "${1:-}" != "--build" ]]; then
+  packages+=("${test_packages[@]}")
+  # Node.js is only needed for the SARIF schema validation test. Some images ship a
+  # Node.js build that bundles npm and conflicts with Debian's npm package, so only
+  # ask for Debian's packages when no node/npm is on PATH.
+  if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
+    packages+=(nodejs npm)
+  fi
 fi
 
 missing=()

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "base/limits.h"
+#include "rules/shadertoy/embedded_dialects.h"
 
 namespace shaderport::rules {
 namespace {
@@ -25,16 +26,9 @@ std::optional<std::string> ReadSmallFile(const std::filesystem::path& path) {
 
 std::vector<rule::HarnessDialect> LoadShipped() {
   std::vector<rule::HarnessDialect> dialects;
-  std::error_code error;
-  std::vector<std::filesystem::path> paths;
-  for (const auto& entry : std::filesystem::directory_iterator(DialectsDirectory(), error)) {
-    if (entry.path().extension() == ".toml") paths.push_back(entry.path());
-  }
-  std::sort(paths.begin(), paths.end());
-  for (const auto& path : paths) {
-    const auto text = ReadSmallFile(path);
-    if (!text) continue;
-    const SourceFile file(0, path.string(), *text);
+  for (const EmbeddedTextFile& shipped : EmbeddedDialectFiles()) {
+    const SourceFile file(0, "rules/dialects/" + std::string(shipped.name),
+                          std::string(shipped.text));
     rule::DialectLoadResult loaded = rule::ParseDialect(file);
     if (loaded.dialect) dialects.push_back(std::move(*loaded.dialect));
   }

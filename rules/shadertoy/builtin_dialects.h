@@ -9,8 +9,9 @@
 
 namespace shaderport::rules {
 
-// Every shipped dialect, sorted by name; loaded once (thread-safe) from the
-// dialects directory. A shipped file with errors is left out (a test guards this).
+// Every shipped dialect, sorted by name; parsed once (thread-safe) from the
+// copies compiled into the binary. A shipped file with errors is left out (a
+// test guards this).
 std::span<const rule::HarnessDialect> BuiltinDialects();
 
 // By name or alias ("shadertoy", "raymarch-harness"); nullptr when unknown.
@@ -21,7 +22,7 @@ const rule::HarnessDialect* FindBuiltinDialect(std::string_view name);
 // readable file gives a `dialect/not-found` error.
 rule::DialectLoadResult LoadDialect(std::string_view name_or_path, SourceManager& sources);
 
-// Where the shipped dialect files are (the source tree's rules/dialects).
+// The source tree's rules/dialects, where tests read the shipped files.
 std::string_view DialectsDirectory();
 
 }  // namespace shaderport::rules

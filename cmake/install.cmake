@@ -1,0 +1,54 @@
+# `cmake --install`: the shaderport executable, the layer libraries with their
+# headers, and a CMake package (find_package(shaderport), targets shaderport::<layer>
+# such as shaderport::driver); `cpack` makes a .deb that depends on the Debian
+# packages the libraries link.
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+set(shaderport_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/shaderport)
+get_property(shaderport_layers GLOBAL PROPERTY SHADERPORT_LAYERS)
+foreach(layer IN LISTS shaderport_layers)
+  string(REGEX REPLACE "^shaderport_" "" short_name ${layer})
+  set_target_properties(${layer} PROPERTIES EXPORT_NAME ${short_name})
+endforeach()
+set_target_properties(shaderport_glsl PROPERTIES EXPORT_NAME glsl)
+set_target_properties(shaderport_warnings PROPERTIES EXPORT_NAME warnings)
+
+install(TARGETS shaderport RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime)
+# shaderport_warnings only carries build flags; static libraries name it in their
+# link interface, so it is exported too (it adds nothing to a consumer's flags).
+install(TARGETS ${shaderport_layers} shaderport_glsl shaderport_warnings
+  EXPORT shaderportTargets
+  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT development
+  INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/shaderport)
+install(DIRECTORY src/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/shaderport COMPONENT development
+  FILES_MATCHING PATTERN "*.h")
+install(DIRECTORY rules/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/shaderport/rules
+  COMPONENT development FILES_MATCHING PATTERN "*.h")
+install(EXPORT shaderportTargets NAMESPACE shaderport:: DESTINATION ${shaderport_cmake_dir}
+  COMPONENT development)
+
+configure_package_config_file(cmake/shaderportConfig.cmake.in
+  ${CMAKE_CURRENT_BINARY_DIR}/shaderportConfig.cmake INSTALL_DESTINATION ${shaderport_cmake_dir})
+write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/shaderportConfigVersion.cmake
+  COMPATIBILITY SameMinorVersion)
+install(FILES ${CMAKE_CURRENT_BINARY_DIR}/shaderportConfig.cmake
+  ${CMAKE_CURRENT_BINARY_DIR}/shaderportConfigVersion.cmake DESTINATION ${shaderport_cmake_dir}
+  COMPONENT development)
+install(FILES README.md DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT runtime)
+
+# cpack -G DEB: dpkg-shlibdeps turns the shared libraries the executable links
+# (glslang, SPIRV-Tools, OSMesa, libpng, ...) into Depends on their Debian packages;
+# the static libraries and headers need the -dev packages, listed by hand.
+set(CPACK_PACKAGE_NAME shaderport)
+set(CPACK_PACKAGE_VENDOR shaderport)
+set(CPACK_PACKAGE_CONTACT "shaderport maintainers <shaderport@users.noreply.github.com>")
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY
+    "Lint, port and validate ShaderToy and WebGL shaders for WebGL2")
+set(CPACK_GENERATOR DEB)
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
+set(CPACK_DEBIAN_PACKAGE_SECTION devel)
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS
+    "glslang-dev, spirv-tools, libspirv-cross-c-shared-dev, libosmesa6-dev, libpng-dev, nlohmann-json3-dev, libtomlplusplus-dev")
+include(CPack)
