@@ -22,9 +22,12 @@ for path in ./usr/bin/shaderport ./usr/lib/cmake/shaderport/shaderportConfig.cma
 done
 depends=$(dpkg-deb -f "$deb" Depends)
 echo "Depends: $depends"
-# Every shared library the executable needs comes from a package it depends on.
+# Every shared library the executable links directly (its NEEDED entries)
+# comes from a package it depends on.
 checked=0
-for library in $(ldd "$build/shaderport" | awk '/=> \//{print $3}'); do
+needed=$(readelf -d "$build/shaderport" | sed -nE 's/.*\(NEEDED\).*\[(.*)\]/\1/p')
+for soname in $needed; do
+  library=$(ldd "$build/shaderport" | awk -v name="$soname" '$1 == name {print $3}')
   # dpkg knows a file by the path its package ships, /lib or /usr/lib.
   real=$(readlink -f "$library")
   package=""
@@ -33,10 +36,11 @@ for library in $(ldd "$build/shaderport" | awk '/=> \//{print $3}'); do
   done
   [[ -n "$package" ]] || { echo "FAIL: no package ships $library" >&2; exit 1; }
   checked=$((checked + 1))
-  grep -qE "(^|, )$package( |,|$)" <<<"$depends" || {
+  depended=$(tr ',' '\n' <<<"$depends" | awk '{print $1}')
+  grep -qxF "$package" <<<"$depended" || {
     echo "FAIL: $library ($package) is not in Depends" >&2
     exit 1
   }
 done
-[[ $checked -gt 0 ]] || { echo "FAIL: ldd listed no libraries" >&2; exit 1; }
+[[ $checked -gt 0 ]] || { echo "FAIL: the executable needs no shared library?" >&2; exit 1; }
 echo "deb: $(basename "$deb") holds the executable, headers, libraries and CMake package; $checked linked libraries are in Depends"
