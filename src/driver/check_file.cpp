@@ -134,7 +134,7 @@ const SourceFile* LoadSharedFile(const std::filesystem::path& path, SourceManage
 
 FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceManager& sources) {
   FileReport report;
-  InputText input = ReadInputFile(job.path);
+  InputText input = job.contents != nullptr ? *job.contents : ReadInputFile(job.path);
   if (!input.text) {
     report.file = &sources.Add(job.path.string(), "");
     report.diagnostics.push_back(MakeDiagnostic(Severity::kError, std::move(input.rule_id),

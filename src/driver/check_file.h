@@ -6,6 +6,7 @@
 
 #include "driver/check_options.h"
 #include "driver/config/config.h"
+#include "driver/read_input.h"
 #include "report/check_report.h"
 #include "source/source_manager.h"
 
@@ -16,6 +17,9 @@ struct FileJob {
   const Config* config = nullptr;          // the .shaderport.toml that governs it, if any
   const SourceFile* common = nullptr;      // ShaderToy Common code to compile before it
   bool common_checked_separately = false;  // then Common's own findings are not repeated here
+  // The file's contents when they were read elsewhere (--stdin); `path` then only
+  // names the file and need not exist.
+  const InputText* contents = nullptr;
 };
 
 // Thread-safe: adds the file (and generated text) to `sources` and never throws

@@ -1,13 +1,16 @@
 // What a user can set for one `shaderport check` run.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <utility>
 #include <vector>
 
 #include "diag/diagnostic.h"
 #include "driver/dialect.h"
+#include "driver/read_input.h"
 #include "validate/shadertoy_contract.h"
 
 namespace shaderport::driver {
@@ -30,6 +33,18 @@ struct CheckOptions {
   bool render = false;
   int render_size = 64;        // --render-size: width and height in pixels
   double render_timeout = 10;  // seconds before a render is killed
+  // --stdin: check these contents (read by the caller) as the file `name`, which
+  // need not exist; its extension and directory count as for a real file there.
+  // `paths` is then ignored.
+  struct InMemoryFile {
+    std::filesystem::path name;
+    InputText contents;
+  };
+  std::optional<InMemoryFile> in_memory;
+  // Called after each file is done (checked, or rendered with --render), one call at
+  // a time (from the worker threads, so it must not assume a thread); the caller
+  // decides what to show. `done` counts up to `total`.
+  std::function<void(size_t done, size_t total)> progress;
 };
 
 }  // namespace shaderport::driver

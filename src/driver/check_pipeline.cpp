@@ -1,10 +1,11 @@
 #include "driver/check_pipeline.h"
 
 #include <map>
+#include <mutex>
 
 #include "driver/check_file.h"
 #include "driver/check_link.h"
-#include "driver/config/find_config.h"
+#include "driver/config/config_lookup.h"
 #include "driver/input_files.h"
 #include "driver/parallel_for.h"
 
@@ -12,48 +13,6 @@ namespace shaderport::driver {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Configs are found and parsed once per file, before the parallel part, so
-// that every job sees a finished Config. Their own errors become a report
-// entry of the config file.
-class ConfigCache {
- public:
-  ConfigCache(const CheckOptions& options, SourceManager& sources, CheckRun& run)
-      : options_(options), sources_(sources), run_(run) {
-    if (options.use_config && options.config) explicit_ = Load(*options.config);
-  }
-
-  const Config* For(const fs::path& file) {
-    if (!options_.use_config) return nullptr;
-    if (options_.config) return explicit_;
-    const std::optional<fs::path> path = FindConfigFor(file);
-    return path ? Load(*path) : nullptr;
-  }
-
- private:
-  const Config* Load(const fs::path& path) {
-    const fs::path key = fs::weakly_canonical(path);
-    if (auto it = configs_.find(key); it != configs_.end()) return &it->second;
-    ConfigResult result = LoadConfig(path, sources_);
-    if (!result.diagnostics.empty()) {
-      FileReport report;
-      const FileId id = result.diagnostics.front().range.file;
-      report.file = id != kNoFile ? &sources_.Get(id) : &sources_.Add(path.string(), "");
-      for (Diagnostic& diagnostic : result.diagnostics) {
-        if (!diagnostic.range.Valid()) diagnostic.range = {report.file->Id(), 0, 0};
-      }
-      report.diagnostics = std::move(result.diagnostics);
-      run_.report.files.push_back(std::move(report));
-    }
-    return &configs_.emplace(key, std::move(result.config)).first->second;
-  }
-
-  const CheckOptions& options_;
-  SourceManager& sources_;
-  CheckRun& run_;
-  const Config* explicit_ = nullptr;
-  std::map<fs::path, Config> configs_;  // node-based: pointers stay valid
-};
 
 // A ShaderToy directory with a common.glsl compiles it before every other pass
 // of that directory, as the site compiles the Common tab into each pass.
@@ -83,24 +42,27 @@ CheckRun RunCheck(const CheckOptions& options) {
   run.report.sources = run.sources.get();
   SourceManager& sources = *run.sources;
 
-  InputFileList inputs = CollectInputFiles(options.paths);
+  ConfigLookup configs(options.use_config, options.config, sources);
+  InputSet inputs;
+  if (options.in_memory) {
+    inputs.files.push_back({options.in_memory->name, options.in_memory->name, true});
+  } else {
+    inputs =
+        WalkInputs(options.paths, [&](const fs::path& file) { return configs.Includes(file); });
+  }
   run.usage_errors = std::move(inputs.errors);
 
-  ConfigCache configs(options, sources, run);
   std::map<fs::path, const SourceFile*> commons;
   std::vector<FileJob> jobs;
-  std::vector<fs::path> explicit_files(options.paths.begin(), options.paths.end());
-  for (const fs::path& path : inputs.files) {
+  for (const InputFile& input : inputs.files) {
     FileJob job;
-    job.path = path;
-    job.config = configs.For(path);
-    const bool named =
-        std::find(explicit_files.begin(), explicit_files.end(), path) != explicit_files.end();
-    // Config globs are relative to the config's (absolute) directory.
-    if (!named && job.config != nullptr && !IsIncluded(*job.config, fs::absolute(path))) continue;
-    job.common = CommonFor(path, options, commons, sources, run);
+    job.path = input.path;
+    job.config = configs.For(input.path);
+    job.common = CommonFor(input.path, options, commons, sources, run);
+    if (options.in_memory) job.contents = &options.in_memory->contents;
     jobs.push_back(std::move(job));
   }
+  for (FileReport& problem : configs.TakeProblems()) run.report.files.push_back(std::move(problem));
   for (FileJob& job : jobs) {
     if (job.common == nullptr) continue;
     job.common_checked_separately =
@@ -109,9 +71,18 @@ CheckRun RunCheck(const CheckOptions& options) {
         });
   }
 
+  std::mutex progress_mutex;
+  size_t files_done = 0;
+  auto file_done = [&] {
+    if (!options.progress) return;
+    const std::lock_guard lock(progress_mutex);
+    options.progress(++files_done, jobs.size());
+  };
   std::vector<FileReport> reports(jobs.size());
-  ParallelFor(jobs.size(), options.jobs,
-              [&](size_t i) { reports[i] = CheckFile(jobs[i], options, sources); });
+  ParallelFor(jobs.size(), options.jobs, [&](size_t i) {
+    reports[i] = CheckFile(jobs[i], options, sources);
+    if (!options.render) file_done();
+  });
   // Programs link once both stages are checked (before renders, whose findings
   // must not stop a link).
   for (const auto& [vertex, fragment] : FindPrograms(jobs, options)) {
@@ -121,8 +92,10 @@ CheckRun RunCheck(const CheckOptions& options) {
   // waiting forever on a lock one of them held, so renders run here, one at a
   // time, once the parallel part has ended (llvmpipe draws on several threads itself).
   if (options.render) {
-    for (size_t i = 0; i < jobs.size(); ++i)
+    for (size_t i = 0; i < jobs.size(); ++i) {
       RenderCheckedFile(jobs[i], options, sources, reports[i]);
+      file_done();
+    }
   }
 
   for (size_t i = 0; i < jobs.size(); ++i) {

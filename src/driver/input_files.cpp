@@ -16,11 +16,33 @@ bool IsShaderExtension(const fs::path& path) {
   return std::find(kExtensions.begin(), kExtensions.end(), extension) != kExtensions.end();
 }
 
-InputFileList CollectInputFiles(const std::vector<fs::path>& paths) {
-  InputFileList result;
+namespace {
+
+// The files under `root`, sorted, or an error message.
+std::vector<fs::path> WalkDirectory(const fs::path& root, std::string& error_message) {
+  std::vector<fs::path> found;
+  std::error_code error;
+  fs::recursive_directory_iterator it(root, fs::directory_options::skip_permission_denied, error);
+  for (; !error && it != fs::recursive_directory_iterator(); it.increment(error)) {
+    // Hidden directories (.git, .cache) never hold shaders a user wants checked.
+    if (it->is_directory() && it->path().filename().string().starts_with(".")) {
+      it.disable_recursion_pending();
+      continue;
+    }
+    if (it->is_regular_file() && IsShaderExtension(it->path())) found.push_back(it->path());
+  }
+  if (error) error_message = root.string() + ": " + error.message();
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
+}  // namespace
+
+InputSet WalkInputs(const std::vector<fs::path>& paths, const KeepWalkedFile& keep) {
+  InputSet result;
   std::set<fs::path> seen;
-  auto add = [&](const fs::path& file) {
-    if (seen.insert(file.lexically_normal()).second) result.files.push_back(file);
+  auto add = [&](InputFile file) {
+    if (seen.insert(file.path.lexically_normal()).second) result.files.push_back(std::move(file));
   };
   for (const fs::path& path : paths) {
     std::error_code error;
@@ -30,23 +52,24 @@ InputFileList CollectInputFiles(const std::vector<fs::path>& paths) {
       continue;
     }
     if (!fs::is_directory(status)) {
-      add(path);
+      add({path, path.lexically_normal(), true});
       continue;
     }
-    std::vector<fs::path> found;
-    fs::recursive_directory_iterator it(path, fs::directory_options::skip_permission_denied, error);
-    for (; !error && it != fs::recursive_directory_iterator(); it.increment(error)) {
-      // Hidden directories (.git, .cache) never hold shaders a user wants checked.
-      if (it->is_directory() && it->path().filename().string().starts_with(".")) {
-        it.disable_recursion_pending();
-        continue;
-      }
-      if (it->is_regular_file() && IsShaderExtension(it->path())) found.push_back(it->path());
+    std::string walk_error;
+    for (const fs::path& file : WalkDirectory(path, walk_error)) {
+      if (keep && !keep(file)) continue;
+      add({file, file.lexically_relative(path), false});
     }
-    if (error) result.errors.push_back(path.string() + ": " + error.message());
-    std::sort(found.begin(), found.end());
-    for (const fs::path& file : found) add(file);
+    if (!walk_error.empty()) result.errors.push_back(std::move(walk_error));
   }
+  return result;
+}
+
+InputFileList CollectInputFiles(const std::vector<fs::path>& paths) {
+  InputSet inputs = WalkInputs(paths);
+  InputFileList result;
+  for (InputFile& file : inputs.files) result.files.push_back(std::move(file.path));
+  result.errors = std::move(inputs.errors);
   return result;
 }
 

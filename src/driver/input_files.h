@@ -1,22 +1,47 @@
-// Turns the paths a user gives into the list of shader files to process.
+// Turns the paths a user gives into the list of shader files to process. Every
+// command that takes paths (check, fix, port, report, summary) walks them here.
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
 namespace shaderport::driver {
 
-// Extensions `check` picks up when it walks a directory.
+// Extensions picked up when a directory is walked.
 bool IsShaderExtension(const std::filesystem::path& path);
 
-struct InputFileList {
-  std::vector<std::filesystem::path> files;  // sorted, without duplicates
-  std::vector<std::string> errors;           // paths that do not exist, unreadable directories
+struct InputFile {
+  std::filesystem::path path;  // to open: the argument, or the argument joined with `relative`
+  // Where the file sits under the argument it came from: the path below a directory
+  // argument, or the argument itself (normalised) for a file named directly. This is
+  // the layout `port --out-dir` and the like keep.
+  std::filesystem::path relative;
+  bool named = false;  // named on the command line, not found by walking
 };
 
+struct InputSet {
+  std::vector<InputFile> files;     // in argument order, each directory's files sorted
+  std::vector<std::string> errors;  // paths that do not exist, unreadable directories
+};
+
+// Decides whether a file found by walking a directory is kept (the include and
+// exclude globs of its .shaderport.toml); files named directly are always kept.
+using KeepWalkedFile = std::function<bool(const std::filesystem::path& file)>;
+
 // Files named directly are taken whatever their extension; directories are walked
-// recursively for shader extensions. The order is deterministic (sorted per argument).
+// recursively for shader extensions, skipping hidden directories. A file reached
+// twice is listed once, where it is first reached.
+InputSet WalkInputs(const std::vector<std::filesystem::path>& paths,
+                    const KeepWalkedFile& keep = nullptr);
+
+struct InputFileList {
+  std::vector<std::filesystem::path> files;  // WalkInputs' paths, nothing dropped
+  std::vector<std::string> errors;
+};
+
+// WalkInputs without a filter, paths only.
 InputFileList CollectInputFiles(const std::vector<std::filesystem::path>& paths);
 
 }  // namespace shaderport::driver

@@ -62,4 +62,19 @@ InputText ReadInputFile(const std::filesystem::path& path) {
   return ClassifyInputText(std::move(text));
 }
 
+InputText ReadInputStream(std::istream& in) {
+  std::string text;
+  char buffer[65536];
+  while (text.size() <= limits::kMaxFileBytes && in.read(buffer, sizeof buffer).gcount() > 0) {
+    text.append(buffer, static_cast<size_t>(in.gcount()));
+  }
+  if (in.bad()) return Reject("input/unreadable", "cannot read standard input");
+  if (text.size() > limits::kMaxFileBytes) {
+    return Reject("input/too-large", "standard input is larger than the " +
+                                         std::to_string(limits::kMaxFileBytes >> 20) +
+                                         " MiB limit");
+  }
+  return ClassifyInputText(std::move(text));
+}
+
 }  // namespace shaderport::driver

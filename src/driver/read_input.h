@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <istream>
 #include <optional>
 #include <string>
 
@@ -17,6 +18,10 @@ struct InputText {
 
 // The size is checked before anything is read, so a huge file costs nothing.
 InputText ReadInputFile(const std::filesystem::path& path);
+
+// Reads a stream (standard input) within the same limit: reading stops one buffer
+// (64 KiB) past the limit, so an endless stream costs nothing.
+InputText ReadInputStream(std::istream& in);
 
 // Classifies text already in memory (stdin, tests): "" when it looks like shader source.
 InputText ClassifyInputText(std::string text);

@@ -33,6 +33,7 @@ struct ReportOptions {
   std::string base_directory;
   std::string information_uri;  // SARIF tool.driver.informationUri, omitted when empty
   bool color = false;           // text only: ANSI colours (the CLI decides: TTY, NO_COLOR)
+  bool summary_line = true;     // text only: end with the "N errors, ..." line (check -q: not)
 };
 
 struct ReportSummary {

@@ -66,8 +66,10 @@ class TextPrinter {
     for (const FileReport& file : report_.files) {
       for (const Diagnostic& diagnostic : file.diagnostics) PrintDiagnostic(file, diagnostic);
     }
-    out_ += Paint(kBold, SummaryLine(Summarize(report_)));
-    out_ += '\n';
+    if (options_.summary_line) {
+      out_ += Paint(kBold, SummaryLine(Summarize(report_)));
+      out_ += '\n';
+    }
     return std::move(out_);
   }
 

@@ -3,12 +3,17 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <iostream>
 #include <string>
 #include <vector>
 
 #include "commands.h"
 #include "driver/check_pipeline.h"
+#include "driver/read_input.h"
+#include "progress_line.h"
 #include "report/output_format.h"
+#include "report/statistics.h"
+#include "report/text_format.h"
 
 namespace shaderport::cli {
 namespace {
@@ -30,6 +35,11 @@ struct CheckArgs {
   bool render = false;
   int render_size = 64;
   double render_timeout = 10;
+  bool stdin_input = false;    // --stdin
+  std::string stdin_filename;  // --stdin-filename
+  bool statistics = false;
+  bool quiet = false;
+  std::string progress = "auto";
 };
 
 bool ParseChannel(const std::string& spec, validate::ChannelTypes& channels) {
@@ -107,8 +117,25 @@ int RunCheckCommand(const CheckArgs& args) {
   options.render_size = args.render_size;
   options.render_timeout = args.render_timeout;
 
-  if (options.paths.empty()) return Usage("no files or directories to check");
+  const std::optional<ProgressMode> progress_mode = ParseProgressMode(args.progress);
+  if (!progress_mode) return Usage("unknown --progress '" + args.progress + "'");
+  if (!args.stdin_filename.empty() && !args.stdin_input) {
+    return Usage("--stdin-filename needs --stdin");
+  }
+  if (args.stdin_input) {
+    if (!options.paths.empty()) return Usage("--stdin takes no files, directories or --link");
+    const std::string name = args.stdin_filename.empty() ? "<stdin>" : args.stdin_filename;
+    options.in_memory = {name, driver::ReadInputStream(std::cin)};
+  } else if (options.paths.empty()) {
+    return Usage("no files or directories to check");
+  }
+  // -q asks for the findings alone; --progress always still draws the line.
+  ProgressLine progress(
+      args.quiet && *progress_mode == ProgressMode::kAuto ? ProgressMode::kNever : *progress_mode,
+      "checking");
+  options.progress = [&progress](size_t done, size_t total) { progress.Update(done, total); };
   driver::CheckRun run = driver::RunCheck(options);
+  progress.Clear();
   for (const std::string& error : run.usage_errors) {
     std::fprintf(stderr, "shaderport check: error: %s\n", error.c_str());
   }
@@ -117,7 +144,23 @@ int RunCheckCommand(const CheckArgs& args) {
   report_options.tool_version = SHADERPORT_VERSION;
   report_options.base_directory = std::filesystem::current_path().string();
   report_options.color = *format == OutputFormat::kText && UseColor(args.color);
-  const std::string output = FormatReport(run.report, *format, report_options);
+  const bool text = *format == OutputFormat::kText;
+  // Text: findings, the statistics, then the summary line last, where tools look for it.
+  report_options.summary_line = !args.quiet && !(text && args.statistics);
+  std::string output = FormatReport(run.report, *format, report_options);
+  if (args.statistics) {
+    const std::string table = FormatStatistics(CountByRule(run.report));
+    if (!text) {
+      std::fputs(table.c_str(), stderr);  // stdout stays machine-readable
+    } else {
+      if (!output.empty() && !table.empty()) output += '\n';
+      output += table;
+      if (!args.quiet) {
+        const std::string summary = SummaryLine(Summarize(run.report));
+        output += report_options.color ? "\x1b[1m" + summary + "\x1b[0m\n" : summary + '\n';
+      }
+    }
+  }
   std::fwrite(output.data(), 1, output.size(), stdout);
   std::fflush(stdout);
   if (run.internal_error) return kExitInternal;
@@ -161,6 +204,20 @@ void AddCheckCommand(CLI::App& app, int& exit_code) {
   command->add_option("--render-timeout", args->render_timeout,
                       "Seconds before a render is killed (default 10)");
   command->add_option("--color", args->color, "auto | always | never (NO_COLOR is honoured)")
+      ->capture_default_str();
+  command->add_flag("--stdin", args->stdin_input,
+                    "Check the shader read from standard input (as --stdin-filename)");
+  command->add_option("--stdin-filename", args->stdin_filename,
+                      "The path the --stdin text stands for: its extension, directory, config "
+                      "and common.glsl count as for a file there (need not exist)");
+  command->add_flag("--statistics", args->statistics,
+                    "Count the findings per rule (text: after the findings; other formats: on "
+                    "standard error)");
+  command->add_flag("-q,--quiet", args->quiet, "Print the findings only, no summary line");
+  command
+      ->add_option("--progress", args->progress,
+                   "auto | always | never: a progress line on standard error (auto: on a "
+                   "terminal, once a run lasts a second)")
       ->capture_default_str();
   command->callback([args, &exit_code] { exit_code = RunCheckCommand(*args); });
 }

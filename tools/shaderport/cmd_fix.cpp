@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <iostream>
 #include <memory>
 #include <optional>
 #include <string>
@@ -14,59 +15,89 @@
 #include "driver/port/output_files.h"
 #include "driver/port/port_file.h"
 #include "driver/port/port_report.h"
+#include "driver/read_input.h"
 #include "port_arguments.h"
 
 namespace shaderport::cli {
 namespace {
 
 struct FixArgs {
-  std::vector<std::string> paths;
+  InputArguments input;
   bool diff = false;
   bool in_place = false;
   std::string output;
   PortArguments port;
+  bool stdin_input = false;    // --stdin
+  std::string stdin_filename;  // --stdin-filename
 };
 
+int Usage(const std::string& message) {
+  std::fprintf(stderr, "shaderport fix: error: %s\n", message.c_str());
+  return kExitUsage;
+}
+
+int WriteOrReport(const std::filesystem::path& path, const std::string& text) {
+  const std::string error = driver::WriteFileAtomically(path, text);
+  if (error.empty()) return kExitOk;
+  std::fprintf(stderr, "shaderport fix: %s\n", error.c_str());
+  return kExitInternal;
+}
+
+// Sends one fixed file where the options say; returns its exit code.
+int Emit(const FixArgs& args, const driver::PortResult& result, const std::filesystem::path& path) {
+  if (result.read_failed) return kExitFindings;
+  if (args.diff) {
+    std::fputs(driver::UnifiedDiff(result.file->Text(), result.text, path.string()).c_str(),
+               stdout);
+  } else if (args.in_place) {
+    if (result.Changed()) return WriteOrReport(path, result.text);
+  } else if (!args.output.empty()) {
+    return WriteOrReport(args.output, result.text);
+  } else {
+    std::fwrite(result.text.data(), 1, result.text.size(), stdout);
+  }
+  return kExitOk;
+}
+
 int RunFix(const FixArgs& args) {
-  if (args.paths.size() > 1 && !args.in_place && !args.diff) {
-    std::fprintf(stderr, "shaderport fix: several files need --in-place or --diff\n");
-    return kExitUsage;
-  }
-  if (!args.output.empty() && args.paths.size() != 1) {
-    std::fprintf(stderr, "shaderport fix: -o takes exactly one input file\n");
-    return kExitUsage;
-  }
   SourceManager sources;
   driver::PortOptions options;
   options.mode = rule::PortMode::kFix;
   std::optional<rule::HarnessDialect> harness;
   if (!ApplyPortArguments("fix", args.port, options, sources, harness)) return kExitUsage;
+  if (!args.stdin_filename.empty() && !args.stdin_input) {
+    return Usage("--stdin-filename needs --stdin");
+  }
+
   int exit_code = kExitOk;
   std::vector<driver::PortResult> results;
-  for (const std::string& path : args.paths) {
-    driver::PortResult result = driver::PortFile(path, options, sources);
-    if (result.read_failed) {
-      exit_code = std::max(exit_code, kExitFindings);
-    } else if (args.diff) {
-      std::fputs(driver::UnifiedDiff(result.file->Text(), result.text, path).c_str(), stdout);
-    } else if (args.in_place) {
-      if (result.Changed()) {
-        const std::string error = driver::WriteFileAtomically(path, result.text);
-        if (!error.empty()) {
-          std::fprintf(stderr, "shaderport fix: %s\n", error.c_str());
-          exit_code = kExitInternal;
-        }
-      }
-    } else if (!args.output.empty()) {
-      const std::string error = driver::WriteFileAtomically(args.output, result.text);
-      if (!error.empty()) {
-        std::fprintf(stderr, "shaderport fix: %s\n", error.c_str());
-        exit_code = kExitInternal;
-      }
-    } else {
-      std::fwrite(result.text.data(), 1, result.text.size(), stdout);
+  if (args.stdin_input) {
+    if (!args.input.paths.empty()) return Usage("--stdin takes no files or directories");
+    if (args.in_place) return Usage("standard input cannot be fixed in place");
+    const std::filesystem::path name =
+        args.stdin_filename.empty() ? "<stdin>" : args.stdin_filename;
+    results.push_back(driver::PortInput(name, driver::ReadInputStream(std::cin), options, sources));
+    exit_code = Emit(args, results.back(), name);
+  } else {
+    bool config_failed = false;
+    const auto inputs = SelectInputFiles("fix", args.input, config_failed);
+    if (!inputs) return kExitUsage;
+    if (config_failed) exit_code = kExitFindings;
+    if (!args.output.empty() && inputs->size() != 1) {
+      return Usage("-o takes exactly one input file, and the paths hold " +
+                   std::to_string(inputs->size()));
     }
-    results.push_back(std::move(result));
+    if (inputs->size() > 1 && !args.in_place && !args.diff) {
+      return Usage("the paths hold " + std::to_string(inputs->size()) +
+                   " files: fix prints one file; use --in-place or --diff for several");
+    }
+    if (inputs->empty()) {
+      std::fprintf(stderr, "shaderport fix: warning: no shader files in the given paths\n");
+    }
+    for (const driver::InputFile& input : *inputs) {
+      results.push_back(driver::PortFile(input.path, options, sources));
+      exit_code = std::max(exit_code, Emit(args, results.back(), input.path));
+    }
   }
   if (!driver::HasFindings(results)) return exit_code;
   const bool color = ::isatty(STDERR_FILENO) != 0 && std::getenv("NO_COLOR") == nullptr;
@@ -80,8 +111,9 @@ void AddFixCommand(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<FixArgs>();
   CLI::App* command = app.add_subcommand(
       "fix", "Apply safe fixes, keeping each file's dialect (prints the result by default)");
-  command->add_option("paths", args->paths, "Shader files")->required();
-  auto* diff = command->add_flag("--diff", args->diff, "Print a unified diff instead");
+  AddInputOptions(*command, args->input);
+  auto* diff =
+      command->add_flag("--diff", args->diff, "Print a unified diff of every file instead");
   auto* in_place =
       command->add_flag("--in-place,-i", args->in_place, "Rewrite the files (atomically)");
   auto* output = command->add_option("-o,--output", args->output, "Write the result to this file");
@@ -91,6 +123,11 @@ void AddFixCommand(CLI::App& app, int& exit_code) {
                       "shadertoy|webgl1|webgl2, a harness dialect name, or a dialect TOML");
   command->add_option("--channel", args->port.channels, "Sampler type of a channel: N=2d|cube|3d");
   command->add_option("--stage", args->port.stage, "vertex|fragment (default: detected)");
+  command->add_flag("--stdin", args->stdin_input,
+                    "Fix the shader read from standard input (the result goes to standard output)");
+  command->add_option("--stdin-filename", args->stdin_filename,
+                      "The path the --stdin text stands for: its extension and directory count "
+                      "as for a file there (need not exist)");
   command->callback([args, &exit_code] { exit_code = RunFix(*args); });
 }
 

@@ -6,6 +6,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +21,7 @@
 #include "driver/port/port_report.h"
 #include "driver/read_input.h"
 #include "port_arguments.h"
+#include "progress_line.h"
 #include "rule/harness_dialect.h"
 #include "toolchain/emit.h"
 
@@ -26,7 +29,7 @@ namespace shaderport::cli {
 namespace {
 
 struct PortArgs {
-  std::vector<std::string> paths;
+  InputArguments input;
   std::string output;
   std::string out_dir;
   std::string dialect;
@@ -37,26 +40,17 @@ struct PortArgs {
   int hlsl_shader_model = 50;
   int msl_version = 20000;
   int jobs = 0;
+  std::string progress = "auto";
 };
 
-std::filesystem::path OutputPathFor(const std::string& input, const std::string& out_dir,
-                                    driver::Stage stage, const std::string& extension) {
-  std::filesystem::path relative = std::filesystem::path(input).lexically_normal();
-  if (relative.is_absolute()) relative = relative.filename();
-  while (!relative.empty() && *relative.begin() == "..") {
-    relative = relative.lexically_relative(*relative.begin());
-  }
-  relative.replace_extension(!extension.empty()                ? extension
-                             : stage == driver::Stage::kVertex ? ".vert"
-                                                               : ".frag");
-  return std::filesystem::path(out_dir) / relative;
+int Usage(const std::string& message) {
+  std::fprintf(stderr, "shaderport port: error: %s\n", message.c_str());
+  return kExitUsage;
 }
 
 int RunPort(const PortArgs& args) {
-  if (!args.output.empty() && args.paths.size() != 1) {
-    std::fprintf(stderr, "shaderport port: -o takes exactly one input file (use --out-dir)\n");
-    return kExitUsage;
-  }
+  const std::optional<ProgressMode> progress_mode = ParseProgressMode(args.progress);
+  if (!progress_mode) return Usage("unknown --progress '" + args.progress + "'");
   const auto emit_kind = toolchain::EmitKindFromName(args.emit);
   if (!emit_kind) {
     std::fprintf(stderr, "shaderport port: unknown --emit kind '%s'\n", args.emit.c_str());
@@ -75,41 +69,74 @@ int RunPort(const PortArgs& args) {
   if (!args.optimize.empty()) emit_options.optimize = args.optimize;
   emit_options.hlsl_shader_model = args.hlsl_shader_model;
   emit_options.msl_version = args.msl_version;
-  std::vector<driver::PortResult> results(args.paths.size());
-  std::vector<driver::EmittedOutput> emitted(args.paths.size());
-  driver::ParallelFor(args.paths.size(), static_cast<unsigned>(std::max(0, args.jobs)),
-                      [&](size_t i) {
-                        results[i] = driver::PortFile(args.paths[i], options, sources);
-                        if (*emit_kind == toolchain::EmitKind::kEssl || results[i].read_failed) {
-                          return;
-                        }
-                        emitted[i] = driver::EmitPorted(results[i], emit_options, sources);
-                      });
+  bool config_failed = false;
+  const auto inputs = SelectInputFiles("port", args.input, config_failed);
+  if (!inputs) return kExitUsage;
+  const int config_exit = config_failed ? kExitFindings : kExitOk;
+  if (!args.output.empty() && inputs->size() != 1) {
+    return Usage("-o takes exactly one input file, and the paths hold " +
+                 std::to_string(inputs->size()) + " (use --out-dir)");
+  }
+  if (inputs->empty()) {
+    std::fprintf(stderr, "shaderport port: warning: no shader files in the given paths\n");
+    return config_exit;
+  }
+
+  ProgressLine progress(*progress_mode, "porting");
+  std::mutex progress_mutex;
+  size_t files_done = 0;
+  std::vector<driver::PortResult> results(inputs->size());
+  std::vector<driver::EmittedOutput> emitted(inputs->size());
+  driver::ParallelFor(inputs->size(), static_cast<unsigned>(std::max(0, args.jobs)), [&](size_t i) {
+    results[i] = driver::PortFile((*inputs)[i].path, options, sources);
+    if (*emit_kind != toolchain::EmitKind::kEssl && !results[i].read_failed) {
+      emitted[i] = driver::EmitPorted(results[i], emit_options, sources);
+    }
+    const std::lock_guard lock(progress_mutex);
+    progress.Update(++files_done, inputs->size());
+  });
+  progress.Clear();
 
   // Stages ported together must still link as one program.
   if (*emit_kind == toolchain::EmitKind::kEssl) driver::LinkPortedPairs(results);
 
-  int exit_code = kExitOk;
+  // What each input gives and where it goes, decided before anything is written.
+  std::vector<std::optional<std::string>> outputs(results.size());
+  std::vector<std::filesystem::path> input_paths;
+  std::vector<std::filesystem::path> targets(results.size());
   for (size_t i = 0; i < results.size(); ++i) {
-    driver::PortResult& result = results[i];
+    const driver::PortResult& result = results[i];
+    input_paths.push_back((*inputs)[i].path);
     if (result.read_failed) continue;
-    std::string output = result.text;
-    std::string extension;
-    if (*emit_kind != toolchain::EmitKind::kEssl) {
+    std::string extension = result.output_stage == driver::Stage::kVertex ? ".vert" : ".frag";
+    if (*emit_kind == toolchain::EmitKind::kEssl) {
+      outputs[i] = result.text;
+    } else {
       if (emitted[i].output.empty()) continue;  // the leg reported why
-      output = std::move(emitted[i].output);
-      extension = emitted[i].extension;
+      outputs[i] = std::move(emitted[i].output);
+      if (!emitted[i].extension.empty()) extension = emitted[i].extension;
       if (emit_options.optimize) {
-        std::fprintf(stderr, "%s: SPIR-V %zu -> %zu words (-%s)\n", args.paths[i].c_str(),
-                     emitted[i].words_before, emitted[i].words_after,
-                     emit_options.optimize->c_str());
+        std::fprintf(stderr, "%s: SPIR-V %zu -> %zu words (-%s)\n",
+                     (*inputs)[i].path.string().c_str(), emitted[i].words_before,
+                     emitted[i].words_after, emit_options.optimize->c_str());
       }
     }
-    if (!args.out_dir.empty() || !args.output.empty()) {
-      const std::filesystem::path target =
-          !args.output.empty()
-              ? std::filesystem::path(args.output)
-              : OutputPathFor(args.paths[i], args.out_dir, result.output_stage, extension);
+    if (!args.output.empty()) targets[i] = args.output;
+    if (!args.out_dir.empty()) {
+      targets[i] = driver::OutDirPath(args.out_dir, (*inputs)[i].relative, extension);
+    }
+  }
+  // -o names its one target; --out-dir makes them up, so it must not make two
+  // alike or replace an input.
+  const std::string clash = args.out_dir.empty() ? "" : driver::OutputClash(input_paths, targets);
+  if (!clash.empty()) return Usage(clash + "; nothing was written");
+
+  int exit_code = config_exit;
+  for (size_t i = 0; i < results.size(); ++i) {
+    if (!outputs[i]) continue;
+    const std::string& output = *outputs[i];
+    if (!targets[i].empty()) {
+      const std::filesystem::path& target = targets[i];
       std::error_code error;
       if (target.has_parent_path())
         std::filesystem::create_directories(target.parent_path(), error);
@@ -134,7 +161,7 @@ void AddPortCommand(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<PortArgs>();
   CLI::App* command =
       app.add_subcommand("port", "Port ShaderToy / WebGL1 shaders to WebGL2 (GLSL ES 3.00)");
-  command->add_option("paths", args->paths, "Shader files")->required();
+  AddInputOptions(*command, args->input);
   auto* output = command->add_option("-o,--output", args->output, "Write the result here");
   auto* out_dir = command->add_option("--out-dir", args->out_dir,
                                       "Write each result under DIR (same relative name)");
@@ -150,6 +177,11 @@ void AddPortCommand(CLI::App& app, int& exit_code) {
   command->add_option("--msl-version", args->msl_version,
                       "MSL version for --emit msl, e.g. 20000 (2.0, default)");
   command->add_option("-j,--jobs", args->jobs, "Files ported in parallel (default: all cores)");
+  command
+      ->add_option("--progress", args->progress,
+                   "auto | always | never: a progress line on standard error (auto: on a "
+                   "terminal, once a run lasts a second)")
+      ->capture_default_str();
   command->callback([args, &exit_code] { exit_code = RunPort(*args); });
 }
 

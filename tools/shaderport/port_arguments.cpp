@@ -1,8 +1,14 @@
 #include "port_arguments.h"
 
-#include <cstdio>
+#include <unistd.h>
 
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+#include "driver/config/config_lookup.h"
 #include "driver/dialect.h"
+#include "report/output_format.h"
 #include "rules/shadertoy/builtin_dialects.h"
 
 namespace shaderport::cli {
@@ -68,6 +74,46 @@ bool ApplyPortArguments(const char* command, const PortArguments& arguments,
     }
   }
   return true;
+}
+
+std::optional<std::vector<driver::InputFile>> SelectInputFiles(const char* command,
+                                                               const InputArguments& arguments,
+                                                               bool& config_failed) {
+  if (arguments.paths.empty()) {
+    std::fprintf(stderr, "shaderport %s: error: no files or directories given\n", command);
+    return std::nullopt;
+  }
+  SourceManager config_sources;
+  std::optional<std::filesystem::path> explicit_config;
+  if (!arguments.config.empty()) explicit_config = arguments.config;
+  driver::ConfigLookup configs(!arguments.no_config, explicit_config, config_sources);
+  std::vector<std::filesystem::path> paths(arguments.paths.begin(), arguments.paths.end());
+  driver::InputSet inputs = driver::WalkInputs(
+      paths, [&](const std::filesystem::path& file) { return configs.Includes(file); });
+  CheckReport problems;
+  problems.sources = &config_sources;
+  problems.files = configs.TakeProblems();
+  config_failed = false;
+  if (!problems.files.empty()) {
+    for (const FileReport& file : problems.files) config_failed |= HasErrors(file.diagnostics);
+    SortReport(problems);
+    ReportOptions options;
+    options.color = ::isatty(STDERR_FILENO) != 0 && std::getenv("NO_COLOR") == nullptr;
+    options.summary_line = false;
+    std::fputs(FormatReport(problems, OutputFormat::kText, options).c_str(), stderr);
+  }
+  for (const std::string& error : inputs.errors) {
+    std::fprintf(stderr, "shaderport %s: error: %s\n", command, error.c_str());
+  }
+  if (!inputs.errors.empty()) return std::nullopt;
+  return std::move(inputs.files);
+}
+
+void AddInputOptions(CLI::App& command, InputArguments& arguments) {
+  command.add_option("paths", arguments.paths, "Shader files and directories");
+  command.add_option("--config", arguments.config,
+                     "Use this .shaderport.toml instead of searching");
+  command.add_flag("--no-config", arguments.no_config, "Ignore .shaderport.toml files");
 }
 
 }  // namespace shaderport::cli

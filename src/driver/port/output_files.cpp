@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <map>
 #include <vector>
 
 namespace shaderport::driver {
@@ -114,6 +115,51 @@ std::string WriteFileAtomically(const std::filesystem::path& path, std::string_v
     const std::string why = Errno("cannot replace " + path.string());
     ::unlink(temp.c_str());
     return why;
+  }
+  return {};
+}
+
+std::filesystem::path OutDirPath(const std::filesystem::path& out_dir,
+                                 const std::filesystem::path& relative,
+                                 std::string_view extension) {
+  std::filesystem::path inside = relative.lexically_normal();
+  if (inside.is_absolute()) inside = inside.filename();
+  while (!inside.empty() && *inside.begin() == "..") {
+    inside = inside.lexically_relative(*inside.begin());
+  }
+  inside.replace_extension(extension);
+  return out_dir / inside;
+}
+
+namespace {
+
+// The same file however it is named (without throwing on unreadable paths).
+std::filesystem::path SameFileKey(const std::filesystem::path& path) {
+  std::error_code error;
+  std::filesystem::path key = std::filesystem::weakly_canonical(path, error);
+  return error ? std::filesystem::absolute(path, error).lexically_normal() : key;
+}
+
+}  // namespace
+
+std::string OutputClash(const std::vector<std::filesystem::path>& inputs,
+                        const std::vector<std::filesystem::path>& targets) {
+  std::map<std::filesystem::path, size_t> written;
+  for (size_t i = 0; i < targets.size(); ++i) {
+    if (targets[i].empty()) continue;
+    const std::filesystem::path key = SameFileKey(targets[i]);
+    const auto [it, fresh] = written.emplace(key, i);
+    if (!fresh) {
+      return inputs[it->second].string() + " and " + inputs[i].string() +
+             " would both be written to " + targets[i].string();
+    }
+  }
+  for (const std::filesystem::path& input : inputs) {
+    const auto it = written.find(SameFileKey(input));
+    if (it != written.end()) {
+      return "the result of " + inputs[it->second].string() + " (" + targets[it->second].string() +
+             ") would replace the input " + input.string();
+    }
   }
   return {};
 }

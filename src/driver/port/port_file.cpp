@@ -213,7 +213,11 @@ PortResult PortSource(const SourceFile& file, const SourceFile* common, const Po
 
 PortResult PortFile(const std::filesystem::path& path, const PortOptions& options,
                     SourceManager& sources) {
-  InputText input = ReadInputFile(path);
+  return PortInput(path, ReadInputFile(path), options, sources);
+}
+
+PortResult PortInput(const std::filesystem::path& path, InputText input, const PortOptions& options,
+                     SourceManager& sources) {
   if (!input.text) {
     PortResult result;
     result.file = &sources.Add(path.string(), "");

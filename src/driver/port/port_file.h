@@ -10,6 +10,7 @@
 
 #include "diag/diagnostic.h"
 #include "driver/dialect.h"
+#include "driver/read_input.h"
 #include "rule/rule.h"
 #include "source/edit.h"
 #include "source/source_manager.h"
@@ -51,6 +52,11 @@ PortResult PortSource(const SourceFile& file, const SourceFile* common, const Po
 // Reads `path` (within the input limits) and ports or fixes it.
 PortResult PortFile(const std::filesystem::path& path, const PortOptions& options,
                     SourceManager& sources);
+
+// Ports or fixes contents read elsewhere (standard input) as the file `path`,
+// which need not exist; a rejected input is reported on `path`.
+PortResult PortInput(const std::filesystem::path& path, InputText input, const PortOptions& options,
+                     SourceManager& sources);
 
 // The fix-mode shorthand.
 inline PortResult FixFile(const std::filesystem::path& path, PortOptions options,
