@@ -20,17 +20,13 @@ test_packages=(
   libgtest-dev libgmock-dev googletest libbenchmark-dev
   # The GitHub Action and pre-commit hook tests read YAML and run pre-commit.
   python3-yaml pre-commit
+  # The SARIF and JSON schema tests validate offline (tests/sarif/validate.py).
+  python3-jsonschema
 )
 
 packages=("${build_packages[@]}")
 if [[ "${1:-}" != "--build" ]]; then
   packages+=("${test_packages[@]}")
-  # Node.js is only needed for the SARIF schema validation test. Some images ship a
-  # Node.js build that bundles npm and conflicts with Debian's npm package, so only
-  # ask for Debian's packages when no node/npm is on PATH.
-  if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
-    packages+=(nodejs npm)
-  fi
 fi
 
 missing=()

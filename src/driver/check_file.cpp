@@ -30,7 +30,7 @@ bool IsLimitBreach(std::string_view rule_id) {
 DetectedKind ResolveKind(const FileJob& job, const CheckOptions& options, const SourceFile& file) {
   DetectedKind kind = DetectKind(file.Text(), job.path);
   if (job.config != nullptr) {
-    const FileSettings settings = SettingsFor(*job.config, std::filesystem::absolute(job.path));
+    const FileSettings settings = SettingsFor(*job.config, job.absolute_path);
     if (settings.dialect) kind.dialect = *settings.dialect;
     if (settings.stage) kind.stage = *settings.stage;
   }
@@ -44,7 +44,7 @@ Target ResolveTarget(const FileJob& job, const CheckOptions& options, const Dete
                      const SourceFile& file) {
   if (options.target) return *options.target;
   if (job.config != nullptr) {
-    const FileSettings settings = SettingsFor(*job.config, std::filesystem::absolute(job.path));
+    const FileSettings settings = SettingsFor(*job.config, job.absolute_path);
     if (settings.target) return *settings.target;
   }
   if (kind.dialect == Dialect::kShaderToy) return Target::kWebGL2;

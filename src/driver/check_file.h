@@ -14,6 +14,7 @@ namespace shaderport::driver {
 
 struct FileJob {
   std::filesystem::path path;
+  std::filesystem::path absolute_path;     // `path` made absolute once (config globs, cache keys)
   const Config* config = nullptr;          // the .shaderport.toml that governs it, if any
   const SourceFile* common = nullptr;      // ShaderToy Common code to compile before it
   bool common_checked_separately = false;  // then Common's own findings are not repeated here

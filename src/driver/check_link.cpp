@@ -23,7 +23,10 @@ std::vector<std::pair<size_t, size_t>> FindPrograms(const std::vector<FileJob>& 
                                                     const CheckOptions& options) {
   std::vector<std::pair<size_t, size_t>> programs;
   std::map<fs::path, size_t> index_of;
-  for (size_t i = 0; i < jobs.size(); ++i) index_of[fs::weakly_canonical(jobs[i].path)] = i;
+  // Only --link names files another way than the walk did (a few syscalls per file).
+  if (!options.links.empty()) {
+    for (size_t i = 0; i < jobs.size(); ++i) index_of[fs::weakly_canonical(jobs[i].path)] = i;
+  }
   for (const auto& [vertex, fragment] : options.links) {
     const auto v = index_of.find(fs::weakly_canonical(vertex));
     const auto f = index_of.find(fs::weakly_canonical(fragment));

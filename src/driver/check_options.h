@@ -5,24 +5,27 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "diag/diagnostic.h"
 #include "driver/dialect.h"
 #include "driver/read_input.h"
+#include "driver/shard.h"
 #include "validate/shadertoy_contract.h"
 
 namespace shaderport::driver {
 
 struct CheckOptions {
   std::vector<std::filesystem::path> paths;
-  std::optional<Dialect> dialect;               // --dialect: overrides detection and config
-  std::optional<Stage> stage;                   // --stage
+  std::optional<Dialect> dialect;  // --dialect: overrides detection and config
+  std::optional<Stage> stage;      // --stage
   std::optional<Target> target;
   // --link VS FS: programs to link; when empty, vertex and fragment files with the
   // same stem in the same directory are linked.
-  std::vector<std::pair<std::filesystem::path, std::filesystem::path>> links;                 // --target: the WebGL context (default: by version)
+  std::vector<std::pair<std::filesystem::path, std::filesystem::path>>
+      links;                                    // --target: the WebGL context (default: by version)
   std::optional<std::filesystem::path> common;  // --common: ShaderToy Common for every pass
   validate::ChannelTypes channels{};            // --channel N=2d|cube|3d (default all 2D)
   std::optional<std::filesystem::path> config;  // --config: instead of searching upward
@@ -45,6 +48,11 @@ struct CheckOptions {
   // a time (from the worker threads, so it must not assume a thread); the caller
   // decides what to show. `done` counts up to `total`.
   std::function<void(size_t done, size_t total)> progress;
+  // The result cache (docs/cli.md): off when unset (--no-cache). `tool_identity`
+  // names this build of shaderport, so a rebuilt binary never reads stale entries.
+  std::optional<std::filesystem::path> cache_directory;
+  std::string tool_identity;
+  std::optional<ShardSpec> shard;  // --shard K/N: only this shard's files
 };
 
 }  // namespace shaderport::driver

@@ -2,9 +2,12 @@
 
 #include <map>
 #include <mutex>
+#include <set>
 
+#include "driver/check_cache.h"
 #include "driver/check_file.h"
 #include "driver/check_link.h"
+#include "driver/check_shard.h"
 #include "driver/config/config_lookup.h"
 #include "driver/input_files.h"
 #include "driver/parallel_for.h"
@@ -54,22 +57,35 @@ CheckRun RunCheck(const CheckOptions& options) {
 
   std::map<fs::path, const SourceFile*> commons;
   std::vector<FileJob> jobs;
+  std::error_code cwd_error;
+  const fs::path working_directory = fs::current_path(cwd_error);
   for (const InputFile& input : inputs.files) {
     FileJob job;
     job.path = input.path;
+    job.absolute_path = input.path.is_absolute() || working_directory.empty()
+                            ? input.path
+                            : working_directory / input.path;
     job.config = configs.For(input.path);
     job.common = CommonFor(input.path, options, commons, sources, run);
     if (options.in_memory) job.contents = &options.in_memory->contents;
     jobs.push_back(std::move(job));
   }
   for (FileReport& problem : configs.TakeProblems()) run.report.files.push_back(std::move(problem));
+  // Over every input, before sharding: a pass reports its Common's findings only
+  // when no shard checks Common as a file of its own.
+  std::set<fs::path> canonical_inputs;
+  for (const FileJob& job : jobs) {
+    if (job.common != nullptr) {
+      for (const FileJob& other : jobs) canonical_inputs.insert(fs::weakly_canonical(other.path));
+      break;
+    }
+  }
   for (FileJob& job : jobs) {
     if (job.common == nullptr) continue;
     job.common_checked_separately =
-        std::any_of(jobs.begin(), jobs.end(), [&](const FileJob& other) {
-          return fs::weakly_canonical(other.path) == fs::weakly_canonical(job.common->Name());
-        });
+        canonical_inputs.contains(fs::weakly_canonical(job.common->Name()));
   }
+  if (options.shard) KeepShard(jobs, options, *options.shard, fs::current_path());
 
   std::mutex progress_mutex;
   size_t files_done = 0;
@@ -78,11 +94,16 @@ CheckRun RunCheck(const CheckOptions& options) {
     const std::lock_guard lock(progress_mutex);
     options.progress(++files_done, jobs.size());
   };
+  // --render results depend on Mesa and on time limits: such runs are not cached.
+  std::optional<CheckCache> cache;
+  if (options.cache_directory && !options.render && !options.in_memory)
+    cache.emplace(options, jobs);
   std::vector<FileReport> reports(jobs.size());
   ParallelFor(jobs.size(), options.jobs, [&](size_t i) {
-    reports[i] = CheckFile(jobs[i], options, sources);
+    reports[i] = cache ? cache->Check(i, sources) : CheckFile(jobs[i], options, sources);
     if (!options.render) file_done();
   });
+  if (cache) cache->Finish();
   // Programs link once both stages are checked (before renders, whose findings
   // must not stop a link).
   for (const auto& [vertex, fragment] : FindPrograms(jobs, options)) {
@@ -102,6 +123,7 @@ CheckRun RunCheck(const CheckOptions& options) {
     const Config* config = jobs[i].config;
     Severity fail_on = config != nullptr ? config->fail_on : Severity::kError;
     if (options.fail_on) fail_on = *options.fail_on;
+    reports[i].fail_on = fail_on;  // kept: a baseline judges the run again
     for (const Diagnostic& diagnostic : reports[i].diagnostics) {
       if (diagnostic.severity >= fail_on) run.failed = true;
       if (diagnostic.rule_id.starts_with("internal/")) run.internal_error = true;

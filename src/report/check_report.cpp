@@ -27,6 +27,15 @@ ReportSummary Summarize(const CheckReport& report) {
   return summary;
 }
 
+bool ReportFails(const CheckReport& report) {
+  for (const FileReport& file : report.files) {
+    for (const Diagnostic& diagnostic : file.diagnostics) {
+      if (diagnostic.severity >= file.fail_on) return true;
+    }
+  }
+  return false;
+}
+
 void SortReport(CheckReport& report) {
   std::stable_sort(report.files.begin(), report.files.end(),
                    [](const FileReport& a, const FileReport& b) {

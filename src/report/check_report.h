@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "diag/diagnostic.h"
+#include "report/docs_links.h"
 #include "source/source_file.h"
 #include "source/source_manager.h"
 
@@ -18,6 +19,9 @@ struct FileReport {
   // Sorted by position. A range may point into another file of the SourceManager
   // (e.g. a ShaderToy Common file); printers show the file the range is in.
   DiagnosticList diagnostics;
+  // The least severe diagnostic that fails the check for this file (its config's
+  // fail-on or --fail-on), so that the run can be judged again after a baseline.
+  Severity fail_on = Severity::kError;
 };
 
 struct CheckReport {
@@ -31,9 +35,12 @@ struct ReportOptions {
   // Absolute directory that paths are made relative to (SARIF's %SRCROOT%, the
   // GitHub annotation paths). Empty: paths are printed as the files are named.
   std::string base_directory;
-  std::string information_uri;  // SARIF tool.driver.informationUri, omitted when empty
-  bool color = false;           // text only: ANSI colours (the CLI decides: TTY, NO_COLOR)
-  bool summary_line = true;     // text only: end with the "N errors, ..." line (check -q: not)
+  std::string information_uri{kRepositoryUri};  // SARIF tool.driver.informationUri
+  // Rule ids with their own section in docs/rules.md (SARIF helpUri points there),
+  // sorted; other ids point at that page's table of every id.
+  std::vector<std::string> rules_with_sections;
+  bool color = false;        // text only: ANSI colours (the CLI decides: TTY, NO_COLOR)
+  bool summary_line = true;  // text only: end with the "N errors, ..." line (check -q: not)
 };
 
 struct ReportSummary {
@@ -45,6 +52,9 @@ struct ReportSummary {
 };
 
 ReportSummary Summarize(const CheckReport& report);
+
+// True when some diagnostic is at or above its file's fail-on level.
+bool ReportFails(const CheckReport& report);
 
 // Puts files in path order and each file's diagnostics in position order
 // (file, offset, end, then rule id), so that every format is deterministic.

@@ -1,11 +1,13 @@
 #include "report/sarif_format.h"
 
-#include <cstdint>
-#include <cstdio>
+#include <algorithm>
 #include <map>
 #include <string_view>
+#include <vector>
 
 #include "diag/rule_catalog.h"
+#include "report/docs_links.h"
+#include "report/fingerprint.h"
 #include "report/source_position.h"
 
 namespace shaderport {
@@ -29,21 +31,6 @@ std::string RuleIdOf(const Diagnostic& diagnostic) {
   return diagnostic.rule_id.empty() ? "unknown" : diagnostic.rule_id;
 }
 
-// FNV-1a: stable across runs and platforms, which std::hash is not.
-uint64_t Fnv1a(std::string_view text, uint64_t hash = 14695981039346656037ull) {
-  for (char c : text) {
-    hash ^= static_cast<unsigned char>(c);
-    hash *= 1099511628211ull;
-  }
-  return hash;
-}
-
-std::string_view Trim(std::string_view text) {
-  const size_t begin = text.find_first_not_of(" \t");
-  if (begin == std::string_view::npos) return {};
-  return text.substr(begin, text.find_last_not_of(" \t") - begin + 1);
-}
-
 class SarifBuilder {
  public:
   SarifBuilder(const CheckReport& report, const ReportOptions& options)
@@ -62,16 +49,19 @@ class SarifBuilder {
       rule_index_[id] = rules.size();
       rules.push_back(RuleToJson(id, severity));
     }
+    const auto fingerprints = FingerprintReport(report_, options_.base_directory);
     Json results = Json::array();
-    for (const FileReport& file : report_.files) {
-      for (const Diagnostic& diagnostic : file.diagnostics) {
-        results.push_back(ResultToJson(file, diagnostic));
+    for (size_t f = 0; f < report_.files.size(); ++f) {
+      const FileReport& file = report_.files[f];
+      for (size_t d = 0; d < file.diagnostics.size(); ++d) {
+        results.push_back(ResultToJson(file, file.diagnostics[d], fingerprints[f][d].fingerprint));
       }
     }
     Json driver = {{"name", "shaderport"},
                    {"version", options_.tool_version},
-                   {"semanticVersion", options_.tool_version}};
-    if (!options_.information_uri.empty()) driver["informationUri"] = options_.information_uri;
+                   {"semanticVersion", options_.tool_version},
+                   {"informationUri", options_.information_uri.empty() ? std::string(kRepositoryUri)
+                                                                       : options_.information_uri}};
     driver["rules"] = std::move(rules);
 
     Json run = {{"tool", {{"driver", std::move(driver)}}}};
@@ -100,8 +90,10 @@ class SarifBuilder {
       rule["shortDescription"] = {{"text", std::string(description->summary)}};
       rule["fullDescription"] = {{"text", std::string(description->help)}};
       rule["help"] = {{"text", std::string(description->help)}};
+      const auto& sections = options_.rules_with_sections;
+      rule["helpUri"] = RuleHelpUri(id, std::binary_search(sections.begin(), sections.end(), id));
     } else {
-      rule["shortDescription"] = {{"text", id}};
+      rule["shortDescription"] = {{"text", id}};  // not in the catalog: no docs to point at
     }
     rule["defaultConfiguration"] = {{"level", SarifLevel(severity)}};
     return rule;
@@ -130,20 +122,6 @@ class SarifBuilder {
     return {{"artifactLocation", ArtifactLocation(*fallback)}};
   }
 
-  // Same rule, same file, same line text (ignoring indentation): the same finding
-  // after unrelated edits move it. The occurrence count separates repeats.
-  std::string Fingerprint(const Diagnostic& diagnostic, const SourceFile* fallback) {
-    const auto where = Resolve(report_.sources, diagnostic.range);
-    const SourceFile* file = where ? where->file : fallback;
-    std::string key = RuleIdOf(diagnostic) + '\n' + (file ? file->Name() : "") + '\n';
-    if (where) key += std::string(Trim(where->file->LineText(where->start.line)));
-    const int occurrence = ++occurrences_[key];
-    char hex[32];
-    std::snprintf(hex, sizeof hex, "%016llx:%d", static_cast<unsigned long long>(Fnv1a(key)),
-                  occurrence);
-    return hex;
-  }
-
   Json FixesToJson(const Diagnostic& diagnostic) const {
     // The fix-its of one diagnostic are applied together: one SARIF fix holds them all.
     Json changes = Json::array();
@@ -168,7 +146,8 @@ class SarifBuilder {
         {{{"description", {{"text", description}}}, {"artifactChanges", std::move(changes)}}});
   }
 
-  Json ResultToJson(const FileReport& file, const Diagnostic& diagnostic) {
+  Json ResultToJson(const FileReport& file, const Diagnostic& diagnostic,
+                    const std::string& fingerprint) const {
     const std::string id = RuleIdOf(diagnostic);
     Json result = {{"ruleId", id},
                    {"ruleIndex", rule_index_.at(id)},
@@ -190,7 +169,7 @@ class SarifBuilder {
     }
     Json fixes = FixesToJson(diagnostic);
     if (!fixes.empty()) result["fixes"] = std::move(fixes);
-    result["partialFingerprints"] = {{"shaderport/v1", Fingerprint(diagnostic, file.file)}};
+    result["partialFingerprints"] = {{kFingerprintKey, fingerprint}};
     return result;
   }
 
@@ -198,7 +177,6 @@ class SarifBuilder {
   const ReportOptions& options_;
   std::map<std::string, Severity> levels_;  // sorted by id: the order of rules[]
   std::map<std::string, size_t> rule_index_;
-  std::map<std::string, int> occurrences_;
 };
 
 }  // namespace

@@ -3,14 +3,22 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
+#include "cache_settings.h"
 #include "commands.h"
 #include "driver/check_pipeline.h"
+#include "driver/port/output_files.h"
+#include "driver/port/rule_reference.h"
 #include "driver/read_input.h"
 #include "progress_line.h"
+#include "report/baseline.h"
+#include "report/merge.h"
 #include "report/output_format.h"
 #include "report/statistics.h"
 #include "report/text_format.h"
@@ -40,7 +48,22 @@ struct CheckArgs {
   bool statistics = false;
   bool quiet = false;
   std::string progress = "auto";
+  std::string cache_dir;  // --cache-dir
+  bool no_cache = false;
+  std::string shard;           // --shard K/N
+  std::string baseline;        // --baseline FILE
+  std::string write_baseline;  // --write-baseline FILE
 };
+
+std::optional<Baseline> ReadBaselineFile(const std::string& path, std::string& error) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  if (!(text << in.rdbuf())) {
+    error = std::filesystem::exists(path) ? "cannot read it" : "no such file";
+    return std::nullopt;
+  }
+  return ParseBaseline(text.str(), error);
+}
 
 bool ParseChannel(const std::string& spec, validate::ChannelTypes& channels) {
   // N=2d|cube|3d
@@ -116,6 +139,21 @@ int RunCheckCommand(const CheckArgs& args) {
   options.render = args.render;
   options.render_size = args.render_size;
   options.render_timeout = args.render_timeout;
+  if (!args.shard.empty()) {
+    std::string error;
+    options.shard = driver::ParseShardSpec(args.shard, error);
+    if (!options.shard) return Usage(error);
+  }
+  if (!args.no_cache) {
+    options.cache_directory = CacheDirectory(args.cache_dir);
+    options.tool_identity = ToolIdentity();
+  }
+  std::optional<Baseline> baseline;
+  if (!args.baseline.empty()) {
+    std::string error;
+    baseline = ReadBaselineFile(args.baseline, error);
+    if (!baseline) return Usage("bad --baseline '" + args.baseline + "': " + error);
+  }
 
   const std::optional<ProgressMode> progress_mode = ParseProgressMode(args.progress);
   if (!progress_mode) return Usage("unknown --progress '" + args.progress + "'");
@@ -144,10 +182,23 @@ int RunCheckCommand(const CheckArgs& args) {
   report_options.tool_version = SHADERPORT_VERSION;
   report_options.base_directory = std::filesystem::current_path().string();
   report_options.color = *format == OutputFormat::kText && UseColor(args.color);
+  report_options.rules_with_sections = driver::PortingRuleIds();
+  // Baselined findings are left out of every format and of the verdict.
+  std::string baseline_notice;
+  if (baseline) {
+    const BaselineOutcome outcome =
+        ApplyBaseline(run.report, *baseline, report_options.base_directory);
+    run.failed = ReportFails(run.report);
+    baseline_notice = FormatBaselineSummary(outcome);
+  }
   const bool text = *format == OutputFormat::kText;
   // Text: findings, the statistics, then the summary line last, where tools look for it.
   report_options.summary_line = !args.quiet && !(text && args.statistics);
   std::string output = FormatReport(run.report, *format, report_options);
+  // SARIF does not say which file a result belongs to: merge needs it to join shards.
+  if (options.shard && *format == OutputFormat::kSarif) {
+    output = AddSarifShardIndex(output, run.report);
+  }
   if (args.statistics) {
     const std::string table = FormatStatistics(CountByRule(run.report));
     if (!text) {
@@ -161,10 +212,29 @@ int RunCheckCommand(const CheckArgs& args) {
       }
     }
   }
+  std::string write_error;
+  if (!args.write_baseline.empty() && run.usage_errors.empty()) {
+    const Baseline written = BaselineOfReport(run.report, report_options.base_directory);
+    write_error = driver::WriteFileAtomically(args.write_baseline, FormatBaseline(written));
+    baseline_notice = std::to_string(written.entries.size()) +
+                      (written.entries.size() == 1 ? " finding" : " findings") +
+                      " written to the baseline " + args.write_baseline + "\n";
+  }
+  if (!write_error.empty()) {
+    baseline_notice.clear();
+  } else if (!text) {
+    std::fputs(baseline_notice.c_str(), stderr);  // stdout stays machine-readable
+  } else if (!args.quiet) {
+    output += baseline_notice;
+  }
   std::fwrite(output.data(), 1, output.size(), stdout);
   std::fflush(stdout);
+  if (!write_error.empty()) {
+    return Usage("cannot write --write-baseline '" + args.write_baseline + "': " + write_error);
+  }
   if (run.internal_error) return kExitInternal;
   if (!run.usage_errors.empty()) return kExitUsage;
+  if (!args.write_baseline.empty()) return kExitOk;  // recording findings is not failing
   return run.failed ? kExitFindings : kExitOk;
 }
 
@@ -219,6 +289,21 @@ void AddCheckCommand(CLI::App& app, int& exit_code) {
                    "auto | always | never: a progress line on standard error (auto: on a "
                    "terminal, once a run lasts a second)")
       ->capture_default_str();
+  command->add_option("--cache-dir", args->cache_dir,
+                      "Result cache directory (default: $XDG_CACHE_HOME/shaderport or "
+                      "~/.cache/shaderport)");
+  command->add_flag("--no-cache", args->no_cache, "Neither read nor write the result cache");
+  command->add_option("--shard", args->shard,
+                      "K/N: check only the K-th of N stable parts of the files (join the "
+                      "outputs with `shaderport merge`)");
+  auto* baseline = command->add_option(
+      "--baseline", args->baseline,
+      "Report and fail only on findings not in this baseline file (see --write-baseline)");
+  command
+      ->add_option("--write-baseline", args->write_baseline,
+                   "Record every current finding in this file and exit 0 (adopt the check "
+                   "now, fail later only on new findings with --baseline)")
+      ->excludes(baseline);
   command->callback([args, &exit_code] { exit_code = RunCheckCommand(*args); });
 }
 

@@ -34,6 +34,7 @@ class ConfigLookup {
 
  private:
   const Config* Load(const std::filesystem::path& path);
+  std::filesystem::path Absolute(const std::filesystem::path& file) const;
 
   bool use_config_;
   std::optional<std::filesystem::path> explicit_path_;
@@ -41,6 +42,10 @@ class ConfigLookup {
   const Config* explicit_ = nullptr;
   std::map<std::filesystem::path, Config> configs_;  // node-based: pointers stay valid
   std::vector<FileReport> problems_;
+  // Every file of a directory has the same config: the upward search (a stat
+  // per level) runs once per directory, which matters for 10,000-file runs.
+  std::map<std::filesystem::path, const Config*> by_directory_;
+  std::filesystem::path working_directory_;  // read once: getcwd per file adds up
 };
 
 }  // namespace shaderport::driver

@@ -1,5 +1,7 @@
 #include "driver/port/rule_reference.h"
 
+#include <algorithm>
+
 #include "diag/rule_catalog.h"
 #include "rules/registry.h"
 
@@ -82,6 +84,13 @@ std::string RulesMarkdown() {
   text += "\n";
   while (text.size() >= 2 && text.ends_with("\n\n")) text.pop_back();
   return text;
+}
+
+std::vector<std::string> PortingRuleIds() {
+  std::vector<std::string> ids;
+  for (const rule::Rule* r : rules::AllRules()) ids.emplace_back(r->Info().id);
+  std::sort(ids.begin(), ids.end());
+  return ids;
 }
 
 std::optional<std::string> ExplainRule(std::string_view id) {

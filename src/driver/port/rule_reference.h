@@ -5,11 +5,15 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace shaderport::driver {
 
 // Every porting rule: id, scope, summary, help from the catalog, Before/After.
 std::string RulesMarkdown();
+
+// The ids of the porting rules, sorted: each has its own section in docs/rules.md.
+std::vector<std::string> PortingRuleIds();
 
 // One porting rule, or any catalog entry (glslang/..., syntax/...); nullopt when unknown.
 std::optional<std::string> ExplainRule(std::string_view id);

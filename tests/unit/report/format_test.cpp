@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "report/fingerprint.h"
 #include "report/github_format.h"
 #include "report/json_format.h"
 #include "report/output_format.h"
@@ -141,7 +142,7 @@ TEST(SarifFormat, RulesAreSortedAndIndexed) {
   }
   for (const json& result : run["results"]) {
     EXPECT_EQ(rules[result["ruleIndex"].get<size_t>()]["id"], result["ruleId"]);
-    EXPECT_TRUE(result["partialFingerprints"].contains("shaderport/v1"));
+    EXPECT_TRUE(result["partialFingerprints"].contains(kFingerprintKey));
   }
 }
 

@@ -1,0 +1,120 @@
+#include "driver/check_cache.h"
+
+#include <glslang/build_info.h>
+
+#include "driver/cache_entry.h"
+#include "driver/read_input.h"
+
+namespace shaderport::driver {
+namespace {
+
+template <typename Enum>
+uint64_t Value(const std::optional<Enum>& value) {
+  return value ? static_cast<uint64_t>(*value) + 1 : 0;
+}
+
+// Everything of the run that changes a file's findings.
+CacheKey RunKey(const CheckOptions& options) {
+  KeyHasher hasher;
+  hasher.Add(kCacheEntryVersion)
+      .Add(options.tool_identity)
+      .Add(std::string_view(GLSLANG_VERSION_FLAVOR))
+      .Add(uint64_t{GLSLANG_VERSION_MAJOR} << 32 | GLSLANG_VERSION_MINOR << 16 |
+           GLSLANG_VERSION_PATCH)
+      .Add(Value(options.dialect))
+      .Add(Value(options.stage))
+      .Add(Value(options.target));
+  for (const validate::ChannelType channel : options.channels) {
+    hasher.Add(static_cast<uint64_t>(channel));
+  }
+  return hasher.Finish();
+}
+
+// The config as parsed: what it says, not how it is written.
+CacheKey ConfigKey(const Config* config) {
+  KeyHasher hasher;
+  if (config == nullptr) return hasher.Add(uint64_t{0}).Finish();
+  hasher.Add(config->directory.string()).Add(static_cast<uint64_t>(config->fail_on));
+  hasher.Add(config->rules.size());
+  for (const RuleSetting& rule : config->rules) {
+    hasher.Add(rule.pattern).Add(static_cast<uint64_t>(rule.level));
+  }
+  hasher.Add(config->include.size());
+  for (const std::string& glob : config->include) hasher.Add(glob);
+  hasher.Add(config->exclude.size());
+  for (const std::string& glob : config->exclude) hasher.Add(glob);
+  hasher.Add(config->files.size());
+  for (const FileOverride& file : config->files) {
+    hasher.Add(file.glob).Add(Value(file.dialect)).Add(Value(file.stage)).Add(Value(file.target));
+  }
+  return hasher.Finish();
+}
+
+CacheKey CommonKey(const SourceFile* common) {
+  KeyHasher hasher;
+  if (common == nullptr) return hasher.Add(uint64_t{0}).Finish();
+  return hasher.Add(uint64_t{1}).Add(common->Name()).Add(common->Text()).Finish();
+}
+
+CacheKey FileKey(const CacheKey& job_key, const FileJob& job, std::string_view text) {
+  return KeyHasher()
+      .Add(job_key)
+      .Add(job.path.string())
+      .Add(job.absolute_path.string())
+      .Add(text)
+      .Finish();
+}
+
+}  // namespace
+
+CheckCache::CheckCache(const CheckOptions& options, const std::vector<FileJob>& jobs)
+    : options_(options), jobs_(jobs), store_(*options.cache_directory) {
+  const CacheKey run = RunKey(options);
+  // Configs and Common files are shared by many jobs: each is hashed once.
+  std::map<const Config*, CacheKey> configs;
+  std::map<const SourceFile*, CacheKey> commons;
+  job_keys_.reserve(jobs.size());
+  for (const FileJob& job : jobs) {
+    auto config = configs.find(job.config);
+    if (config == configs.end()) config = configs.emplace(job.config, ConfigKey(job.config)).first;
+    auto common = commons.find(job.common);
+    if (common == commons.end()) common = commons.emplace(job.common, CommonKey(job.common)).first;
+    job_keys_.push_back(KeyHasher()
+                            .Add(run)
+                            .Add(config->second)
+                            .Add(common->second)
+                            .Add(uint64_t{job.common_checked_separately})
+                            .Finish());
+  }
+}
+
+FileReport CheckCache::Check(size_t index, SourceManager& sources) {
+  const FileJob& job = jobs_[index];
+  InputText input = ReadInputFile(job.path);
+  // A file that cannot be read is reported by CheckFile, as without a cache.
+  if (!input.text) return CheckFile(job, options_, sources);
+  const CacheKey key = FileKey(job_keys_[index], job, *input.text);
+  if (std::optional<std::string> bytes = store_.Load(key)) {
+    std::optional<CacheEntry> entry = DecodeCacheEntry(*bytes, key);
+    if (entry && EntryFits(*entry, job.common)) {
+      ++hits_;
+      return RestoreReport(std::move(*entry), job.path.string(), std::move(*input.text), job.common,
+                           sources);
+    }
+  }
+  FileReport report = CheckFile(job, options_, sources);
+  // Stored only when CheckFile saw the text that was hashed (the file may have
+  // changed in between).
+  if (report.file != nullptr && report.file->Text() == *input.text) {
+    if (std::optional<std::string> bytes = EncodeCacheEntry(report, job.common, sources, key)) {
+      if (store_.Store(key, *bytes)) stored_ = true;
+    }
+  }
+  return report;
+}
+
+void CheckCache::Finish(const CacheLimits& limits) {
+  if (stored_) store_.Prune(limits);
+}
+
+}  // namespace shaderport::driver
