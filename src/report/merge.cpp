@@ -1,6 +1,7 @@
 #include "report/merge.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <map>
 #include <nlohmann/json.hpp>
 
@@ -49,6 +50,78 @@ std::string ToolVersion(const Json& json, MergeFormat format) {
   if (tool == nullptr || !tool->is_object() || tool->value("name", "") != "shaderport") return {};
   const Json version = tool->value("version", Json());
   return version.is_string() ? version.get<std::string>() : std::string();
+}
+
+// --- shards ----------------------------------------------------------------
+
+Json* ShardSpecOf(Json& json, MergeFormat format) {
+  if (format == MergeFormat::kJson) return json.contains("shard") ? &json["shard"] : nullptr;
+  Json& run = json["runs"][0];
+  if (!run.contains("properties") || !run["properties"].contains(kSarifShardSpecProperty)) {
+    return nullptr;
+  }
+  return &run["properties"][kSarifShardSpecProperty];
+}
+
+std::optional<ShardOfRun> ParseSpec(const Json& spec) {
+  if (!spec.is_string()) return std::nullopt;
+  const std::string text = spec.get<std::string>();
+  unsigned index = 0, count = 0;
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%u/%u%c", &index, &count, &tail) != 2) return std::nullopt;
+  if (index < 1 || index > count) return std::nullopt;
+  return ShardOfRun{index, count};
+}
+
+// All inputs are shards of one split, each shard exactly once, or none is a
+// shard. Removes the markers: the merged report is what one run prints.
+bool CheckShardSet(std::vector<ParsedInput>& inputs, MergeFormat format, MergeResult& result) {
+  std::map<unsigned, std::string> seen;  // shard index -> input name
+  std::optional<unsigned> count;
+  size_t marked = 0;
+  for (ParsedInput& input : inputs) {
+    Json* spec = ShardSpecOf(input.json, format);
+    if (spec == nullptr) continue;
+    ++marked;
+    const std::optional<ShardOfRun> shard = ParseSpec(*spec);
+    if (!shard) {
+      result.errors.push_back(input.input->name + ": a broken shard marker");
+      return false;
+    }
+    if (count && *count != shard->count) {
+      result.errors.push_back(input.input->name + ": shard " + spec->get<std::string>() +
+                              " is not one of " + std::to_string(*count) + " shards");
+      return false;
+    }
+    count = shard->count;
+    const auto [it, inserted] = seen.emplace(shard->index, input.input->name);
+    if (!inserted) {
+      result.errors.push_back(input.input->name + ": shard " + spec->get<std::string>() +
+                              " is also in " + it->second);
+      return false;
+    }
+    if (format == MergeFormat::kJson) {
+      input.json.erase("shard");
+    } else {
+      input.json["runs"][0]["properties"].erase(kSarifShardSpecProperty);
+    }
+  }
+  if (marked == 0) return true;
+  if (marked != inputs.size()) {
+    result.errors.push_back("outputs of check --shard mixed with other outputs");
+    return false;
+  }
+  std::string missing;
+  for (unsigned index = 1; index <= *count; ++index) {
+    if (seen.contains(index)) continue;
+    missing += (missing.empty() ? "" : ", ") + std::to_string(index) + "/" + std::to_string(*count);
+  }
+  if (!missing.empty()) {
+    result.errors.push_back("shard " + missing + " missing: the merged report would leave " +
+                            "out its files");
+    return false;
+  }
+  return true;
 }
 
 // --- JSON ------------------------------------------------------------------
@@ -289,6 +362,7 @@ MergeResult MergeReports(const std::vector<MergeInput>& inputs, std::optional<Me
     parsed.push_back(std::move(entry));
   }
   if (!result.errors.empty()) return result;
+  if (!CheckShardSet(parsed, *format, result)) return result;
   const bool merged =
       *format == MergeFormat::kJson ? MergeJson(parsed, result) : MergeSarif(parsed, result);
   if (!merged) {
@@ -298,11 +372,19 @@ MergeResult MergeReports(const std::vector<MergeInput>& inputs, std::optional<Me
   return result;
 }
 
-std::string AddSarifShardIndex(std::string_view sarif, const CheckReport& report) {
-  Json json = Json::parse(sarif, nullptr, false);
-  if (json.is_discarded() || !json.contains("runs") || json["runs"].empty()) {
-    return std::string(sarif);
+std::string AddShardMarkers(std::string_view output, MergeFormat format, const CheckReport& report,
+                            ShardOfRun shard) {
+  Json json = Json::parse(output, nullptr, false);
+  const std::string spec = std::to_string(shard.index) + "/" + std::to_string(shard.count);
+  if (format == MergeFormat::kJson) {
+    if (json.is_discarded() || !json.is_object()) return std::string(output);
+    json["shard"] = spec;
+    return Dump(json);
   }
+  if (json.is_discarded() || !json.contains("runs") || json["runs"].empty()) {
+    return std::string(output);
+  }
+  json["runs"][0]["properties"][kSarifShardSpecProperty] = spec;
   Json files = Json::array();
   for (const FileReport& file : report.files) {
     if (file.diagnostics.empty()) continue;

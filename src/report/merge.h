@@ -37,8 +37,20 @@ MergeResult MergeReports(const std::vector<MergeInput>& inputs,
 // belong to: a finding in ShaderToy Common code points into Common).
 inline constexpr const char* kSarifShardProperty = "shaderport/files";
 
-// `check --shard` with SARIF: `sarif` (FormatSarif of `report`) with the property
-// above on its run, listing each file with findings and how many results it has.
-std::string AddSarifShardIndex(std::string_view sarif, const CheckReport& report);
+// Which shard of how many an output holds: "K/N" in the JSON report's `shard`
+// and in the SARIF run's properties, so that merge can refuse a set of shards
+// with one missing or repeated (a CI job that died must not pass the gate).
+inline constexpr const char* kSarifShardSpecProperty = "shaderport/shard";
+
+struct ShardOfRun {
+  unsigned index = 1;  // 1-based
+  unsigned count = 1;
+};
+
+// `check --shard K/N`: `output` (FormatJson or FormatSarif of `report`) with the
+// shard written in; for SARIF also the file index above on its run, listing
+// each file with findings and how many results it has.
+std::string AddShardMarkers(std::string_view output, MergeFormat format, const CheckReport& report,
+                            ShardOfRun shard);
 
 }  // namespace shaderport

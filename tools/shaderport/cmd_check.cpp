@@ -195,9 +195,12 @@ int RunCheckCommand(const CheckArgs& args) {
   // Text: findings, the statistics, then the summary line last, where tools look for it.
   report_options.summary_line = !args.quiet && !(text && args.statistics);
   std::string output = FormatReport(run.report, *format, report_options);
-  // SARIF does not say which file a result belongs to: merge needs it to join shards.
-  if (options.shard && *format == OutputFormat::kSarif) {
-    output = AddSarifShardIndex(output, run.report);
+  // Shards say which they are (merge refuses a missing one); SARIF also says
+  // which file each result belongs to, which merge needs to join them.
+  if (options.shard && (*format == OutputFormat::kSarif || *format == OutputFormat::kJson)) {
+    output = AddShardMarkers(
+        output, *format == OutputFormat::kSarif ? MergeFormat::kSarif : MergeFormat::kJson,
+        run.report, {options.shard->index, options.shard->count});
   }
   if (args.statistics) {
     const std::string table = FormatStatistics(CountByRule(run.report));

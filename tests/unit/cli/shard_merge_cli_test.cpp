@@ -65,8 +65,37 @@ TEST_F(ShardMergeTest, OneShardIsTheSingleRun) {
   const CommandResult single = RunShaderport("check --no-cache --format json corpus", SourceDir());
   const CommandResult shard =
       RunShaderport("check --no-cache --format json --shard 1/1 corpus", SourceDir());
-  EXPECT_EQ(shard.out, single.out);
+  // The same report, marked as the only shard; merge drops the marker.
+  EXPECT_NE(shard.out.find("\"shard\": \"1/1\""), std::string::npos);
+  std::ofstream(root_ / "only.json") << shard.out;
+  EXPECT_EQ(RunShaderport("merge only.json", root_).out, single.out);
   ExpectMergeIsSingleRun("sarif", 1, "corpus", SourceDir());
+}
+
+TEST_F(ShardMergeTest, AMissingRepeatedOrForeignShardIsAUsageError) {
+  for (const std::string format : {"json", "sarif"}) {
+    const std::string four = RunShards(format, 4, "corpus", SourceDir());
+    const std::string one = "'" + (root_ / ("1." + format)).string() + "'";
+    const std::string two = "'" + (root_ / ("2." + format)).string() + "'";
+    const std::string three = "'" + (root_ / ("3." + format)).string() + "'";
+    // A CI job that died must not let the merged report pass.
+    const CommandResult missing = RunShaderport("merge " + one + " " + two + " " + three, root_);
+    EXPECT_EQ(missing.exit_code, 2) << format;
+    EXPECT_NE(missing.err.find("shard 4/4 missing"), std::string::npos) << missing.err;
+    EXPECT_TRUE(missing.out.empty());
+    const CommandResult twice = RunShaderport("merge " + four + " " + one, root_);
+    EXPECT_EQ(twice.exit_code, 2) << format;
+    EXPECT_NE(twice.err.find("shard 1/4 is also in"), std::string::npos) << twice.err;
+    const CommandResult other_split =
+        RunShaderport("check --no-cache --format " + format + " --shard 2/3 corpus > '" +
+                          (root_ / ("x." + format)).string() + "'",
+                      SourceDir());
+    EXPECT_LE(other_split.exit_code, 1);
+    const CommandResult mixed =
+        RunShaderport("merge " + one + " '" + (root_ / ("x." + format)).string() + "'", root_);
+    EXPECT_EQ(mixed.exit_code, 2) << format;
+    EXPECT_NE(mixed.err.find("is not one of 4 shards"), std::string::npos) << mixed.err;
+  }
 }
 
 TEST_F(ShardMergeTest, EveryFileIsInOneShardAndProgramsStayTogether) {
