@@ -1,5 +1,6 @@
 #include "validate/glslang_validator.h"
 
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <optional>
@@ -78,14 +79,42 @@ class Mapper {
     const SourceRange on_line = LocateOnLine(*view.file, view.lexed, message.line, message.token);
     if (part.kind == PartKind::kUser) {
       diagnostic.range = on_line;
+      // A syntax error at the very start of a pass may be the end of the Common
+      // code compiled before it (a struct without its ';'): say where that is.
+      if (diagnostic.rule_id == "glslang/syntax-error") {
+        const glsl::Token* first = FirstCodeToken(view.lexed);
+        if (first != nullptr && on_line.begin == first->begin) {
+          if (const std::optional<SourceRange> end = UserCodeEndBefore(mapped.part, 1)) {
+            diagnostic.notes.push_back(
+                {*end,
+                 "the code compiled before this file ends here; an unfinished declaration "
+                 "there (such as a struct without its ';') is reported at the next token"});
+          }
+        }
+      }
       return diagnostic;
     }
     if (message.severity != Severity::kError) {
       // A warning about generated text is not the user's business, but not hidden either.
       diagnostic.severity = Severity::kNote;
     }
+    const std::string_view generated_line =
+        view.file->LineText(std::clamp<uint32_t>(message.line, 1, view.file->LineCount()));
+    if (const std::optional<UserMacro> macro = MacroOnGeneratedLine(mapped.part, message.line)) {
+      return MacroRewritesGeneratedCode(std::move(diagnostic), *macro, generated_line);
+    }
     if (MentionsEntryPoint(message)) return EntryPointMismatch(std::move(diagnostic));
     if (UserCodeIsUnfinished()) return IncompleteCode(std::move(diagnostic));
+    if (const std::optional<SourceRange> end = UserCodeEndBefore(mapped.part, message.line)) {
+      diagnostic.range = *end;
+      const std::string_view next = Trimmed(generated_line);
+      diagnostic.message += next.empty()
+                                ? std::string(" (glslang saw this only after the end of the code)")
+                                : " (glslang saw this only at the code that follows, "
+                                  "which is not yours: `" +
+                                      std::string(next) + "`)";
+      return diagnostic;
+    }
     diagnostic.rule_id = "internal/generated-code";
     diagnostic.range = part.file == kNoFile ? SourceRange{} : on_line;
     diagnostic.message = "glslang reported an error in shaderport's generated " + part.name +
@@ -94,6 +123,68 @@ class Mapper {
   }
 
  private:
+  static std::string_view Trimmed(std::string_view text) {
+    const size_t begin = text.find_first_not_of(" \t\r");
+    if (begin == std::string_view::npos) return {};
+    return text.substr(begin, text.find_last_not_of(" \t\r") - begin + 1);
+  }
+
+  // A macro of the user's code that is spelled on `line` of the generated part
+  // `index`: the user's code is compiled before it, so the macro rewrites it.
+  std::optional<UserMacro> MacroOnGeneratedLine(int index, uint32_t line) {
+    std::vector<UserMacro> macros;
+    for (int i = 0; i < index; ++i) {
+      if (request_.parts[static_cast<size_t>(i)].kind != PartKind::kUser) continue;
+      CollectUserMacros(View(i).lexed, request_.parts[static_cast<size_t>(i)].file, macros);
+    }
+    if (macros.empty()) return std::nullopt;
+    const PartView& view = View(index);
+    line = std::clamp<uint32_t>(line, 1, view.file->LineCount());
+    const uint32_t begin = view.file->LineStart(line);
+    const uint32_t end = begin + static_cast<uint32_t>(view.file->LineText(line).size());
+    for (const glsl::Token& token : view.lexed.tokens) {
+      if (token.begin < begin || token.begin >= end) continue;
+      if (token.kind != glsl::TokenKind::kIdentifier) continue;
+      for (const UserMacro& macro : macros) {
+        if (macro.name == token.text) return macro;
+      }
+    }
+    return std::nullopt;
+  }
+
+  Diagnostic MacroRewritesGeneratedCode(Diagnostic diagnostic, const UserMacro& macro,
+                                        std::string_view generated_line) {
+    diagnostic.rule_id = "shadertoy/macro-rewrites-wrapper";
+    diagnostic.severity = Severity::kError;
+    diagnostic.range = {macro.file, macro.begin, macro.end};
+    diagnostic.message = "the macro '" + std::string(macro.name) +
+                         "' rewrites the code the site compiles after yours: `" +
+                         std::string(Trimmed(generated_line)) +
+                         "` no longer compiles (glslang: " + diagnostic.message + ")";
+    return diagnostic;
+  }
+
+  // When the error is on the first code line of a generated part that directly
+  // follows user code (blank separators aside), the user's last token: glslang
+  // reports a missing or extra ';' only when it reads the next token.
+  std::optional<SourceRange> UserCodeEndBefore(int index, uint32_t line) {
+    const PartView& generated = View(index);
+    const uint32_t first_code_line = FirstCodeLine(*generated.file, generated.lexed);
+    if (first_code_line != 0 && line > first_code_line) return std::nullopt;
+    for (int i = index - 1; i >= 0; --i) {
+      const ShaderPart& part = request_.parts[static_cast<size_t>(i)];
+      if (part.kind == PartKind::kUser) {
+        const PartView& user = View(i);
+        const glsl::Token* last = LastCodeToken(user.lexed);
+        if (last == nullptr) return std::nullopt;
+        return SourceRange{part.file, last->begin, last->end};
+      }
+      const PartView& between = View(i);
+      if (FirstCodeLine(*between.file, between.lexed) != 0) return std::nullopt;
+    }
+    return std::nullopt;
+  }
+
   SourceRange UserFileStart() const {
     if (last_user_ < 0) return {};
     return {request_.parts[static_cast<size_t>(last_user_)].file, 0, 0};

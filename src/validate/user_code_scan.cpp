@@ -100,4 +100,51 @@ bool HasUnbalancedMacroBody(const glsl::LexedFile& lexed) {
   return false;
 }
 
+void CollectUserMacros(const glsl::LexedFile& lexed, FileId file, std::vector<UserMacro>& defined) {
+  for (size_t i = 0; i < lexed.tokens.size(); ++i) {
+    if (lexed.tokens[i].kind != TokenKind::kHash) continue;
+    const std::string_view directive = DirectiveName(lexed, i);
+    const size_t end = EndOfDirective(lexed, i);
+    if ((directive == "define" || directive == "undef") && i + 2 < end &&
+        lexed.tokens[i + 2].kind == TokenKind::kIdentifier) {
+      const Token& name = lexed.tokens[i + 2];
+      std::erase_if(defined, [&](const UserMacro& m) { return m.name == name.text; });
+      if (directive == "define") defined.push_back({file, name.text, name.begin, name.end});
+    }
+    i = end - 1;
+  }
+}
+
+const glsl::Token* LastCodeToken(const glsl::LexedFile& lexed) {
+  const Token* last = nullptr;
+  for (size_t i = 0; i < lexed.tokens.size(); ++i) {
+    const Token& token = lexed.tokens[i];
+    if (token.kind == TokenKind::kEndOfFile) break;
+    if (token.kind == TokenKind::kHash && token.at_line_start) {
+      i = EndOfDirective(lexed, i) - 1;
+      continue;
+    }
+    last = &token;
+  }
+  return last;
+}
+
+const glsl::Token* FirstCodeToken(const glsl::LexedFile& lexed) {
+  for (size_t i = 0; i < lexed.tokens.size(); ++i) {
+    const Token& token = lexed.tokens[i];
+    if (token.kind == TokenKind::kEndOfFile) break;
+    if (token.kind == TokenKind::kHash && token.at_line_start) {
+      i = EndOfDirective(lexed, i) - 1;
+      continue;
+    }
+    return &token;
+  }
+  return nullptr;
+}
+
+uint32_t FirstCodeLine(const SourceFile& file, const glsl::LexedFile& lexed) {
+  const Token* first = FirstCodeToken(lexed);
+  return first == nullptr ? 0 : file.LocationOf(first->begin).line;
+}
+
 }  // namespace shaderport::validate

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string_view>
+#include <vector>
 
 #include "glsl/lex/lexer.h"
 #include "source/source_file.h"
@@ -36,5 +37,31 @@ OpenConstructs CountOpenConstructs(const glsl::LexedFile& lexed);
 // macro invocation inside a macro expansion can make glslang 12 recurse forever
 // (WebGL CTS macro-expansion-tricky.html); such input is validated out of process.
 bool HasUnbalancedMacroBody(const glsl::LexedFile& lexed);
+
+// A macro the user's code leaves defined: its name token.
+struct UserMacro {
+  FileId file = kNoFile;
+  std::string_view name;
+  uint32_t begin = 0;
+  uint32_t end = 0;
+};
+
+// The macros still defined after `lexed`'s last line (#define, less #undef), in
+// file order, ignoring #if: a macro defined on an inactive branch is kept too,
+// which only matters when glslang already reports an error where it is used.
+// Definitions in `defined` are replaced or removed by this file's own.
+void CollectUserMacros(const glsl::LexedFile& lexed, FileId file, std::vector<UserMacro>& defined);
+
+// The last token of `lexed` that is not part of a directive (e.g. a `;` or `}`
+// that glslang only complains about once it sees the text that follows); nullptr
+// when there is none.
+const glsl::Token* LastCodeToken(const glsl::LexedFile& lexed);
+
+// The first token of `lexed` that is not part of a directive; nullptr when none.
+const glsl::Token* FirstCodeToken(const glsl::LexedFile& lexed);
+
+// The 1-based line of the first token of `lexed` that is not part of a directive
+// (0 when there is none).
+uint32_t FirstCodeLine(const SourceFile& file, const glsl::LexedFile& lexed);
 
 }  // namespace shaderport::validate

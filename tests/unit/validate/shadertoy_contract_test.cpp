@@ -1,5 +1,6 @@
 #include "validate/shadertoy_contract.h"
 
+#include <algorithm>
 #include <gtest/gtest.h>
 
 #include "validate/validate_test_util.h"
@@ -157,6 +158,54 @@ TEST(ShaderToyContractTest, UnclosedBraceIsIncompleteUserCode) {
   EXPECT_EQ(d.rule_id, "glslang/incomplete-code");
   EXPECT_EQ(d.range.file, c->pass);
   EXPECT_FALSE(d.notes.empty());  // the cascade is kept, not hidden
+}
+
+// A user macro that rewrites the site's own main() is the user's error, at the
+// macro (it fails on the site too), never internal/generated-code.
+TEST(ShaderToyContractTest, AMacroRewritingTheWrapperIsBlamedOnTheMacro) {
+  const std::string code =
+      "#define mainImage(o, u) mainImage(out vec4 o, in vec2 u)\n"
+      "void mainImage(o, u) { o = vec4(u, 0, 1); }\n";
+  auto c = CompilePass(code);
+  ASSERT_FALSE(c->result.diagnostics.empty());
+  for (const auto& d : c->result.diagnostics) EXPECT_NE(d.rule_id, "internal/generated-code");
+  const auto& d = c->result.diagnostics[0];
+  EXPECT_EQ(d.rule_id, "shadertoy/macro-rewrites-wrapper");
+  EXPECT_EQ(d.severity, Severity::kError);
+  EXPECT_EQ(d.range.file, c->pass);
+  EXPECT_EQ(d.range.begin, 8u);  // the macro's name
+  EXPECT_NE(d.message.find("mainImage(shadertoy_color, gl_FragCoord.xy);"), std::string::npos);
+}
+
+// Common code whose last declaration lacks its ';' (or has one too many) fails
+// where the next text starts: the error goes on Common's last token.
+TEST(ShaderToyContractTest, AnUnfinishedEndOfCommonIsBlamedOnCommon) {
+  auto missing = CompilePass("void mainImage(out vec4 o, in vec2 u) { o = vec4(1); }\n",
+                             PassType::kImage, "struct S { float a; }");
+  ASSERT_FALSE(missing->result.diagnostics.empty());
+  for (const auto& d : missing->result.diagnostics) {
+    EXPECT_NE(d.rule_id, "internal/generated-code");
+  }
+  const auto& first = missing->result.diagnostics[0];
+  EXPECT_EQ(first.range.file, missing->pass);
+  ASSERT_EQ(first.notes.size(), 1u);
+  EXPECT_EQ(first.notes[0].range.file, missing->common);
+  EXPECT_EQ(first.notes[0].range.begin, 20u);  // Common's closing brace
+
+  auto extra = CompilePass("void mainImage(out vec4 o, in vec2 u) { o = vec4(1); }\n",
+                           PassType::kImage, "float f() { return 1.0; };");
+  ASSERT_EQ(extra->result.diagnostics.size(), 1u) << Rules(extra->result.diagnostics);
+  EXPECT_EQ(extra->result.diagnostics[0].range.file, extra->common);
+  EXPECT_EQ(extra->result.diagnostics[0].range.begin, 25u);  // the extra ';'
+
+  // Common checked on its own, as the site's wrapper follows it.
+  auto alone = CompilePass("struct S { float a; }");
+  const auto syntax = std::find_if(
+      alone->result.diagnostics.begin(), alone->result.diagnostics.end(),
+      [](const Diagnostic& d) { return d.rule_id == "glslang/syntax-error"; });
+  ASSERT_NE(syntax, alone->result.diagnostics.end()) << Rules(alone->result.diagnostics);
+  EXPECT_EQ(syntax->range.file, alone->pass);
+  EXPECT_EQ(syntax->range.begin, 20u);
 }
 
 TEST(ShaderToyContractTest, ChannelTypesFollowTheInputs) {
