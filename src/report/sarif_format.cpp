@@ -31,10 +31,48 @@ std::string RuleIdOf(const Diagnostic& diagnostic) {
   return diagnostic.rule_id.empty() ? "unknown" : diagnostic.rule_id;
 }
 
+// `path` ('/'-separated) without "." and ".." segments, removed by text as RFC 3986
+// resolves a reference: SARIF consumers resolve URIs without the file system, and
+// Sarif.Multitool rejects ".." in file URIs (SARIF1002). A ".." above the start of a
+// relative path stays; one above the root is dropped.
+std::string WithoutDotSegments(std::string_view path) {
+  size_t root_size = 0;
+  while (root_size < path.size() && root_size < 2 && path[root_size] == '/') ++root_size;
+  if (root_size == 0 && path.size() >= 3 && path[1] == ':' && path[2] == '/') root_size = 3;
+  std::vector<std::string_view> segments;
+  for (size_t at = root_size; at <= path.size();) {
+    const size_t slash = std::min(path.find('/', at), path.size());
+    const std::string_view segment = path.substr(at, slash - at);
+    at = slash + 1;
+    if (segment.empty() || segment == ".") continue;
+    if (segment != "..") {
+      segments.push_back(segment);
+    } else if (!segments.empty() && segments.back() != "..") {
+      segments.pop_back();
+    } else if (root_size == 0) {
+      segments.push_back(segment);
+    }
+  }
+  std::string out(path.substr(0, root_size));
+  for (size_t i = 0; i < segments.size(); ++i) {
+    if (i > 0) out += '/';
+    out += segments[i];
+  }
+  return out;
+}
+
+// A zero-width region at the start of a file: where a finding about the whole file
+// (or about generated code) points, since consumers want a region (SARIF2017, GitHub).
+nlohmann::ordered_json StartOfFileRegion() {
+  return {{"startLine", 1}, {"startColumn", 1}, {"endLine", 1}, {"endColumn", 1}};
+}
+
 class SarifBuilder {
  public:
   SarifBuilder(const CheckReport& report, const ReportOptions& options)
-      : report_(report), options_(options) {}
+      : report_(report),
+        options_(options),
+        base_directory_(WithoutDotSegments(DisplayPath(options.base_directory, ""))) {}
 
   Json Build() {
     // Rules first: results refer to them by index.
@@ -65,8 +103,8 @@ class SarifBuilder {
     driver["rules"] = std::move(rules);
 
     Json run = {{"tool", {{"driver", std::move(driver)}}}};
-    if (IsAbsolutePath(options_.base_directory)) {
-      std::string base = FileUri(DisplayPath(options_.base_directory, ""));
+    if (IsAbsolutePath(base_directory_)) {
+      std::string base = FileUri(base_directory_);
       if (base.back() != '/') base += '/';
       run["originalUriBaseIds"] = {{kSarifSourceRoot, {{"uri", base}}}};
     }
@@ -99,8 +137,14 @@ class SarifBuilder {
     return rule;
   }
 
+  // Relative to %SRCROOT% when the file lies below it, else an absolute file URI;
+  // a relative name is taken relative to the base directory.
   Json ArtifactLocation(const SourceFile& file) const {
-    const std::string path = DisplayPath(file.Name(), options_.base_directory);
+    std::string path = DisplayPath(file.Name(), "");
+    if (!IsAbsolutePath(path) && IsAbsolutePath(base_directory_)) {
+      path = base_directory_ + (base_directory_.ends_with('/') ? "" : "/") + path;
+    }
+    path = DisplayPath(WithoutDotSegments(path), base_directory_);
     if (IsAbsolutePath(path)) return {{"uri", FileUri(path)}};
     return {{"uri", EncodeUriPath(path)}, {"uriBaseId", kSarifSourceRoot}};
   }
@@ -119,7 +163,7 @@ class SarifBuilder {
       return {{"artifactLocation", ArtifactLocation(*where->file)}, {"region", Region(*where)}};
     }
     if (fallback == nullptr) return nullptr;
-    return {{"artifactLocation", ArtifactLocation(*fallback)}};
+    return {{"artifactLocation", ArtifactLocation(*fallback)}, {"region", StartOfFileRegion()}};
   }
 
   Json FixesToJson(const Diagnostic& diagnostic) const {
@@ -175,6 +219,7 @@ class SarifBuilder {
 
   const CheckReport& report_;
   const ReportOptions& options_;
+  std::string base_directory_;              // '/'-separated, without "." or ".." segments
   std::map<std::string, Severity> levels_;  // sorted by id: the order of rules[]
   std::map<std::string, size_t> rule_index_;
 };
