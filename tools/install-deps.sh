@@ -22,6 +22,8 @@ test_packages=(
   python3-yaml pre-commit
   # The SARIF and JSON schema tests validate offline (tests/sarif/validate.py).
   python3-jsonschema
+  # Browser tests open generated pages in headless Chromium (SwiftShader WebGL).
+  chromium
 )
 
 packages=("${build_packages[@]}")

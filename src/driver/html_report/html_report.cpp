@@ -118,8 +118,13 @@ std::string HtmlEscape(std::string_view text) {
 std::string FormatHtmlReport(const HtmlReport& report) {
   const ReportCounts counts = CountReport(report);
   std::string out;
-  out += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" +
-         HtmlEscape(report.title) + "</title>\n<style>\n";
+  // The page needs no script and loads nothing: a policy that forbids both is a
+  // second wall behind the escaping, should a payload in shader text get through.
+  out +=
+      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+      "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; "
+      "img-src data:; style-src 'unsafe-inline'\">\n<title>" +
+      HtmlEscape(report.title) + "</title>\n<style>\n";
   out += kStyle;
   out += "</style>\n</head>\n<body>\n<h1>" + HtmlEscape(report.title) + "</h1>\n";
   out += "<p class=\"meta\">shaderport " + HtmlEscape(report.tool_version) + " &middot; " +

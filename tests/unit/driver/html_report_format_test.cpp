@@ -63,8 +63,12 @@ TEST(HtmlReportFormat, PageEscapesEverythingUserControlledAndCounts) {
   EXPECT_NE(html.find("src=\"data:image/png;base64," + Base64Encode("PNGDATA") + "\""),
             std::string::npos);
   // No external resources: nothing is fetched from anywhere.
-  EXPECT_EQ(html.find("http"), std::string::npos);
+  EXPECT_EQ(html.find("http:"), std::string::npos);
+  EXPECT_EQ(html.find("https:"), std::string::npos);
   EXPECT_EQ(html.find("<link"), std::string::npos);
+  // And a policy that would block scripts and loads if something got through.
+  EXPECT_NE(html.find("Content-Security-Policy\" content=\"default-src 'none';"),
+            std::string::npos);
 
   const ReportCounts counts = CountReport(report);
   EXPECT_EQ(counts.shaders, 2u);
