@@ -169,12 +169,15 @@ ValidationRequest ComposeShaderToyRequest(SourceManager& sources, PassType type,
     const SourceFile& file = sources.Add(name, std::move(text), /*synthetic=*/true);
     request.parts.push_back({std::move(name), file.Text(), file.Id(), PartKind::kGenerated});
   };
-  // Strings are concatenated: a part whose last line has no newline would run into
-  // the next part's first line, so a newline is added between them.
+  // Strings are concatenated: a part whose last line has no newline, or ends in a
+  // line continuation ('\' before the newline), would run into the next part's
+  // first line (a '#ifndef' there would stop being a directive), so a newline is
+  // added between them, which the continuation then joins harmlessly.
   auto add_user = [&](const SourceFile& file) {
     request.parts.push_back({file.Name(), file.Text(), file.Id(), PartKind::kUser});
     const std::string_view text = file.Text();
-    if (!text.empty() && text.back() != '\n' && text.back() != '\r') {
+    const bool continued = text.ends_with("\\\n") || text.ends_with("\\\r\n");
+    if ((!text.empty() && text.back() != '\n' && text.back() != '\r') || continued) {
       add_generated("shadertoy-separator", "\n");
     }
   };

@@ -1,7 +1,8 @@
 #include "validate/shadertoy_contract.h"
 
-#include <algorithm>
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 #include "validate/validate_test_util.h"
 
@@ -200,12 +201,22 @@ TEST(ShaderToyContractTest, AnUnfinishedEndOfCommonIsBlamedOnCommon) {
 
   // Common checked on its own, as the site's wrapper follows it.
   auto alone = CompilePass("struct S { float a; }");
-  const auto syntax = std::find_if(
-      alone->result.diagnostics.begin(), alone->result.diagnostics.end(),
-      [](const Diagnostic& d) { return d.rule_id == "glslang/syntax-error"; });
+  const auto syntax =
+      std::find_if(alone->result.diagnostics.begin(), alone->result.diagnostics.end(),
+                   [](const Diagnostic& d) { return d.rule_id == "glslang/syntax-error"; });
   ASSERT_NE(syntax, alone->result.diagnostics.end()) << Rules(alone->result.diagnostics);
   EXPECT_EQ(syntax->range.file, alone->pass);
   EXPECT_EQ(syntax->range.begin, 20u);
+}
+
+// Common code whose last line ends in a line continuation must not swallow the
+// site's '#ifndef mainImage' that follows it (seen on real passes).
+TEST(ShaderToyContractTest, ALineContinuationAtTheEndOfCommonStaysInCommon) {
+  auto c = CompilePass("void mainImage(out vec4 o, in vec2 u) { o = vec4(f()); }\n",
+                       PassType::kImage, "float f() { return 1.0; }\\\n");
+  EXPECT_TRUE(c->result.Accepted(true)) << Rules(c->result.diagnostics);
+  auto alone = CompilePass("void mainImage(out vec4 o, in vec2 u) { o = vec4(1); }\\\n");
+  EXPECT_TRUE(alone->result.Accepted(true)) << Rules(alone->result.diagnostics);
 }
 
 TEST(ShaderToyContractTest, ChannelTypesFollowTheInputs) {
