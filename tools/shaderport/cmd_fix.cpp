@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "driver/port/file_lock.h"
 #include "driver/port/output_files.h"
 #include "driver/port/port_file.h"
 #include "driver/port/port_report.h"
@@ -95,6 +96,10 @@ int RunFix(const FixArgs& args) {
       std::fprintf(stderr, "shaderport fix: warning: no shader files in the given paths\n");
     }
     for (const driver::InputFile& input : *inputs) {
+      // Held from reading to writing: a concurrent `fix -i` of the same file
+      // waits, then reads (and leaves alone) the text written here.
+      const driver::FileUpdateLock lock =
+          args.in_place ? driver::FileUpdateLock(input.path) : driver::FileUpdateLock();
       results.push_back(driver::PortFile(input.path, options, sources));
       exit_code = std::max(exit_code, Emit(args, results.back(), input.path));
     }
@@ -115,7 +120,8 @@ void AddFixCommand(CLI::App& app, int& exit_code) {
   auto* diff =
       command->add_flag("--diff", args->diff, "Print a unified diff of every file instead");
   auto* in_place =
-      command->add_flag("--in-place,-i", args->in_place, "Rewrite the files (atomically)");
+      command->add_flag("--in-place,-i", args->in_place,
+                        "Rewrite the files (atomically, locked against concurrent fix -i)");
   auto* output = command->add_option("-o,--output", args->output, "Write the result to this file");
   diff->excludes(in_place)->excludes(output);
   in_place->excludes(output);

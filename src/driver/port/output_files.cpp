@@ -1,19 +1,12 @@
 #include "driver/port/output_files.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
+#include <cstdint>
 #include <map>
 #include <vector>
 
 namespace shaderport::driver {
 namespace {
-
-std::string Errno(const std::string& what) { return what + ": " + std::strerror(errno); }
 
 std::vector<std::string_view> SplitLines(std::string_view text) {
   std::vector<std::string_view> lines;
@@ -84,40 +77,6 @@ void AppendLine(std::string& out, char prefix, std::string_view line) {
 }
 
 }  // namespace
-
-std::string WriteFileAtomically(const std::filesystem::path& path, std::string_view text) {
-  const std::filesystem::path directory =
-      path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-  std::string temp = (directory / ("." + path.filename().string() + ".shaderport-XXXXXX")).string();
-  const int fd = ::mkstemp(temp.data());
-  if (fd < 0) return Errno("cannot create a temporary file in " + directory.string());
-  auto fail = [&](const std::string& why) {
-    ::close(fd);
-    ::unlink(temp.c_str());
-    return why;
-  };
-  struct stat info {};
-  const mode_t mode = ::stat(path.c_str(), &info) == 0 ? (info.st_mode & 07777) : 0644;
-  if (::fchmod(fd, mode) != 0) return fail(Errno("cannot set the mode of " + temp));
-  size_t written = 0;
-  while (written < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return fail(Errno("cannot write " + temp));
-    written += static_cast<size_t>(n);
-  }
-  if (::fsync(fd) != 0) return fail(Errno("cannot sync " + temp));
-  if (::close(fd) != 0) {
-    ::unlink(temp.c_str());
-    return Errno("cannot close " + temp);
-  }
-  if (::rename(temp.c_str(), path.c_str()) != 0) {
-    const std::string why = Errno("cannot replace " + path.string());
-    ::unlink(temp.c_str());
-    return why;
-  }
-  return {};
-}
 
 std::filesystem::path OutDirPath(const std::filesystem::path& out_dir,
                                  const std::filesystem::path& relative,

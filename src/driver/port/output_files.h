@@ -1,4 +1,5 @@
-// Writing what `fix` and `port` produce: whole files atomically, and unified diffs.
+// Output paths of `port --out-dir` (OutDirPath, OutputClash) and unified diffs;
+// files are written by WriteFileAtomically (atomic_write.h).
 #pragma once
 
 #include <filesystem>
@@ -6,13 +7,9 @@
 #include <string_view>
 #include <vector>
 
-namespace shaderport::driver {
+#include "driver/port/atomic_write.h"  // WriteFileAtomically
 
-// Writes `text` to `path` through a temporary file in the same directory
-// (fsync, then rename), keeping the mode of the file it replaces. On any
-// failure the old file is untouched, the temporary is removed, and the reason
-// is returned; "" on success.
-std::string WriteFileAtomically(const std::filesystem::path& path, std::string_view text);
+namespace shaderport::driver {
 
 // Where `--out-dir DIR` puts an input whose layout below its argument is
 // `relative` (InputFile::relative): DIR/relative with `extension`. An absolute
