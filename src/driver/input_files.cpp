@@ -1,5 +1,7 @@
 #include "driver/input_files.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <array>
 #include <set>
@@ -18,20 +20,35 @@ bool IsShaderExtension(const fs::path& path) {
 
 namespace {
 
-// The files under `root`, sorted, or an error message.
-std::vector<fs::path> WalkDirectory(const fs::path& root, std::string& error_message) {
+// The files under `root`, sorted; what could not be walked goes to `problems`.
+std::vector<fs::path> WalkDirectory(const fs::path& root, std::vector<std::string>& problems) {
   std::vector<fs::path> found;
+  const size_t first_problem = problems.size();
   std::error_code error;
   fs::recursive_directory_iterator it(root, fs::directory_options::skip_permission_denied, error);
   for (; !error && it != fs::recursive_directory_iterator(); it.increment(error)) {
-    // Hidden directories (.git, .cache) never hold shaders a user wants checked.
-    if (it->is_directory() && it->path().filename().string().starts_with(".")) {
-      it.disable_recursion_pending();
+    // The error_code forms: a symbolic link loop must not throw out of the walk.
+    std::error_code entry_error;
+    const fs::file_status status = it->status(entry_error);
+    if (entry_error && entry_error != std::errc::no_such_file_or_directory) {
+      problems.push_back(it->path().string() + ": " + entry_error.message());
       continue;
     }
-    if (it->is_regular_file() && IsShaderExtension(it->path())) found.push_back(it->path());
+    if (fs::is_directory(status)) {
+      // Hidden directories (.git, .cache) never hold shaders a user wants checked.
+      if (it->path().filename().string().starts_with(".")) {
+        it.disable_recursion_pending();
+      } else if (!it->is_symlink(entry_error) && ::access(it->path().c_str(), R_OK | X_OK) != 0) {
+        // Skipped by the walk; said, so that a CI run does not pass unchecked files.
+        problems.push_back(it->path().string() +
+                           ": directory not readable, its files are not checked");
+      }
+      continue;
+    }
+    if (fs::is_regular_file(status) && IsShaderExtension(it->path())) found.push_back(it->path());
   }
-  if (error) error_message = root.string() + ": " + error.message();
+  if (error) problems.push_back(root.string() + ": " + error.message());
+  std::sort(problems.begin() + static_cast<std::ptrdiff_t>(first_problem), problems.end());
   std::sort(found.begin(), found.end());
   return found;
 }
@@ -48,19 +65,20 @@ InputSet WalkInputs(const std::vector<fs::path>& paths, const KeepWalkedFile& ke
     std::error_code error;
     const fs::file_status status = fs::status(path, error);
     if (error || status.type() == fs::file_type::not_found) {
-      result.errors.push_back(path.string() + ": no such file or directory");
+      // ELOOP and EACCES say more than "no such file".
+      const bool missing = !error || error == std::errc::no_such_file_or_directory;
+      result.errors.push_back(path.string() + ": " +
+                              (missing ? "no such file or directory" : error.message()));
       continue;
     }
     if (!fs::is_directory(status)) {
       add({path, path.lexically_normal(), true});
       continue;
     }
-    std::string walk_error;
-    for (const fs::path& file : WalkDirectory(path, walk_error)) {
+    for (const fs::path& file : WalkDirectory(path, result.errors)) {
       if (keep && !keep(file)) continue;
       add({file, file.lexically_relative(path), false});
     }
-    if (!walk_error.empty()) result.errors.push_back(std::move(walk_error));
   }
   return result;
 }

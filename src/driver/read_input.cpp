@@ -1,7 +1,11 @@
 #include "driver/read_input.h"
 
-#include <fstream>
-#include <system_error>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 
 #include "base/limits.h"
 
@@ -36,29 +40,59 @@ InputText ClassifyInputText(std::string text) {
         "input/too-large",
         "file is larger than the " + std::to_string(limits::kMaxFileBytes >> 20) + " MiB limit");
   }
+  const bool byte_order_mark = text.starts_with("\xEF\xBB\xBF");
+  if (byte_order_mark) text.erase(0, 3);
   if (text.empty()) return Reject("input/empty", "file is empty");
   if (LooksBinary(text)) {
     return Reject("input/binary", "file looks like binary data, not shader source");
   }
-  return {std::move(text), "", ""};
+  // A lone CR ends a line for browsers and our lexer, but glslang counts only LF
+  // and would put everything after it on line 1. LF in its place keeps every
+  // offset, so positions agree everywhere (fix and port then write LF there).
+  for (size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n')) text[i] = '\n';
+  }
+  return {std::move(text), "", "", byte_order_mark};
 }
 
 InputText ReadInputFile(const std::filesystem::path& path) {
-  std::error_code error;
-  const auto size = std::filesystem::file_size(path, error);
-  if (error) return Reject("input/unreadable", "cannot read file: " + error.message());
+  // O_NONBLOCK: opening a FIFO without a writer must not wait; fstat on the open
+  // descriptor then rejects anything but a regular file before a byte is read.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+  if (fd < 0)
+    return Reject("input/unreadable", std::string("cannot open file: ") + std::strerror(errno));
+  struct stat info {};
+  if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {
+    const std::string what = S_ISDIR(info.st_mode)    ? "a directory"
+                             : S_ISFIFO(info.st_mode) ? "a FIFO"
+                             : S_ISSOCK(info.st_mode) ? "a socket"
+                                                      : "a device or special file";
+    ::close(fd);
+    return Reject("input/unreadable", "not a regular file: " + what);
+  }
+  const auto size = static_cast<size_t>(info.st_size);
   if (size > limits::kMaxFileBytes) {
+    ::close(fd);
     return Reject("input/too-large",
                   "file is " + std::to_string(size >> 20) + " MiB, larger than the " +
                       std::to_string(limits::kMaxFileBytes >> 20) + " MiB limit");
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return Reject("input/unreadable", "cannot open file");
   std::string text(size, '\0');
-  in.read(text.data(), static_cast<std::streamsize>(size));
-  if (static_cast<size_t>(in.gcount()) != size) {
-    return Reject("input/unreadable", "file changed size while being read");
+  size_t done = 0;
+  int read_error = 0;
+  while (done < size) {
+    const ssize_t n = ::read(fd, text.data() + done, size - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) read_error = errno;
+    if (n <= 0) break;
+    done += static_cast<size_t>(n);
   }
+  ::close(fd);
+  if (read_error != 0) {
+    return Reject("input/unreadable",
+                  std::string("cannot read file: ") + std::strerror(read_error));
+  }
+  if (done != size) return Reject("input/unreadable", "file changed size while being read");
   return ClassifyInputText(std::move(text));
 }
 

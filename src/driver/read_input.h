@@ -14,9 +14,14 @@ struct InputText {
   std::optional<std::string> text;  // empty optional when the file was rejected
   std::string rule_id;              // why it was rejected ("input/too-large", ...)
   std::string message;
+  // The text began with a UTF-8 byte order mark, which `text` no longer holds:
+  // compilers (clang, glslang) and browsers (TextDecoder) skip it, and `fix`
+  // writes it back.
+  bool byte_order_mark = false;
 };
 
-// The size is checked before anything is read, so a huge file costs nothing.
+// The size is checked before anything is read, so a huge file costs nothing. Only
+// regular files are read: a FIFO, device or directory is rejected without blocking.
 InputText ReadInputFile(const std::filesystem::path& path);
 
 // Reads a stream (standard input) within the same limit: reading stops one buffer
@@ -24,6 +29,8 @@ InputText ReadInputFile(const std::filesystem::path& path);
 InputText ReadInputStream(std::istream& in);
 
 // Classifies text already in memory (stdin, tests): "" when it looks like shader source.
+// Accepted text has a leading UTF-8 byte order mark removed and each lone CR turned
+// into LF (same offsets; glslang counts only LF).
 InputText ClassifyInputText(std::string text);
 
 }  // namespace shaderport::driver

@@ -2,10 +2,12 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <csignal>
 #include <cstdlib>
@@ -30,6 +32,8 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+constexpr int kOutOfMemoryExit = 6;  // the child's exit status after std::bad_alloc
+
 bool WriteAll(int fd, const std::string& bytes) {
   size_t done = 0;
   while (done < bytes.size()) {
@@ -41,8 +45,27 @@ bool WriteAll(int fd, const std::string& bytes) {
   return true;
 }
 
-[[noreturn]] void RunChild(int fd, const RenderRequest& request, const RenderOptions& options,
+// The child's RLIMIT_AS: the requested one, but never above the limit the caller
+// set (ulimit -v, prlimit), which root could otherwise raise.
+rlim_t ChildAddressSpaceLimit(uint64_t requested) {
+#ifdef SHADERPORT_ASAN
+  (void)requested;
+  return RLIM_INFINITY;
+#else
+  rlimit current{};
+  if (getrlimit(RLIMIT_AS, &current) != 0) current.rlim_cur = RLIM_INFINITY;
+  return requested > 0 ? std::min<rlim_t>(current.rlim_cur, requested) : current.rlim_cur;
+#endif
+}
+
+[[noreturn]] void RunChild(int fd, pid_t parent, rlim_t address_space_limit,
+                           const RenderRequest& request, const RenderOptions& options,
                            const std::string& cache_dir) {
+  // A parent killed outright (SIGKILL, OOM killer) never reaps us: die with it, or
+  // a shader spinning in llvmpipe would outlive the run. The parent may already be
+  // gone before prctl takes effect.
+  prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (getppid() != parent) _exit(5);
   // Mesa's warnings would interleave with shaderport's output; keep them unless asked.
   if (std::getenv("SHADERPORT_RENDER_DEBUG") == nullptr) {
     const int null_fd = open("/dev/null", O_WRONLY);
@@ -52,12 +75,10 @@ bool WriteAll(int fd, const std::string& bytes) {
       close(null_fd);
     }
   }
-#ifndef SHADERPORT_ASAN
-  if (options.address_space_limit > 0) {
-    const rlimit limit{options.address_space_limit, options.address_space_limit};
+  if (address_space_limit != RLIM_INFINITY) {
+    const rlimit limit{address_space_limit, address_space_limit};
     setrlimit(RLIMIT_AS, &limit);
   }
-#endif
   if (options.hermetic || cache_dir.empty()) {
     setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
     setenv("MESA_GLSL_CACHE_DISABLE", "true", 1);
@@ -70,19 +91,29 @@ bool WriteAll(int fd, const std::string& bytes) {
   try {
     const RenderOutcome outcome = RenderInThisProcess(request, options.backend);
     code = WriteAll(fd, EncodeOutcome(outcome)) ? 0 : 4;
+  } catch (const std::bad_alloc&) {
+    code = kOutOfMemoryExit;  // the address-space limit
   } catch (...) {
-    code = 3;  // e.g. std::bad_alloc under the address-space limit
+    code = 3;
   }
   close(fd);
   _exit(code);  // no atexit handlers or static destructors of the parent's state
 }
 
-std::string DescribeExit(int status) {
+std::string DescribeExit(int status, rlim_t address_space_limit) {
+  const std::string limit =
+      address_space_limit != RLIM_INFINITY
+          ? " (address-space limit " + std::to_string(address_space_limit >> 20) + " MiB)"
+          : "";
+  if (WIFEXITED(status) && WEXITSTATUS(status) == kOutOfMemoryExit) {
+    return "the render process ran out of memory" + limit;
+  }
   if (WIFSIGNALED(status)) {
     const int signal = WTERMSIG(status);
     const char* name = sigabbrev_np(signal);
+    const bool memory = signal == SIGKILL || signal == SIGSEGV || signal == SIGABRT;
     return std::string("the render process was killed by SIG") + (name ? name : "?") +
-           (signal == SIGKILL || signal == SIGSEGV ? " (out of memory or a driver crash?)" : "");
+           (memory ? ": out of memory" + limit + " or a driver crash?" : "");
   }
   if (WIFEXITED(status)) {
     return "the render process exited with status " + std::to_string(WEXITSTATUS(status)) +
@@ -118,6 +149,8 @@ RenderOutcome RenderIsolated(const RenderRequest& request, const RenderOptions& 
     failed.message = std::string("pipe failed: ") + std::strerror(errno);
     return failed;
   }
+  const pid_t parent = getpid();
+  const rlim_t address_space_limit = ChildAddressSpaceLimit(options.address_space_limit);
   const pid_t pid = fork();
   if (pid < 0) {
     close(fds[0]);
@@ -128,7 +161,7 @@ RenderOutcome RenderIsolated(const RenderRequest& request, const RenderOptions& 
   }
   if (pid == 0) {
     close(fds[0]);
-    RunChild(fds[1], request, options, cache_dir);
+    RunChild(fds[1], parent, address_space_limit, request, options, cache_dir);
   }
   close(fds[1]);
 
@@ -191,8 +224,8 @@ RenderOutcome RenderIsolated(const RenderRequest& request, const RenderOptions& 
   if (!too_large) outcome = DecodeOutcome(bytes);
   if (!outcome) {
     failed.status = RenderStatus::kCrashed;
-    failed.message =
-        too_large ? "the render process sent an oversized result" : DescribeExit(status);
+    failed.message = too_large ? "the render process sent an oversized result"
+                               : DescribeExit(status, address_space_limit);
     failed.milliseconds = ms;
     return failed;
   }

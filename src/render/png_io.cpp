@@ -2,8 +2,13 @@
 // instead of longjmp.
 #include "render/png_io.h"
 
+#include <fcntl.h>
 #include <png.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
+#include <cerrno>
+#include <cstdio>
 #include <cstring>
 
 namespace shaderport::render {
@@ -26,11 +31,30 @@ bool WritePng(const std::string& path, const ImageRgba8& image, std::string& err
   return true;
 }
 
-bool ReadPng(const std::string& path, ImageRgba8& image, std::string& error) {
-  png_image png;
-  std::memset(&png, 0, sizeof(png));
-  png.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_file(&png, path.c_str())) {
+namespace {
+
+// The file opened for reading, or null with `error` set: only a regular file, and
+// opened without blocking, so a FIFO named as a channel cannot hang the run.
+FILE* OpenRegularFile(const std::string& path, std::string& error) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+  if (fd < 0) {
+    error = "cannot read " + path + ": " + std::strerror(errno);
+    return nullptr;
+  }
+  struct stat info {};
+  FILE* file = nullptr;
+  if (::fstat(fd, &info) == 0 && S_ISREG(info.st_mode)) file = ::fdopen(fd, "rb");
+  if (file == nullptr) {
+    error = "cannot read " + path + ": not a regular file";
+    ::close(fd);
+  }
+  return file;
+}
+
+// The PNG in `file` (left open) into `image`.
+bool ReadPngFrom(FILE* file, const std::string& path, png_image& png, ImageRgba8& image,
+                 std::string& error) {
+  if (!png_image_begin_read_from_stdio(&png, file)) {
     error = "cannot read " + path + ": " + png.message;
     return false;
   }
@@ -50,6 +74,19 @@ bool ReadPng(const std::string& path, ImageRgba8& image, std::string& error) {
     return false;
   }
   return true;
+}
+
+}  // namespace
+
+bool ReadPng(const std::string& path, ImageRgba8& image, std::string& error) {
+  FILE* file = OpenRegularFile(path, error);
+  if (file == nullptr) return false;
+  png_image png;
+  std::memset(&png, 0, sizeof(png));
+  png.version = PNG_IMAGE_VERSION;
+  const bool read = ReadPngFrom(file, path, png, image, error);
+  std::fclose(file);
+  return read;
 }
 
 }  // namespace shaderport::render

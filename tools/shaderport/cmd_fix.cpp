@@ -44,18 +44,22 @@ int WriteOrReport(const std::filesystem::path& path, const std::string& text) {
   return kExitInternal;
 }
 
-// Sends one fixed file where the options say; returns its exit code.
+// Sends one fixed file where the options say; returns its exit code. A byte order
+// mark the input began with is written back: fix changes only what rules fix.
 int Emit(const FixArgs& args, const driver::PortResult& result, const std::filesystem::path& path) {
   if (result.read_failed) return kExitFindings;
   if (args.diff) {
     std::fputs(driver::UnifiedDiff(result.file->Text(), result.text, path.string()).c_str(),
                stdout);
-  } else if (args.in_place) {
-    if (result.Changed()) return WriteOrReport(path, result.text);
+    return kExitOk;
+  }
+  const std::string text = (result.byte_order_mark ? "\xEF\xBB\xBF" : "") + result.text;
+  if (args.in_place) {
+    if (result.Changed()) return WriteOrReport(path, text);
   } else if (!args.output.empty()) {
-    return WriteOrReport(args.output, result.text);
+    return WriteOrReport(args.output, text);
   } else {
-    std::fwrite(result.text.data(), 1, result.text.size(), stdout);
+    std::fwrite(text.data(), 1, text.size(), stdout);
   }
   return kExitOk;
 }

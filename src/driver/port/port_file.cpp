@@ -230,7 +230,9 @@ PortResult PortInput(const std::filesystem::path& path, InputText input, const P
     return result;
   }
   const SourceFile& file = sources.Add(path.string(), std::move(*input.text));
-  return PortSource(file, nullptr, options, sources);
+  PortResult result = PortSource(file, nullptr, options, sources);
+  result.byte_order_mark = input.byte_order_mark;
+  return result;
 }
 
 }  // namespace shaderport::driver

@@ -38,9 +38,10 @@ struct PortResult {
   DiagnosticList diagnostics;  // what remains, located in the original
   DiagnosticList fixed;        // findings whose fixes were applied
   int rounds = 0;
-  bool read_failed = false;  // the input could not be read: no text
-  bool validated = false;    // glslang accepted the result
-  bool narrowed = false;     // some fixes were dropped because they broke validation
+  bool read_failed = false;      // the input could not be read: no text
+  bool validated = false;        // glslang accepted the result
+  bool narrowed = false;         // some fixes were dropped because they broke validation
+  bool byte_order_mark = false;  // the input began with one (not in `file` or `text`)
 
   bool Changed() const { return file != nullptr && text != file->Text(); }
 };

@@ -126,8 +126,9 @@ RenderFileResult RenderShaderToyJson(std::string_view name, std::string_view jso
   prepared.fragment_text = composed->Text();
   prepared.anchor = SourceRange{code->Id(), 0, 0};
   prepared.user = code;
-  prepared.map_line = [composed](render::ShaderStage, uint32_t line) {
-    return composed->MapLine(line);
+  // An init-capture: clang before 16 cannot capture a structured binding by name.
+  prepared.map_line = [text = composed](render::ShaderStage, uint32_t line) {
+    return text->MapLine(line);
   };
   prepared.map_buffer_line = [buffer_texts](int pass, uint32_t line) -> std::optional<SourceRange> {
     if (pass < 0 || static_cast<size_t>(pass) >= buffer_texts.size()) return std::nullopt;
