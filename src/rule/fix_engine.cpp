@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <exception>
+#include <functional>
+#include <string>
+#include <vector>
 
 #include "glsl/syntax/parser.h"
 #include "rule/fix_selection.h"
@@ -46,19 +49,34 @@ DiagnosticList RunRules(const SourceFile& file, const AnalyzedShader& analysis,
   return all;
 }
 
-// The rules that changed the text in any round, plus those that still want to.
-std::string FightingRules(const DiagnosticList& fixed, const DiagnosticList& diagnostics,
-                          const std::vector<size_t>& applied) {
-  std::vector<std::string> ids;
-  auto add = [&](const std::string& id) {
-    if (std::find(ids.begin(), ids.end(), id) == ids.end()) ids.push_back(id);
-  };
-  for (const Diagnostic& d : fixed) add(d.rule_id);
-  for (size_t i : applied) add(diagnostics[i].rule_id);
+// Sorted, without repeats, joined by ", ".
+std::string JoinedRuleIds(std::vector<std::string> ids) {
   std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   std::string joined;
   for (const std::string& id : ids) joined += (joined.empty() ? "" : ", ") + id;
   return joined;
+}
+
+// Why the engine stopped while rules still wanted edits.
+std::string StopMessage(int max_rounds, int cycle_rounds,
+                        const std::vector<std::vector<std::string>>& rules_by_round,
+                        const DiagnosticList& found, const std::vector<size_t>& applied) {
+  std::vector<std::string> ids;
+  for (size_t i : applied) ids.push_back(found[i].rule_id);
+  if (cycle_rounds > 0) {
+    // Only the rounds inside the cycle: the rules that keep undoing each other.
+    const size_t first = rules_by_round.size() - static_cast<size_t>(cycle_rounds);
+    for (size_t r = first; r < rules_by_round.size(); ++r) {
+      ids.insert(ids.end(), rules_by_round[r].begin(), rules_by_round[r].end());
+    }
+    return "rules undo each other's fixes (the text came back to what it was " +
+           std::to_string(cycle_rounds) + " round" + (cycle_rounds == 1 ? "" : "s") +
+           " earlier): " + JoinedRuleIds(std::move(ids));
+  }
+  for (const auto& round : rules_by_round) ids.insert(ids.end(), round.begin(), round.end());
+  return "rules still wanted changes after " + std::to_string(max_rounds) +
+         " rounds: " + JoinedRuleIds(std::move(ids));
 }
 
 }  // namespace
@@ -115,7 +133,15 @@ FixEngineResult RunFixEngine(const SourceFile& original, const FixEngineOptions&
   result.text = std::string(original.Text());
   result.map = SourceMap::Identity(static_cast<uint32_t>(result.text.size()));
 
+  // Hashes of the text at the start of each round: a text seen before means the
+  // rules are cycling, which no number of further rounds would end.
+  std::vector<size_t> seen;
+  std::vector<std::vector<std::string>> rules_by_round;
   for (int round = 0;; ++round) {
+    const size_t hash = std::hash<std::string>{}(result.text);
+    const auto earlier = std::find(seen.begin(), seen.end(), hash);
+    const int cycle_rounds = earlier == seen.end() ? 0 : static_cast<int>(seen.end() - earlier);
+    seen.push_back(hash);
     // The edited text keeps the original's id: its ranges are mapped back below.
     const SourceFile current(id, original.Name(), result.text);
     const AnalyzedShader analysis = analyze(current);
@@ -131,21 +157,19 @@ FixEngineResult RunFixEngine(const SourceFile& original, const FixEngineOptions&
       };
     }
     const FixSelection selection = SelectFixes(found, selection_options);
-    const bool last_round = round >= options.max_rounds;
+    const bool stop = round >= options.max_rounds || cycle_rounds > 0;
     std::optional<EditResult> edited;
-    if (!selection.edits.empty() && !last_round) edited = ApplyEdits(result.text, selection.edits);
+    if (!selection.edits.empty() && !stop) edited = ApplyEdits(result.text, selection.edits);
 
     if (!edited) {
       if (!selection.edits.empty()) {
-        result.converged = !last_round;
+        result.converged = !stop;
         Diagnostic fight;
         fight.rule_id = "internal/error";
         fight.range = {id, 0, 0};
-        fight.message = last_round ? "rules still wanted changes after " +
-                                         std::to_string(options.max_rounds) +
-                                         " rounds; they undo each other's fixes: " +
-                                         FightingRules(result.fixed, found, selection.applied)
-                                   : "the chosen fixes could not be applied";
+        fight.message = stop ? StopMessage(options.max_rounds, cycle_rounds, rules_by_round, found,
+                                           selection.applied)
+                             : "the chosen fixes could not be applied";
         result.remaining.push_back(fight);
       }
       for (Diagnostic& d : found) result.remaining.push_back(MapToOriginal(d, result.map, id));
@@ -154,7 +178,9 @@ FixEngineResult RunFixEngine(const SourceFile& original, const FixEngineOptions&
       }
       return result;
     }
+    rules_by_round.emplace_back();
     for (size_t i : selection.applied) {
+      rules_by_round.back().push_back(found[i].rule_id);
       Diagnostic fixed = MapToOriginal(found[i], result.map, id);
       fixed.fixes.clear();  // already applied; their ranges pointed into an older text
       result.fixed.push_back(std::move(fixed));

@@ -1,7 +1,8 @@
 // The fix engine: analyse, run the rules, apply the chosen safe fixes, and
-// repeat on the new text until no rule wants a change (at most `max_rounds`
-// rounds of edits; rules that still want changes after that are fighting and
-// get an internal/error). Everything reported is located in the original text.
+// repeat on the new text until no rule wants a change. Overlapping fixes wait
+// for a later round, so deep nesting can take many rounds; the engine stops
+// (internal/error naming the rules) when a text comes back (rules undoing each
+// other) or after `max_rounds`. Everything reported is located in the original text.
 //
 // The engine does not know how to analyse a dialect: the caller passes an
 // Analyzer (the driver's front end sees ShaderToy's uniforms, Common code...).
@@ -45,7 +46,7 @@ struct FixEngineOptions {
   PortSettings settings;
   std::vector<const Rule*> rules;  // in registry order: earlier rules win overlaps
   Analyzer analyze;                // AnalyzePlain when empty
-  int max_rounds = 3;
+  int max_rounds = 100;            // as ruff: far above what converging rules need
   bool apply_suggestions = false;
   // Called with each fixable diagnostic (located in the original): false keeps
   // its fixes out, and the diagnostic gets `refused_note`.
@@ -60,7 +61,7 @@ struct FixEngineResult {
   DiagnosticList fixed;      // findings whose fixes were applied, located in the original
   DiagnosticList front_end;  // front-end findings on `text`, located in the original
   int rounds = 0;            // rounds that changed the text
-  bool converged = true;     // false: rules still wanted edits after max_rounds
+  bool converged = true;     // false: rules cycled or still wanted edits after max_rounds
 };
 
 FixEngineResult RunFixEngine(const SourceFile& original, const FixEngineOptions& options);
