@@ -117,6 +117,10 @@ class MainWrapperRule final : public rule::Rule {
     const std::string body = ExpandTemplate(entry->main_body, entry->function, out, fresh);
     const std::string_view text = context.Text();
     std::string insertion = text.empty() || text.back() == '\n' ? "\n" : "\n\n";
+    // `#define main() mainImage(...)` would rewrite the added main() too (and every
+    // round would add another): the user's macro has done its work by the end.
+    const bool main_is_macro = harness::DefinedMacros(context).contains("main");
+    if (main_is_macro) insertion += "#undef main\n";
     insertion += "out highp vec4 " + out + ";\nvoid main() {\n" + Indent(body) + "}\n";
 
     Diagnostic diagnostic;
@@ -124,7 +128,8 @@ class MainWrapperRule final : public rule::Rule {
     diagnostic.rule_id = std::string(kId);
     diagnostic.range = definition->name.range;
     diagnostic.message = "WebGL2 needs a main(); " + dialect->name + " calls " + entry->function +
-                         "() from one it generates: adding it, with output '" + out + "'";
+                         "() from one it generates: adding it, with output '" + out + "'" +
+                         (main_is_macro ? " ('main' is a macro here: #undef'd first)" : "");
     const auto end = static_cast<uint32_t>(text.size());
     if (EndIsOpen(context)) {
       diagnostic.fixes.push_back(
