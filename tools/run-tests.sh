@@ -47,7 +47,8 @@ LSAN_OPTIONS=suppressions=$root/tools/lsan.supp \
 if [[ -f tests/fuzz/CMakeLists.txt ]]; then
   echo "== fuzz build (clang, libFuzzer)"
   cmake --preset fuzz >/dev/null
-  cmake --build --preset fuzz -j "$jobs" --target fuzz_frontend fuzz_webgl_semantics
+  cmake --build --preset fuzz -j "$jobs" --target fuzz_frontend fuzz_webgl_semantics fuzz_fix \
+    fuzz_port fuzz_config fuzz_shadertoy_json fuzz_suppressions fuzz_formatters
   run_ctest build/fuzz fuzz
 fi
 

@@ -1,0 +1,46 @@
+// libFuzzer target for `shaderport port` through the library (driver::PortInput
+// in port mode, as tools/shaderport/cmd_port.cpp reaches it through PortFile):
+// whenever glslang compiles the input in its own dialect, it compiles the WebGL2
+// output too, and the source map stays inside the input. Mutated by token_mutator.cpp.
+#include <cstdint>
+#include <string>
+
+#include "driver/port/port_file.h"
+#include "fuzz_driver_util.h"
+
+namespace {
+
+void Require(bool ok, const char* what) { shaderport::fuzz::Check(ok, "fuzz_port", what); }
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  using namespace shaderport;
+  if (size > 16384) return 0;
+  const std::string input(reinterpret_cast<const char*>(data), size);
+  SourceManager sources;
+  driver::PortOptions options;
+  options.mode = rule::PortMode::kPort;
+  const driver::PortResult result =
+      driver::PortInput("fuzz.glsl", driver::ClassifyInputText(input), options, sources);
+  if (result.read_failed) return 0;
+  Require(result.map.OriginalSize() == input.size(), "map original size");
+  Require(result.map.OutputSize() == result.text.size(), "map output size");
+  for (const MapSegment& s : result.map.Segments()) {
+    Require(s.original_begin <= s.original_end && s.original_end <= input.size(),
+            "map segment inside the input");
+  }
+  for (const Diagnostic& d : result.diagnostics) {
+    Require(fuzz::RangeInside(sources, d.range), "diagnostic range");
+  }
+
+  const driver::DetectedKind kind = driver::DetectKind(input, "fuzz.glsl");
+  if (fuzz::ValidationErrors(input, kind, false, sources) != 0) return 0;
+  driver::DetectedKind output_kind;
+  output_kind.dialect = driver::Dialect::kWebGL2;
+  output_kind.stage = result.output_stage;
+  Require(fuzz::ValidationErrors(result.text, output_kind, true, sources) == 0,
+          "the input compiles but its port does not");
+  Require(result.validated, "the library did not validate a port that compiles");
+  return 0;
+}
