@@ -1,0 +1,161 @@
+#include "render/request_wire.h"
+
+#include <cstring>
+
+namespace shaderport::render {
+namespace {
+
+constexpr uint32_t kMagic = 0x53505131;  // "SPQ1"
+constexpr uint32_t kMaxBufferPasses = 64;
+
+template <typename T>
+void Put(std::string& out, const T& value) {
+  out.append(reinterpret_cast<const char*>(&value), sizeof(T));
+}
+
+void PutString(std::string& out, const std::string& text) {
+  Put(out, static_cast<uint64_t>(text.size()));
+  out += text;
+}
+
+void PutInts(std::string& out, const std::array<int, 4>& values) {
+  for (const int value : values) Put(out, static_cast<int32_t>(value));
+}
+
+void PutFloats(std::string& out, const std::array<float, 4>& values) {
+  for (const float value : values) Put(out, value);
+}
+
+struct Reader {
+  const std::string& bytes;
+  size_t at = 0;
+
+  template <typename T>
+  bool Get(T& value) {
+    if (bytes.size() - at < sizeof(T)) return false;
+    std::memcpy(&value, bytes.data() + at, sizeof(T));
+    at += sizeof(T);
+    return true;
+  }
+  bool GetString(std::string& text) {
+    uint64_t size = 0;
+    if (!Get(size) || bytes.size() - at < size) return false;
+    text.assign(bytes, at, size);
+    at += size;
+    return true;
+  }
+  bool GetBool(bool& value) {
+    uint8_t byte = 0;
+    if (!Get(byte) || byte > 1) return false;
+    value = byte == 1;
+    return true;
+  }
+  bool GetInts(std::array<int, 4>& values) {
+    for (int& value : values) {
+      int32_t v = 0;
+      if (!Get(v)) return false;
+      value = v;
+    }
+    return true;
+  }
+  bool GetFloats(std::array<float, 4>& values) {
+    for (float& value : values) {
+      if (!Get(value)) return false;
+    }
+    return true;
+  }
+};
+
+void PutChannel(std::string& out, const ChannelInput& channel) {
+  Put(out, static_cast<uint8_t>(channel.kind));
+  Put(out, static_cast<uint8_t>(channel.unbound));
+  Put(out, channel.image.width);
+  Put(out, channel.image.height);
+  Put(out, static_cast<uint64_t>(channel.image.pixels.size()));
+  out.append(reinterpret_cast<const char*>(channel.image.pixels.data()),
+             channel.image.pixels.size());
+}
+
+bool GetChannel(Reader& in, ChannelInput& channel) {
+  uint8_t kind = 0;
+  uint64_t count = 0;
+  if (!in.Get(kind) || kind > static_cast<uint8_t>(ChannelKind::k3D) ||
+      !in.GetBool(channel.unbound) || !in.Get(channel.image.width) ||
+      !in.Get(channel.image.height) || !in.Get(count) ||
+      count != uint64_t{channel.image.width} * channel.image.height * 4 ||
+      in.bytes.size() - in.at < count) {
+    return false;
+  }
+  channel.kind = static_cast<ChannelKind>(kind);
+  channel.image.pixels.assign(in.bytes.begin() + static_cast<std::ptrdiff_t>(in.at),
+                              in.bytes.begin() + static_cast<std::ptrdiff_t>(in.at + count));
+  in.at += count;
+  return true;
+}
+
+}  // namespace
+
+std::string EncodeRequest(const RenderRequest& request) {
+  std::string out;
+  Put(out, kMagic);
+  PutString(out, request.vertex_source);
+  PutString(out, request.fragment_source);
+  Put(out, static_cast<uint8_t>(request.fullscreen_vertex));
+  Put(out, request.width);
+  Put(out, request.height);
+  Put(out, static_cast<int32_t>(request.frames));
+  const ShaderToyInputs& inputs = request.inputs;
+  Put(out, inputs.time);
+  Put(out, static_cast<int32_t>(inputs.frame));
+  Put(out, inputs.frame_rate);
+  PutFloats(out, inputs.mouse);
+  PutFloats(out, inputs.date);
+  for (const ChannelInput& channel : inputs.channels) PutChannel(out, channel);
+  Put(out, static_cast<uint32_t>(request.buffer_passes.size()));
+  for (const BufferPass& pass : request.buffer_passes) {
+    Put(out, static_cast<int32_t>(pass.buffer));
+    PutString(out, pass.fragment_source);
+    PutInts(out, pass.channel_buffers);
+  }
+  PutInts(out, request.channel_buffers);
+  PutString(out, request.probe_output);
+  return out;
+}
+
+std::optional<RenderRequest> DecodeRequest(const std::string& bytes) {
+  Reader in{bytes};
+  RenderRequest request;
+  uint32_t magic = 0;
+  int32_t frames = 0;
+  int32_t frame = 0;
+  if (!in.Get(magic) || magic != kMagic || !in.GetString(request.vertex_source) ||
+      !in.GetString(request.fragment_source) || !in.GetBool(request.fullscreen_vertex) ||
+      !in.Get(request.width) || !in.Get(request.height) || !in.Get(frames) ||
+      !in.Get(request.inputs.time) || !in.Get(frame) || !in.Get(request.inputs.frame_rate) ||
+      !in.GetFloats(request.inputs.mouse) || !in.GetFloats(request.inputs.date)) {
+    return std::nullopt;
+  }
+  request.frames = frames;
+  request.inputs.frame = frame;
+  for (ChannelInput& channel : request.inputs.channels) {
+    if (!GetChannel(in, channel)) return std::nullopt;
+  }
+  uint32_t passes = 0;
+  if (!in.Get(passes) || passes > kMaxBufferPasses) return std::nullopt;
+  request.buffer_passes.resize(passes);
+  for (BufferPass& pass : request.buffer_passes) {
+    int32_t buffer = 0;
+    if (!in.Get(buffer) || !in.GetString(pass.fragment_source) ||
+        !in.GetInts(pass.channel_buffers)) {
+      return std::nullopt;
+    }
+    pass.buffer = buffer;
+  }
+  if (!in.GetInts(request.channel_buffers) || !in.GetString(request.probe_output) ||
+      in.at != bytes.size()) {
+    return std::nullopt;
+  }
+  return request;
+}
+
+}  // namespace shaderport::render

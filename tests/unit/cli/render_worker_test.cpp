@@ -1,0 +1,213 @@
+// The persistent render worker through the real binary (docs/render.md, Isolation):
+// in one `check --render` batch a timeout and an out-of-memory render cost only
+// themselves, pictures are byte-identical whatever the worker reuse and -j, and no
+// worker serving a batch outlives a SIGKILLed parent.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "bounded_run.h"
+#include "temp_project.h"
+
+namespace shaderport::testing {
+namespace {
+
+namespace fs = std::filesystem;
+using std::chrono::steady_clock;
+
+// Heavy work in a loop llvmpipe caps at 65,535 iterations per pixel: minutes of
+// drawing at 128x128, so only the timeout ends it.
+constexpr const char* kSpinningShader =
+    "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+    "  vec4 x = vec4(fragCoord, 0.0, 1.0);\n"
+    "  for (int i = 0; i < 1000000; i++) {\n"
+    "    x = sin(x * 1.0001 + cos(x.yzwx)) + exp(-abs(x.zwxy)) * tan(x.wxyz);\n"
+    "    x = sin(x * 1.0001 + cos(x.yzwx)) + exp(-abs(x.zwxy)) * tan(x.wxyz);\n"
+    "  }\n"
+    "  fragColor = x;\n"
+    "}\n";
+
+// An 800 MB local array: Mesa's compiler and llvmpipe allocate far past 1 GiB.
+constexpr const char* kHugeArrayShader =
+    "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+    "  float a[200000000];\n"
+    "  for (int i = 0; i < 200000000; i++) a[i] = float(i);\n"
+    "  fragColor = vec4(a[int(fragCoord.x)], 0.0, 0.0, 1.0);\n"
+    "}\n";
+
+// A picture with no finding, different for each `k`.
+std::string GoodShader(int k) {
+  return "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+         "  vec2 uv = fragCoord / iResolution.xy;\n"
+         "  fragColor = vec4(uv, 0.5 + 0.5 * sin(" +
+         std::to_string(k + 1) + ".0 * uv.x), 1.0);\n}\n";
+}
+
+std::vector<std::string> LinesAbout(const std::string& text, const std::string& file) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    if (line.find(file) != std::string::npos) lines.push_back(line);
+  }
+  return lines;
+}
+
+std::string ReadFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), {});
+}
+
+class RenderWorkerCliTest : public ::testing::Test {
+ protected:
+  BoundedRun Run(const std::vector<std::string>& args, BoundedRunOptions options = {}) {
+    options.directory = project_.Root();
+    // check --render uses the user's Mesa cache: keep it inside the project.
+    options.environment.push_back("XDG_CACHE_HOME=" + (project_.Root() / "cache").string());
+    return RunBounded(args, options);
+  }
+  TempProject project_{"render-worker"};
+};
+
+TEST_F(RenderWorkerCliTest, TimeoutAndOutOfMemoryCostOnlyTheirOwnRender) {
+  project_.Write("shaders/a_good.glsl", GoodShader(0));
+  project_.Write("shaders/b_spin.glsl", kSpinningShader);
+  project_.Write("shaders/c_good.glsl", GoodShader(1));
+  project_.Write("shaders/d_huge.glsl", kHugeArrayShader);
+  project_.Write("shaders/e_good.glsl", GoodShader(2));
+  BoundedRunOptions options;
+  options.time_limit = std::chrono::seconds(40);
+  if (!kSanitizedBuild) options.address_space = rlim_t{1} << 30;
+  const BoundedRun check = Run({"check", "--no-cache", "--render", "--render-size", "128",
+                                "--render-timeout", "1", "-j1", "shaders"},
+                               options);
+  EXPECT_EQ(check.exit_code, 1) << check.Printed();
+  const std::vector<std::string> spin = LinesAbout(check.out, "b_spin.glsl");
+  ASSERT_EQ(spin.size(), 1u) << check.Printed();
+  EXPECT_NE(spin[0].find("did not finish within 1000 ms and was killed [render/timeout]"),
+            std::string::npos)
+      << spin[0];
+  if (!kSanitizedBuild) {
+    const std::vector<std::string> huge = LinesAbout(check.out, "d_huge.glsl");
+    ASSERT_EQ(huge.size(), 1u) << check.Printed();
+    EXPECT_NE(huge[0].find("[render/crashed]"), std::string::npos) << huge[0];
+    EXPECT_NE(huge[0].find("out of memory"), std::string::npos) << huge[0];
+    EXPECT_NE(huge[0].find("address-space limit 1024 MiB"), std::string::npos) << huge[0];
+  }
+  for (const char* good : {"a_good.glsl", "c_good.glsl", "e_good.glsl"}) {
+    EXPECT_TRUE(LinesAbout(check.out, good).empty()) << good << "\n" << check.Printed();
+  }
+  EXPECT_LT(check.seconds, 30) << "the limits, not the bound, end the bad renders";
+}
+
+// The same pictures (embedded PNGs) and findings from one worker for all, a fresh
+// process per render, and two jobs with a worker each.
+TEST_F(RenderWorkerCliTest, ReportIsByteIdenticalWhateverTheWorkerReuseAndJobs) {
+  for (int k = 0; k < 6; ++k) {
+    project_.Write("shaders/s" + std::to_string(k) + ".glsl", GoodShader(k));
+  }
+  project_.Write("shaders/flat.glsl",
+                 "void mainImage(out vec4 c, in vec2 p) { c = vec4(0.25, 0.5, 0.75, 1.0); }\n");
+  project_.Write("shaders/broken.glsl", "void mainImage(out vec4 c, in vec2 p) { c = 1.0; }\n");
+  struct Variant {
+    std::string name;
+    std::string jobs;
+    std::string worker_renders;
+  };
+  const std::vector<Variant> variants = {{"worker-j1", "1", "200"},
+                                         {"fresh-j1", "1", "1"},
+                                         {"worker-j2", "2", "200"},
+                                         {"short-lived-j2", "2", "2"}};
+  std::string first;
+  for (const Variant& variant : variants) {
+    BoundedRunOptions options;
+    options.time_limit = std::chrono::seconds(60);
+    options.environment.push_back("SHADERPORT_RENDER_WORKER_RENDERS=" + variant.worker_renders);
+    const std::string html = variant.name + ".html";
+    const BoundedRun report =
+        Run({"report", "--hermetic", "-j", variant.jobs, "--html", html, "shaders"}, options);
+    ASSERT_FALSE(report.timed_out) << variant.name;
+    const std::string text = ReadFile(project_.Root() / html);
+    ASSERT_NE(text.find("data:image/png;base64,"), std::string::npos) << variant.name;
+    if (first.empty()) {
+      first = text;
+    } else {
+      EXPECT_TRUE(text == first) << variant.name << " differs from " << variants[0].name;
+    }
+  }
+}
+
+// Pids of live (not zombie) processes whose environment holds `marker`.
+std::set<pid_t> ProcessesWithMarker(const std::string& marker) {
+  std::set<pid_t> found;
+  for (const auto& entry : fs::directory_iterator("/proc")) {
+    const std::string name = entry.path().filename().string();
+    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+    const std::string environ = ReadFile(entry.path() / "environ");
+    if (environ.find(marker) == std::string::npos) continue;
+    const std::string stat = ReadFile(entry.path() / "stat");
+    const size_t close = stat.rfind(')');
+    if (close != std::string::npos && close + 2 < stat.size() && stat[close + 2] == 'Z') continue;
+    found.insert(static_cast<pid_t>(std::stoi(name)));
+  }
+  return found;
+}
+
+// A worker between renders of a parallel check's batch dies with the parent too.
+TEST_F(RenderWorkerCliTest, NoWorkerOfACheckBatchOutlivesAKilledParent) {
+  project_.Write("a_good.glsl", GoodShader(0));
+  project_.Write("b_spin.glsl", kSpinningShader);
+  const std::string cache = "XDG_CACHE_HOME=" + (project_.Root() / "cache").string();
+  const std::string marker = "SHADERPORT_WORKER_TEST_MARKER=" + std::to_string(::getpid()) + "-" +
+                             std::to_string(steady_clock::now().time_since_epoch().count());
+  // A batch: the worker serves the first file and is drawing the second when the
+  // parent dies.
+  std::vector<std::string> words = {
+      SHADERPORT_BINARY,  "check", "--no-cache", "--render", "--render-size", "128",
+      "--render-timeout", "60",    "-j",         "2",        "a_good.glsl",   "b_spin.glsl"};
+  std::vector<char*> argv;
+  for (std::string& word : words) argv.push_back(word.data());
+  argv.push_back(nullptr);
+  const std::string directory = project_.Root().string();
+  const pid_t parent = ::fork();
+  ASSERT_GE(parent, 0);
+  if (parent == 0) {
+    if (::chdir(directory.c_str()) != 0) ::_exit(126);
+    ::putenv(const_cast<char*>(marker.c_str()));
+    ::putenv(const_cast<char*>(cache.c_str()));
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
+  // Wait until the worker exists (two processes carry the marker).
+  const auto deadline = steady_clock::now() + std::chrono::seconds(30);
+  std::set<pid_t> processes;
+  while (steady_clock::now() < deadline) {
+    processes = ProcessesWithMarker(marker);
+    if (processes.size() >= 2) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  EXPECT_GE(processes.size(), 2u) << "the worker never started";
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));  // it is drawing b_spin now
+  ::kill(parent, SIGKILL);
+  int status = 0;
+  ::waitpid(parent, &status, 0);
+  const auto gone_by = steady_clock::now() + std::chrono::seconds(5);
+  while (!ProcessesWithMarker(marker).empty() && steady_clock::now() < gone_by) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  const std::set<pid_t> survivors = ProcessesWithMarker(marker);
+  EXPECT_TRUE(survivors.empty()) << "a render worker survived its parent";
+  for (const pid_t pid : survivors) ::kill(pid, SIGKILL);
+}
+
+}  // namespace
+}  // namespace shaderport::testing
