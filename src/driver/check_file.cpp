@@ -4,6 +4,7 @@
 #include <array>
 #include <chrono>
 #include <string_view>
+#include <utility>
 
 #include "base/limits.h"
 #include "driver/dialect.h"
@@ -27,8 +28,9 @@ bool IsLimitBreach(std::string_view rule_id) {
   return std::find(kLimitRules.begin(), kLimitRules.end(), rule_id) != kLimitRules.end();
 }
 
-DetectedKind ResolveKind(const FileJob& job, const CheckOptions& options, const SourceFile& file) {
-  DetectedKind kind = DetectKind(file.Text(), job.path);
+DetectedKind ResolveKind(const FileJob& job, const CheckOptions& options,
+                         const glsl::LexedFile& lexed) {
+  DetectedKind kind = DetectKind(lexed, job.path);
   if (job.config != nullptr) {
     const FileSettings settings = SettingsFor(*job.config, job.absolute_path);
     if (settings.dialect) kind.dialect = *settings.dialect;
@@ -41,7 +43,7 @@ DetectedKind ResolveKind(const FileJob& job, const CheckOptions& options, const 
 
 // --target, then the config's [[files]] target, then the default for the code.
 Target ResolveTarget(const FileJob& job, const CheckOptions& options, const DetectedKind& kind,
-                     const SourceFile& file) {
+                     const glsl::LexedFile& lexed) {
   if (options.target) return *options.target;
   if (job.config != nullptr) {
     const FileSettings settings = SettingsFor(*job.config, job.absolute_path);
@@ -49,7 +51,7 @@ Target ResolveTarget(const FileJob& job, const CheckOptions& options, const Dete
   }
   if (kind.dialect == Dialect::kShaderToy) return Target::kWebGL2;
   // By the code's own #version, whatever --dialect says about how it is written.
-  const Dialect written = DetectKind(file.Text(), job.path).dialect;
+  const Dialect written = DetectKind(lexed, job.path).dialect;
   return written == Dialect::kWebGL1 ? Target::kWebGL1 : Target::kWebGL2;
 }
 
@@ -109,9 +111,10 @@ void RenderCheckedFile(const FileJob& job, const CheckOptions& options, SourceMa
                        FileReport& report) {
   if (report.file == nullptr || report.file->Text().empty()) return;
   const SourceFile& file = *report.file;
-  const DetectedKind kind = ResolveKind(job, options, file);
+  glsl::LexedFile lexed = glsl::Lex(file);
+  const DetectedKind kind = ResolveKind(job, options, lexed);
   const SourceFile* common = kind.dialect == Dialect::kShaderToy ? job.common : nullptr;
-  const FrontEndResult front = RunFrontEnd(file, common, kind, sources);
+  const FrontEndResult front = RunFrontEnd(file, std::move(lexed), common, kind, sources);
   // Drawn only when what remains after suppressions and configuration has no error.
   DiagnosticList settled = report.diagnostics;
   SuppressionOptions quiet;
@@ -144,7 +147,9 @@ FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceMana
   }
   const SourceFile& file = sources.Add(job.path.string(), std::move(*input.text));
   report.file = &file;
-  const DetectedKind kind = ResolveKind(job, options, file);
+  // Lexed once: detection, the front end, suppressions and glslang's messages share it.
+  glsl::LexedFile lexed = glsl::Lex(file);
+  const DetectedKind kind = ResolveKind(job, options, lexed);
   report.dialect = std::string(DialectName(kind.dialect));
   report.stage = std::string(StageName(kind.stage));
 
@@ -155,20 +160,27 @@ FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceMana
   WebglCheckSettings webgl;
   webgl.stage = kind.stage;
   webgl.shadertoy = kind.dialect == Dialect::kShaderToy;
-  webgl.target = ResolveTarget(job, options, kind, file);
+  webgl.target = ResolveTarget(job, options, kind, lexed);
   FrontEndOptions front_options;
   front_options.analyze = true;
   front_options.channels = options.channels;
   // WebGL 2 contexts allow 1024-character names in GLSL ES 1.00 code too.
   front_options.max_identifier_length = webgl.target == Target::kWebGL2 ? 1024 : 256;
-  const FrontEndResult front = RunFrontEnd(file, common, kind, sources, front_options);
+  const FrontEndResult front =
+      RunFrontEnd(file, std::move(lexed), common, kind, sources, front_options);
   for (const Diagnostic& diagnostic : front.diagnostics) {
     if (IsLimitBreach(diagnostic.rule_id)) report.diagnostics.push_back(diagnostic);
   }
   if (!report.diagnostics.empty()) return report;
 
-  validate::ValidationResult result =
-      validate::ValidateWithGlslang(ComposeRequest(job, options, kind, file, sources));
+  validate::ValidationRequest request = ComposeRequest(job, options, kind, file, sources);
+  for (validate::ShaderPart& part : request.parts) {
+    if (part.kind == validate::PartKind::kUser && part.file == file.Id()) {
+      part.source = &file;
+      part.lexed = &front.lexed;
+    }
+  }
+  validate::ValidationResult result = validate::ValidateWithGlslang(request);
   AlignGlslangWithBrowser(file, front, webgl, result.diagnostics);
   report.diagnostics = RunWebglChecks(file, front, webgl);
   for (Diagnostic& diagnostic : result.diagnostics)

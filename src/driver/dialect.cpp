@@ -64,10 +64,8 @@ struct CodeFacts {
   bool uses_attribute = false;
 };
 
-CodeFacts ReadFacts(std::string_view text) {
+CodeFacts ReadFacts(const glsl::LexedFile& lexed) {
   CodeFacts facts;
-  const SourceFile file(0, "<detect>", std::string(text));
-  const glsl::LexedFile lexed = glsl::Lex(file);
   const auto& tokens = lexed.tokens;
   for (size_t i = 0; i < tokens.size(); ++i) {
     const glsl::Token& token = tokens[i];
@@ -91,7 +89,12 @@ CodeFacts ReadFacts(std::string_view text) {
 }  // namespace
 
 DetectedKind DetectKind(std::string_view text, const std::filesystem::path& path) {
-  const CodeFacts facts = ReadFacts(text);
+  const SourceFile file(0, "<detect>", std::string(text));
+  return DetectKind(glsl::Lex(file), path);
+}
+
+DetectedKind DetectKind(const glsl::LexedFile& lexed, const std::filesystem::path& path) {
+  const CodeFacts facts = ReadFacts(lexed);
   DetectedKind kind;
   const bool has_main = facts.defined_functions.contains("main");
   if (facts.version_300) {

@@ -5,6 +5,10 @@
 #include <optional>
 #include <string_view>
 
+namespace shaderport::glsl {
+struct LexedFile;  // glsl/lex/lexer.h
+}  // namespace shaderport::glsl
+
 namespace shaderport::driver {
 
 enum class Dialect { kShaderToy, kWebGL1, kWebGL2 };
@@ -32,5 +36,8 @@ struct DetectedKind {
 // ShaderToy; otherwise WebGL1 (no #version is GLSL ES 1.00). The stage comes from
 // the extension, else from what the code writes (gl_Position means vertex).
 DetectedKind DetectKind(std::string_view text, const std::filesystem::path& path);
+
+// The same from the file's tokens (glsl::Lex), when the caller has them.
+DetectedKind DetectKind(const glsl::LexedFile& lexed, const std::filesystem::path& path);
 
 }  // namespace shaderport::driver

@@ -1,5 +1,6 @@
 #include "driver/front_end.h"
 
+#include <utility>
 #include <vector>
 
 namespace shaderport::driver {
@@ -7,9 +8,11 @@ namespace {
 
 glsl::ParseResult ParseUnit(const std::vector<const SourceFile*>& files, int forced_version,
                             bool shadertoy, glsl::PreprocessResult& preprocessed,
-                            uint32_t max_identifier_length = 0) {
+                            uint32_t max_identifier_length = 0,
+                            std::vector<const glsl::LexedFile*> lexed = {}) {
   glsl::PreprocessOptions options;
   options.max_identifier_length = max_identifier_length;
+  options.lexed = std::move(lexed);
   // The site defines HW_PERFORMANCE for every pass.
   if (shadertoy) options.predefined = {"HW_PERFORMANCE=1"};
   preprocessed = glsl::Preprocess(files, options);
@@ -27,15 +30,26 @@ void Append(DiagnosticList& to, const DiagnosticList& from) {
 FrontEndResult RunFrontEnd(const SourceFile& file, const SourceFile* common,
                            const DetectedKind& kind, SourceManager& sources,
                            const FrontEndOptions& options) {
+  return RunFrontEnd(file, glsl::Lex(file), common, kind, sources, options);
+}
+
+FrontEndResult RunFrontEnd(const SourceFile& file, glsl::LexedFile lexed, const SourceFile* common,
+                           const DetectedKind& kind, SourceManager& sources,
+                           const FrontEndOptions& options) {
   FrontEndResult result;
-  result.lexed = glsl::Lex(file);
+  result.lexed = std::move(lexed);
   const bool shadertoy = kind.dialect == Dialect::kShaderToy;
   std::vector<const SourceFile*> files;
-  if (shadertoy && common != nullptr) files.push_back(common);
+  std::vector<const glsl::LexedFile*> file_tokens;
+  if (shadertoy && common != nullptr) {
+    files.push_back(common);
+    file_tokens.push_back(nullptr);
+  }
   files.push_back(&file);
+  file_tokens.push_back(&result.lexed);
   // ShaderToy code is compiled by the site as GLSL ES 3.00 behind its header.
   result.parsed = ParseUnit(files, shadertoy ? glsl::kEssl300 : 0, shadertoy, result.preprocessed,
-                            options.max_identifier_length);
+                            options.max_identifier_length, std::move(file_tokens));
   Append(result.diagnostics, result.preprocessed.diagnostics);
   Append(result.diagnostics, result.parsed.diagnostics);
 

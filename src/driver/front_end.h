@@ -39,4 +39,10 @@ FrontEndResult RunFrontEnd(const SourceFile& file, const SourceFile* common,
                            const DetectedKind& kind, SourceManager& sources,
                            const FrontEndOptions& options = {});
 
+// The same with `file` lexed by the caller (glsl::Lex(file)): a file is lexed once
+// for detection, the front end, suppressions and glslang's message mapping.
+FrontEndResult RunFrontEnd(const SourceFile& file, glsl::LexedFile lexed, const SourceFile* common,
+                           const DetectedKind& kind, SourceManager& sources,
+                           const FrontEndOptions& options = {});
+
 }  // namespace shaderport::driver

@@ -15,10 +15,14 @@ namespace {
 
 std::string InternalPartName(size_t index) { return "p" + std::to_string(index); }
 
-// A part's text as a SourceFile plus its tokens, built when first needed.
+// A part's text as a SourceFile plus its tokens: the caller's, or built when first needed.
 struct PartView {
-  std::unique_ptr<SourceFile> file;
-  glsl::LexedFile lexed;
+  const SourceFile* file = nullptr;
+  const glsl::LexedFile* tokens = nullptr;
+  std::unique_ptr<SourceFile> owned_file;
+  std::unique_ptr<glsl::LexedFile> owned_tokens;
+
+  const glsl::LexedFile& Lexed() const { return *tokens; }
 };
 
 class Mapper {
@@ -35,9 +39,16 @@ class Mapper {
     if (!view) {
       const ShaderPart& part = request_.parts[static_cast<size_t>(index)];
       view.emplace();
-      view->file = std::make_unique<SourceFile>(part.file, part.name, std::string(part.text),
-                                                part.kind == PartKind::kGenerated);
-      view->lexed = glsl::Lex(*view->file);
+      if (part.source != nullptr && part.lexed != nullptr) {
+        view->file = part.source;
+        view->tokens = part.lexed;
+      } else {
+        view->owned_file = std::make_unique<SourceFile>(
+            part.file, part.name, std::string(part.text), part.kind == PartKind::kGenerated);
+        view->owned_tokens = std::make_unique<glsl::LexedFile>(glsl::Lex(*view->owned_file));
+        view->file = view->owned_file.get();
+        view->tokens = view->owned_tokens.get();
+      }
     }
     return *view;
   }
@@ -52,7 +63,7 @@ class Mapper {
   bool UserCodeHasUnbalancedMacro() {
     for (size_t i = 0; i < request_.parts.size(); ++i) {
       if (request_.parts[i].kind != PartKind::kUser) continue;
-      if (HasUnbalancedMacroBody(View(static_cast<int>(i)).lexed)) return true;
+      if (HasUnbalancedMacroBody(View(static_cast<int>(i)).Lexed())) return true;
     }
     return false;
   }
@@ -76,13 +87,13 @@ class Mapper {
     }
     const ShaderPart& part = request_.parts[static_cast<size_t>(mapped.part)];
     const PartView& view = View(mapped.part);
-    const SourceRange on_line = LocateOnLine(*view.file, view.lexed, message.line, message.token);
+    const SourceRange on_line = LocateOnLine(*view.file, view.Lexed(), message.line, message.token);
     if (part.kind == PartKind::kUser) {
       diagnostic.range = on_line;
       // A syntax error at the very start of a pass may be the end of the Common
       // code compiled before it (a struct without its ';'): say where that is.
       if (diagnostic.rule_id == "glslang/syntax-error") {
-        const glsl::Token* first = FirstCodeToken(view.lexed);
+        const glsl::Token* first = FirstCodeToken(view.Lexed());
         if (first != nullptr && on_line.begin == first->begin) {
           if (const std::optional<SourceRange> end = UserCodeEndBefore(mapped.part, 1)) {
             diagnostic.notes.push_back(
@@ -135,14 +146,14 @@ class Mapper {
     std::vector<UserMacro> macros;
     for (int i = 0; i < index; ++i) {
       if (request_.parts[static_cast<size_t>(i)].kind != PartKind::kUser) continue;
-      CollectUserMacros(View(i).lexed, request_.parts[static_cast<size_t>(i)].file, macros);
+      CollectUserMacros(View(i).Lexed(), request_.parts[static_cast<size_t>(i)].file, macros);
     }
     if (macros.empty()) return std::nullopt;
     const PartView& view = View(index);
     line = std::clamp<uint32_t>(line, 1, view.file->LineCount());
     const uint32_t begin = view.file->LineStart(line);
     const uint32_t end = begin + static_cast<uint32_t>(view.file->LineText(line).size());
-    for (const glsl::Token& token : view.lexed.tokens) {
+    for (const glsl::Token& token : view.Lexed().tokens) {
       if (token.begin < begin || token.begin >= end) continue;
       if (token.kind != glsl::TokenKind::kIdentifier) continue;
       for (const UserMacro& macro : macros) {
@@ -169,18 +180,18 @@ class Mapper {
   // reports a missing or extra ';' only when it reads the next token.
   std::optional<SourceRange> UserCodeEndBefore(int index, uint32_t line) {
     const PartView& generated = View(index);
-    const uint32_t first_code_line = FirstCodeLine(*generated.file, generated.lexed);
+    const uint32_t first_code_line = FirstCodeLine(*generated.file, generated.Lexed());
     if (first_code_line != 0 && line > first_code_line) return std::nullopt;
     for (int i = index - 1; i >= 0; --i) {
       const ShaderPart& part = request_.parts[static_cast<size_t>(i)];
       if (part.kind == PartKind::kUser) {
         const PartView& user = View(i);
-        const glsl::Token* last = LastCodeToken(user.lexed);
+        const glsl::Token* last = LastCodeToken(user.Lexed());
         if (last == nullptr) return std::nullopt;
         return SourceRange{part.file, last->begin, last->end};
       }
       const PartView& between = View(i);
-      if (FirstCodeLine(*between.file, between.lexed) != 0) return std::nullopt;
+      if (FirstCodeLine(*between.file, between.Lexed()) != 0) return std::nullopt;
     }
     return std::nullopt;
   }
@@ -200,7 +211,7 @@ class Mapper {
       OpenConstructs open;
       for (size_t i = 0; i < request_.parts.size(); ++i) {
         if (request_.parts[i].kind == PartKind::kUser) {
-          open += CountOpenConstructs(View(static_cast<int>(i)).lexed);
+          open += CountOpenConstructs(View(static_cast<int>(i)).Lexed());
         }
       }
       unfinished_ = open.Any();
@@ -213,7 +224,7 @@ class Mapper {
     for (int i = last_user_; i >= 0; --i) {
       if (request_.parts[static_cast<size_t>(i)].kind != PartKind::kUser) continue;
       const PartView& view = View(i);
-      const auto& tokens = view.lexed.tokens;
+      const auto& tokens = view.Lexed().tokens;
       for (size_t k = 0; k + 1 < tokens.size(); ++k) {
         if (tokens[k].kind == glsl::TokenKind::kIdentifier &&
             tokens[k].text == request_.entry_point &&

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "diag/diagnostic.h"
+#include "glsl/lex/lexer.h"
 #include "source/source_file.h"
 #include "validate/glslang_log.h"
 #include "validate/glslang_runner.h"
@@ -21,6 +22,10 @@ struct ShaderPart {
   std::string_view text;  // for user parts: the whole text of `file`, so offsets match it
   FileId file = kNoFile;  // user parts: the original file; generated: a synthetic file or none
   PartKind kind = PartKind::kUser;
+  // A user part's file and tokens when the caller has them already (optional):
+  // mapping glslang's messages then neither copies nor re-lexes the text.
+  const SourceFile* source = nullptr;
+  const glsl::LexedFile* lexed = nullptr;
 };
 
 struct ValidationRequest {

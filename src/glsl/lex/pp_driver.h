@@ -22,7 +22,8 @@ struct ConditionalGroup {
 class PpDriver {
  public:
   PpDriver(PreprocessResult& result, const PreprocessOptions& options);
-  void RunFile(const SourceFile& file, size_t index);
+  // `lexed`: the file's tokens when the caller has them, else null.
+  void RunFile(const SourceFile& file, size_t index, const LexedFile* lexed);
   void Finish(const SourceFile* last_file);
 
  private:

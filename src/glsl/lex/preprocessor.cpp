@@ -13,7 +13,7 @@ PpDriver::PpDriver(PreprocessResult& result, const PreprocessOptions& options)
   AddPredefinedMacros(state_, options.predefined);
 }
 
-void PpDriver::RunFile(const SourceFile& file, size_t index) {
+void PpDriver::RunFile(const SourceFile& file, size_t index, const LexedFile* given) {
   file_ = &file;
   file_index_ = index;
   state_.file = &file;
@@ -21,7 +21,9 @@ void PpDriver::RunFile(const SourceFile& file, size_t index) {
   state_.source_number = static_cast<int>(index);
   const size_t first_region = state_.result.inactive_regions.size();
   const size_t outer_groups = groups_.size();
-  const LexedFile lexed = Lex(file);
+  LexedFile own;
+  if (given == nullptr) own = Lex(file);
+  const LexedFile& lexed = given != nullptr ? *given : own;
   const std::vector<Token>& tokens = lexed.tokens;
   size_t i = 0;
   while (tokens[i].kind != TokenKind::kEndOfFile) {
@@ -119,7 +121,9 @@ PreprocessResult Preprocess(std::span<const SourceFile* const> files,
                             const PreprocessOptions& options) {
   PreprocessResult result;
   PpDriver driver(result, options);
-  for (size_t i = 0; i < files.size(); ++i) driver.RunFile(*files[i], i);
+  for (size_t i = 0; i < files.size(); ++i) {
+    driver.RunFile(*files[i], i, i < options.lexed.size() ? options.lexed[i] : nullptr);
+  }
   driver.Finish(files.empty() ? nullptr : files.back());
   return result;
 }

@@ -16,6 +16,8 @@
 
 namespace shaderport::glsl {
 
+struct LexedFile;  // glsl/lex/lexer.h
+
 inline constexpr uint32_t kNoMacroUse = UINT32_MAX;
 
 // A token after preprocessing.
@@ -68,6 +70,9 @@ struct PreprocessOptions {
   // Longest identifier accepted; 0 picks WebGL's limit from the #version: 256 for GLSL ES 1.00,
   // 1024 for 3.00. WebGL 2 contexts allow 1024 for ES 1.00 shaders too: pass 1024 there.
   uint32_t max_identifier_length = 0;
+  // Tokens of `files` the caller lexed already, by position (missing or null:
+  // lexed here). They must be Lex() of the same file and outlive the call.
+  std::vector<const LexedFile*> lexed;
 };
 
 struct PreprocessResult {
