@@ -8,28 +8,32 @@ namespace {
 
 using ChildFn = std::function<void(const Node&)>;
 
-void Visit(const Node* node, const ChildFn& fn) {
+// The child callbacks are templates: VisitPreorder and VisitPostorder pass plain
+// lambdas, without a std::function call per child.
+template <class Fn>
+void Visit(const Node* node, Fn& fn) {
   if (node != nullptr) fn(*node);
 }
 
-template <class T>
-void VisitAll(const std::vector<T*>& nodes, const ChildFn& fn) {
+template <class T, class Fn>
+void VisitAll(const std::vector<T*>& nodes, Fn& fn) {
   for (const Node* node : nodes) Visit(node, fn);
 }
 
-void VisitArray(const std::vector<ArrayDimension>& array, const ChildFn& fn) {
+template <class Fn>
+void VisitArray(const std::vector<ArrayDimension>& array, Fn& fn) {
   for (const auto& dim : array) Visit(dim.size, fn);
 }
 
-void VisitQualifiers(const QualifierList& qualifiers, const ChildFn& fn) {
+template <class Fn>
+void VisitQualifiers(const QualifierList& qualifiers, Fn& fn) {
   for (const auto& q : qualifiers.items) {
     for (const auto& id : q.layout_ids) Visit(id.value, fn);
   }
 }
 
-}  // namespace
-
-void ForEachChild(const Node& node, const ChildFn& fn) {
+template <class Fn>
+void ForEachChildOf(const Node& node, Fn& fn) {
   switch (node.kind) {
     case NodeKind::kTranslationUnit:
       return VisitAll(node.As<TranslationUnit>()->declarations, fn);
@@ -155,6 +159,10 @@ void ForEachChild(const Node& node, const ChildFn& fn) {
   }
 }
 
+}  // namespace
+
+void ForEachChild(const Node& node, const ChildFn& fn) { ForEachChildOf(node, fn); }
+
 void VisitPreorder(const Node& start,
                    const std::function<bool(const Node& node, uint32_t depth)>& fn) {
   std::vector<std::pair<const Node*, uint32_t>> stack{{&start, 0}};
@@ -164,7 +172,8 @@ void VisitPreorder(const Node& start,
     stack.pop_back();
     if (!fn(*node, depth)) continue;
     children.clear();
-    ForEachChild(*node, [&](const Node& child) { children.push_back(&child); });
+    auto collect = [&](const Node& child) { children.push_back(&child); };
+    ForEachChildOf(*node, collect);
     for (auto it = children.rbegin(); it != children.rend(); ++it) {
       stack.emplace_back(*it, depth + 1);
     }
@@ -186,7 +195,8 @@ void VisitPostorder(const Node& start, const std::function<void(const Node& node
   std::vector<Frame> stack;
   auto push = [&](const Node* node) {
     Frame frame{node, {}, 0};
-    ForEachChild(*node, [&](const Node& child) { frame.children.push_back(&child); });
+    auto collect = [&](const Node& child) { frame.children.push_back(&child); };
+    ForEachChildOf(*node, collect);
     stack.push_back(std::move(frame));
   };
   push(&start);
