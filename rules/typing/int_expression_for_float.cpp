@@ -38,6 +38,12 @@ class IntExpressionForFloatRule final : public rule::Rule {
         diagnostic.notes.push_back({{}, site.not_fixable_note});
       } else {
         diagnostic.fixes = typing::WrapInCall(context, *site.expr, required);
+        if (diagnostic.fixes.empty()) {
+          diagnostic.notes.push_back(
+              {{},
+               "not fixed automatically: the expression is not written as one piece in this "
+               "file (it is part of a macro's expansion, or in another file)"});
+        }
       }
       context.Report(std::move(diagnostic));
     }

@@ -130,6 +130,17 @@ SourceRange WrittenRange(const rule::RuleContext& context, const glsl::Node& nod
       first.spelling.file == last.spelling.file && first.spelling.begin <= last.spelling.end) {
     return {first.spelling.file, first.spelling.begin, last.spelling.end};
   }
+  // Part of a macro's expansion (a macro argument beside body tokens): its range is
+  // the whole macro use, and an edit there would leave the node itself unchanged,
+  // so the rule would ask again every round. Only a node that is a whole use maps.
+  const bool expanded = first.expansion != first.spelling || last.expansion != last.spelling;
+  if (expanded) {
+    const bool starts_use =
+        node.first_token == 0 || tokens[node.first_token - 1].expansion != first.expansion;
+    const bool ends_use = node.last_token + 1 >= tokens.size() ||
+                          tokens[node.last_token + 1].expansion != last.expansion;
+    if (!starts_use || !ends_use) return {};
+  }
   return node.range;
 }
 
