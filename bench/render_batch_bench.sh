@@ -9,9 +9,11 @@
 #         first render pays its start-up (it is one of N samples, not the p50).
 #   warm: the same batch again on the cache the cold run filled.
 #   p50 is the median of the parent's per-render time (request sent to reply
-#   decoded, SHADERPORT_RENDER_DEBUG lines); wall is the whole `check` process.
+#   decoded, SHADERPORT_RENDER_DEBUG lines); first is the batch's first render (with
+#   the worker's start-up); wall is the whole `check` process.
 # Env: N (variants, default 40), PASSES (report size, default 500, 0 skips),
-#      SHARED (default ../shared next to the repo).
+#      SHARED (default ../shared next to the repo), MODES (default
+#      "worker fresh-process"; a binary from before the worker has only the latter).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build}
@@ -20,6 +22,7 @@ binary=$build/shaderport
 count=${N:-40}
 passes=${PASSES:-500}
 shared=${SHARED:-$root/../shared}
+read -r -a modes <<<"${MODES:-worker fresh-process}"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
@@ -36,24 +39,30 @@ p50() {  # median of the per-render times in a debug log
     sort -n | awk '{v[NR] = $1} END {if (NR == 0) print "n/a"; else printf "%.1f", v[int((NR + 1) / 2)]}'
 }
 
-batch() {  # MODE_ENV CACHE: prints "p50 wall_ms"
+first() {  # the first render of a debug log: it includes the worker's start-up
+  grep -o 'shaderport render worker: status [0-9]* in [0-9.]*' "$1" | head -1 |
+    awk '{print $NF} END {if (NR == 0) print "n/a"}'
+}
+
+batch() {  # MODE_ENV CACHE: prints "first_ms p50_ms wall_ms"
   local start end
   start=$(now_ms)
   env $1 XDG_CACHE_HOME="$2" SHADERPORT_RENDER_DEBUG=1 "$binary" check --no-cache --render \
     --render-size 64 -j1 "$work/variants" >/dev/null 2>"$work/log" || true
   end=$(now_ms)
-  echo "$(p50 "$work/log") $((end - start))"
+  echo "$(first "$work/log") $(p50 "$work/log") $((end - start))"
 }
 
 echo "check --render -j1 over $count variants of corpus/ao/template.glsl at 64x64 (ms)"
-printf '%-16s %10s %10s %10s %10s\n' mode cold_p50 cold_wall warm_p50 warm_wall
-for mode in worker fresh-process; do
+printf '%-16s %10s %10s %10s %10s %10s\n' mode cold_first cold_p50 cold_wall warm_p50 warm_wall
+for mode in "${modes[@]}"; do
   setting=SHADERPORT_RENDER_WORKER_RENDERS=200
   [[ $mode == fresh-process ]] && setting=SHADERPORT_RENDER_WORKER_RENDERS=1
   cache=$work/cache-$mode
-  read -r cold_p50 cold_wall < <(batch "$setting" "$cache")
-  read -r warm_p50 warm_wall < <(batch "$setting" "$cache")
-  printf '%-16s %10s %10s %10s %10s\n' "$mode" "$cold_p50" "$cold_wall" "$warm_p50" "$warm_wall"
+  read -r cold_first cold_p50 cold_wall < <(batch "$setting" "$cache")
+  read -r _ warm_p50 warm_wall < <(batch "$setting" "$cache")
+  printf '%-16s %10s %10s %10s %10s %10s\n' "$mode" "$cold_first" "$cold_p50" "$cold_wall" \
+    "$warm_p50" "$warm_wall"
 done
 
 ((passes > 0)) || exit 0
@@ -78,7 +87,7 @@ print("report over %d Image passes" % written)
 PY
 echo "(ms, default -j = $(nproc) cores; cold: empty Mesa cache, warm: the same run again)"
 printf '%-16s %10s %10s\n' mode cold_wall warm_wall
-for mode in worker fresh-process; do
+for mode in "${modes[@]}"; do
   setting=SHADERPORT_RENDER_WORKER_RENDERS=200
   [[ $mode == fresh-process ]] && setting=SHADERPORT_RENDER_WORKER_RENDERS=1
   cache=$work/report-cache-$mode

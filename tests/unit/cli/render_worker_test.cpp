@@ -107,6 +107,9 @@ TEST_F(RenderWorkerCliTest, TimeoutAndOutOfMemoryCostOnlyTheirOwnRender) {
     EXPECT_TRUE(LinesAbout(check.out, good).empty()) << good << "\n" << check.Printed();
   }
   EXPECT_LT(check.seconds, 30) << "the limits, not the bound, end the bad renders";
+  // Not hermetic: the worker uses (and fills) Mesa's cache under XDG_CACHE_HOME.
+  const fs::path mesa_cache = project_.Root() / "cache/shaderport/mesa";
+  EXPECT_TRUE(fs::is_directory(mesa_cache) && !fs::is_empty(mesa_cache));
 }
 
 // The same pictures (embedded PNGs) and findings from one worker for all, a fresh

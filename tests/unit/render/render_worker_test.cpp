@@ -139,6 +139,10 @@ TEST(RenderWorker, AWorkerKilledWhileIdleIsReplaced) {
   ASSERT_EQ(worker.Render(request, kTimeout).status, RenderStatus::kOk);
   const pid_t first = worker.Pid();
   ASSERT_EQ(kill(first, SIGKILL), 0);
+  // Dead before the next request (as after an OOM kill), not dying during it; left
+  // for the worker handle to reap.
+  siginfo_t info{};
+  ASSERT_EQ(waitid(P_PID, static_cast<id_t>(first), &info, WEXITED | WNOWAIT), 0);
   const RenderOutcome next = worker.Render(request, kTimeout);
   EXPECT_EQ(next.status, RenderStatus::kOk) << next.message;
   EXPECT_NE(worker.Pid(), first);
