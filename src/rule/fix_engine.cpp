@@ -63,6 +63,7 @@ std::string StopMessage(int max_rounds, int cycle_rounds,
                         const std::vector<std::vector<std::string>>& rules_by_round,
                         const DiagnosticList& found, const std::vector<size_t>& applied) {
   std::vector<std::string> ids;
+  ids.reserve(applied.size());
   for (size_t i : applied) ids.push_back(found[i].rule_id);
   if (cycle_rounds > 0) {
     // Only the rounds inside the cycle: the rules that keep undoing each other.

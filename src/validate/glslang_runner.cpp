@@ -1,5 +1,6 @@
 #include "validate/glslang_runner.h"
 
+#include <fcntl.h>
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 #include <poll.h>
@@ -133,7 +134,8 @@ GlslangRun RunGlslangIsolated(std::span<const GlslangPart> parts, Stage stage, i
                               bool link, int timeout_ms) {
   GlslangRun failed;
   int fds[2];
-  if (pipe(fds) != 0) return failed;
+  // CLOEXEC: a render worker forked later must not hold the write end open.
+  if (pipe2(fds, O_CLOEXEC) != 0) return failed;
   const pid_t pid = fork();
   if (pid < 0) {
     close(fds[0]);

@@ -90,11 +90,11 @@ Punct MatchPunctuator(char c0, char c1, char c2, int* length) {
   *length = 0;
   const auto first = static_cast<unsigned char>(c0);
   if (first >= kByFirstChar.size()) return Punct::kNone;
-  const char chars[3] = {c0, c1, c2};
+  const std::array<char, 3> chars = {c0, c1, c2};
   const Candidates& candidates = kByFirstChar[first];
   for (uint8_t k = 0; k < candidates.count; ++k) {
     const auto& [spelling, punct] = kPunctuators[candidates.index[k]];
-    if (std::string_view(chars, spelling.size()) == spelling) {
+    if (std::string_view(chars.data(), spelling.size()) == spelling) {
       *length = static_cast<int>(spelling.size());
       return punct;
     }
