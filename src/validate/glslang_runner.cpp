@@ -134,7 +134,8 @@ GlslangRun RunGlslangIsolated(std::span<const GlslangPart> parts, Stage stage, i
                               bool link, int timeout_ms) {
   GlslangRun failed;
   int fds[2];
-  // CLOEXEC: a render worker forked later must not hold the write end open.
+  // CLOEXEC: no program started later inherits it (forked render workers close
+  // every inherited descriptor themselves).
   if (pipe2(fds, O_CLOEXEC) != 0) return failed;
   const pid_t pid = fork();
   if (pid < 0) {
