@@ -31,12 +31,15 @@ inline constexpr bool kSanitizedBuild = false;
 inline constexpr bool kSanitizedBuild = false;
 #endif
 
+// The wall-time bound of a hostile input: sanitizer builds run about ten times slower.
+inline constexpr std::chrono::seconds kBoundedRunTimeLimit{kSanitizedBuild ? 150 : 20};
+
 struct BoundedRunOptions {
-  std::filesystem::path directory;            // working directory
-  std::chrono::seconds time_limit{20};        // then the process group is SIGKILLed
-  rlim_t address_space = rlim_t{2} << 30;     // RLIMIT_AS; ignored in ASan builds
-  bool unprivileged = false;                  // as uid/gid 65534 via setpriv when root
-  std::vector<std::string> environment = {};  // extra NAME=VALUE
+  std::filesystem::path directory;                         // working directory
+  std::chrono::seconds time_limit = kBoundedRunTimeLimit;  // then the group is SIGKILLed
+  rlim_t address_space = rlim_t{2} << 30;                  // RLIMIT_AS; ignored in ASan builds
+  bool unprivileged = false;                               // as uid/gid 65534 via setpriv when root
+  std::vector<std::string> environment = {};               // extra NAME=VALUE
 };
 
 struct BoundedRun {

@@ -18,7 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kMaxSeconds = 20;
+constexpr double kMaxSeconds = static_cast<double>(kBoundedRunTimeLimit.count());
 
 // A ShaderToy pass whose third line has an undeclared name at column 13.
 std::string PassWithErrorOnLine3(const std::string& newline) {
