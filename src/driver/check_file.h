@@ -28,8 +28,8 @@ struct FileJob {
 FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceManager& sources);
 
 // Smoke-renders a file CheckFile found free of errors and adds the picture's
-// findings. Renders fork a child process, so callers run this from a single
-// thread (see RunCheck).
+// findings. Thread-safe: each calling thread draws with its own render worker
+// (render/isolated_render.h).
 void RenderCheckedFile(const FileJob& job, const CheckOptions& options, SourceManager& sources,
                        FileReport& report);
 

@@ -109,14 +109,13 @@ CheckRun RunCheck(const CheckOptions& options) {
   for (const auto& [vertex, fragment] : FindPrograms(jobs, options)) {
     LinkProgram(jobs[vertex], jobs[fragment], options, sources, reports[vertex], reports[fragment]);
   }
-  // Each render forks a child. Forking while other threads run can leave the child
-  // waiting forever on a lock one of them held, so renders run here, one at a
-  // time, once the parallel part has ended (llvmpipe draws on several threads itself).
+  // Each job thread draws with its own render worker (render/isolated_render.h),
+  // so N jobs keep N workers busy; findings land in the file's own slot.
   if (options.render) {
-    for (size_t i = 0; i < jobs.size(); ++i) {
+    ParallelFor(jobs.size(), options.jobs, [&](size_t i) {
       RenderCheckedFile(jobs[i], options, sources, reports[i]);
       file_done();
-    }
+    });
   }
 
   for (size_t i = 0; i < jobs.size(); ++i) {

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <mutex>
 #include <optional>
 
 #include "render/outcome_wire.h"
@@ -111,6 +112,11 @@ RenderWorker::~RenderWorker() {
 }
 
 bool RenderWorker::Start(std::string& error) {
+  // Job threads start workers concurrently: one at a time, so that a worker's end of
+  // the socket pair is in exactly two processes (a concurrent fork would copy it into
+  // another worker, where it stays open until that worker's KeepOnlySocket).
+  static std::mutex fork_mutex;
+  const std::lock_guard lock(fork_mutex);
   int fds[2];
   if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, fds) != 0) {
     error = std::string("socketpair failed: ") + std::strerror(errno);

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <map>
-#include <optional>
 
 #include "driver/check_file.h"
 #include "driver/check_pipeline.h"
@@ -154,7 +153,8 @@ HtmlReportRun BuildHtmlReport(const HtmlReportOptions& options) {
   }
 
   std::vector<ReportEntry> entries(jobs.size());
-  std::vector<std::optional<PortResult>> ported(jobs.size());
+  // Each job thread ports, then draws with its own render worker
+  // (render/isolated_render.h): one thread's glslang overlaps another's render.
   ParallelFor(jobs.size(), options.jobs, [&](size_t i) {
     const Job& job = jobs[i];
     ReportEntry& entry = entries[i];
@@ -172,14 +172,9 @@ HtmlReportRun BuildHtmlReport(const HtmlReportOptions& options) {
       entry.render.detail = "not rendered";
       return;
     }
-    ported[i] = PortEntry(job, sources, entry);
+    const PortResult ported = PortEntry(job, sources, entry);
+    RenderEntry(job, ported, options, sources, entry);
   });
-  // Each render forks a child. Forking while other threads run can leave the child
-  // waiting forever on a lock one of them held, so renders run here, one at a
-  // time, once the parallel part has ended (llvmpipe draws on several threads itself).
-  for (size_t i = 0; i < jobs.size(); ++i) {
-    if (ported[i]) RenderEntry(jobs[i], *ported[i], options, sources, entries[i]);
-  }
   run.report.entries = std::move(entries);
   return run;
 }

@@ -112,26 +112,43 @@ TEST_F(RenderWorkerCliTest, TimeoutAndOutOfMemoryCostOnlyTheirOwnRender) {
   EXPECT_TRUE(fs::is_directory(mesa_cache) && !fs::is_empty(mesa_cache));
 }
 
-// The same pictures (embedded PNGs) and findings from one worker for all, a fresh
-// process per render, and two jobs with a worker each.
-TEST_F(RenderWorkerCliTest, ReportIsByteIdenticalWhateverTheWorkerReuseAndJobs) {
+// Shaders whose pictures and findings differ: ShaderToy passes, a flat colour
+// (render/single-colour), one that does not compile (not drawn), WebGL1 (drawn
+// through its port) and WebGL2.
+void WriteMixedShaders(TempProject& project) {
   for (int k = 0; k < 6; ++k) {
-    project_.Write("shaders/s" + std::to_string(k) + ".glsl", GoodShader(k));
+    project.Write("shaders/s" + std::to_string(k) + ".glsl", GoodShader(k));
   }
-  project_.Write("shaders/flat.glsl",
-                 "void mainImage(out vec4 c, in vec2 p) { c = vec4(0.25, 0.5, 0.75, 1.0); }\n");
-  project_.Write("shaders/broken.glsl", "void mainImage(out vec4 c, in vec2 p) { c = 1.0; }\n");
-  struct Variant {
-    std::string name;
-    std::string jobs;
-    std::string worker_renders;
-  };
-  const std::vector<Variant> variants = {{"worker-j1", "1", "200"},
-                                         {"fresh-j1", "1", "1"},
-                                         {"worker-j2", "2", "200"},
-                                         {"short-lived-j2", "2", "2"}};
+  project.Write("shaders/flat.glsl",
+                "void mainImage(out vec4 c, in vec2 p) { c = vec4(0.25, 0.5, 0.75, 1.0); }\n");
+  project.Write("shaders/broken.glsl", "void mainImage(out vec4 c, in vec2 p) { c = 1.0; }\n");
+  project.Write("shaders/webgl1.frag",
+                "precision mediump float;\nuniform vec2 resolution;\n"
+                "void main() { gl_FragColor = vec4(gl_FragCoord.xy / resolution, 0.3, 1.0); }\n");
+  project.Write("shaders/webgl2.frag",
+                "#version 300 es\nprecision highp float;\nout vec4 color;\n"
+                "void main() { color = vec4(fract(gl_FragCoord.xy / 8.0), 0.6, 1.0); }\n");
+}
+
+struct Variant {
+  std::string name;
+  std::string jobs;
+  std::string worker_renders;
+};
+
+// One worker for all, a fresh process per render, two jobs with a worker each, and
+// two jobs whose workers are replaced every second render.
+const std::vector<Variant> kVariants = {{"worker-j1", "1", "200"},
+                                        {"fresh-j1", "1", "1"},
+                                        {"worker-j2", "2", "200"},
+                                        {"short-lived-j2", "2", "2"}};
+
+// The same pictures (embedded PNGs) and findings whatever the worker reuse and -j:
+// each job thread draws its own files with its own worker.
+TEST_F(RenderWorkerCliTest, ReportIsByteIdenticalWhateverTheWorkerReuseAndJobs) {
+  WriteMixedShaders(project_);
   std::string first;
-  for (const Variant& variant : variants) {
+  for (const Variant& variant : kVariants) {
     BoundedRunOptions options;
     options.time_limit = std::chrono::seconds(60);
     options.environment.push_back("SHADERPORT_RENDER_WORKER_RENDERS=" + variant.worker_renders);
@@ -144,7 +161,29 @@ TEST_F(RenderWorkerCliTest, ReportIsByteIdenticalWhateverTheWorkerReuseAndJobs) 
     if (first.empty()) {
       first = text;
     } else {
-      EXPECT_TRUE(text == first) << variant.name << " differs from " << variants[0].name;
+      EXPECT_TRUE(text == first) << variant.name << " differs from " << kVariants[0].name;
+    }
+  }
+}
+
+// `check --render` findings, in JSON, the same way.
+TEST_F(RenderWorkerCliTest, CheckRenderJsonIsByteIdenticalWhateverTheWorkerReuseAndJobs) {
+  WriteMixedShaders(project_);
+  std::string first;
+  for (const Variant& variant : kVariants) {
+    BoundedRunOptions options;
+    options.time_limit = std::chrono::seconds(60);
+    options.environment.push_back("SHADERPORT_RENDER_WORKER_RENDERS=" + variant.worker_renders);
+    const BoundedRun check =
+        Run({"check", "--no-cache", "--render", "--format", "json", "-j", variant.jobs, "shaders"},
+            options);
+    ASSERT_FALSE(check.timed_out) << variant.name;
+    EXPECT_EQ(check.exit_code, 1) << variant.name << "\n" << check.Printed();  // broken.glsl
+    ASSERT_NE(check.out.find("render/single-colour"), std::string::npos) << check.Printed();
+    if (first.empty()) {
+      first = check.out;
+    } else {
+      EXPECT_EQ(check.out, first) << variant.name << " differs from " << kVariants[0].name;
     }
   }
 }
