@@ -88,8 +88,8 @@ target_args() {
 }
 
 {
-  echo "| target | wall s | CPU s | executions | corpus files | crashes |"
-  echo "|---|---:|---:|---:|---:|---:|"
+  echo "| target | wall s | CPU s | executions | corpus files | crashes | slow inputs |"
+  echo "|---|---:|---:|---:|---:|---:|---:|"
 } >"$summary.rows"
 total_cpu=0
 total_crashes=0
@@ -99,7 +99,12 @@ for target in "${target_list[@]}"; do
   mkdir -p "$corpus" "$artifacts"
   log="$work/$target/log.txt"
   read -r -a args <<<"$(target_args "$target")"
-  crashes_before=$(find "$artifacts" -type f | wc -l)
+  # Failures are crash-, leak-, timeout- and oom- files; slow-unit- files are inputs
+  # that took over 10 s (-report_slow_units), worth a look but not failures.
+  failures() { find "$artifacts" -type f \( -name 'crash-*' -o -name 'leak-*' -o -name 'timeout-*' -o -name 'oom-*' \) | wc -l; }
+  slow_units() { find "$artifacts" -type f -name 'slow-unit-*' | wc -l; }
+  crashes_before=$(failures)
+  slow_before=$(slow_units)
   echo "== $target: ${seconds}s x $jobs workers"
   start=$(date +%s)
   TIMEFORMAT='%U %S'
@@ -113,10 +118,11 @@ for target in "${target_list[@]}"; do
   # Fork mode's status lines start with "#<executions>:".
   executions=$(grep -oE '^#[0-9]+' "$log" | tail -1 | tr -d '#')
   corpus_files=$(find "$corpus" -type f | wc -l)
-  crashes=$(( $(find "$artifacts" -type f | wc -l) - crashes_before ))
+  crashes=$(( $(failures) - crashes_before ))
+  slow=$(( $(slow_units) - slow_before ))
   total_cpu=$((total_cpu + cpu_seconds))
   total_crashes=$((total_crashes + crashes))
-  echo "| $target | $wall | $cpu_seconds | ${executions:-?} | $corpus_files | $crashes |" >>"$summary.rows"
+  echo "| $target | $wall | $cpu_seconds | ${executions:-?} | $corpus_files | $crashes | $slow |" >>"$summary.rows"
 done
 
 {
@@ -124,7 +130,7 @@ done
   echo
   echo "Commit $(git -C "$root" rev-parse --short HEAD), ${seconds} s per target with" \
        "$jobs workers (libFuzzer -fork), work directory \`$work\`."
-  echo "Total: $total_cpu CPU seconds, $total_crashes new crash/timeout/OOM artifacts" \
+  echo "Total: $total_cpu CPU seconds, $total_crashes new crash/leak/timeout/OOM artifacts" \
        "(in \`<work>/<target>/artifacts/\`; replay one with \`<target> FILE\`)."
   echo
   cat "$summary.rows"
