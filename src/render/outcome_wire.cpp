@@ -2,41 +2,17 @@
 
 #include <cstring>
 
+#include "render/wire_codec.h"
+
 namespace shaderport::render {
 namespace {
 
+using wire::Put;
+using wire::PutString;
+using wire::Reader;
+
 constexpr uint32_t kMagic = 0x53505232;  // "SPR2"
 constexpr uint32_t kMaxStrings = 1024;
-
-template <typename T>
-void Put(std::string& out, const T& value) {
-  out.append(reinterpret_cast<const char*>(&value), sizeof(T));
-}
-
-void PutString(std::string& out, const std::string& text) {
-  Put(out, static_cast<uint32_t>(text.size()));
-  out += text;
-}
-
-struct Reader {
-  const std::string& bytes;
-  size_t at = 0;
-
-  template <typename T>
-  bool Get(T& value) {
-    if (bytes.size() - at < sizeof(T)) return false;
-    std::memcpy(&value, bytes.data() + at, sizeof(T));
-    at += sizeof(T);
-    return true;
-  }
-  bool GetString(std::string& text) {
-    uint32_t size = 0;
-    if (!Get(size) || bytes.size() - at < size) return false;
-    text.assign(bytes, at, size);
-    at += size;
-    return true;
-  }
-};
 
 }  // namespace
 

@@ -2,21 +2,17 @@
 
 #include <cstring>
 
+#include "render/wire_codec.h"
+
 namespace shaderport::render {
 namespace {
 
+using wire::Put;
+using wire::PutString;
+using wire::Reader;
+
 constexpr uint32_t kMagic = 0x53505131;  // "SPQ1"
 constexpr uint32_t kMaxBufferPasses = 64;
-
-template <typename T>
-void Put(std::string& out, const T& value) {
-  out.append(reinterpret_cast<const char*>(&value), sizeof(T));
-}
-
-void PutString(std::string& out, const std::string& text) {
-  Put(out, static_cast<uint64_t>(text.size()));
-  out += text;
-}
 
 void PutInts(std::string& out, const std::array<int, 4>& values) {
   for (const int value : values) Put(out, static_cast<int32_t>(value));
@@ -26,45 +22,21 @@ void PutFloats(std::string& out, const std::array<float, 4>& values) {
   for (const float value : values) Put(out, value);
 }
 
-struct Reader {
-  const std::string& bytes;
-  size_t at = 0;
+bool GetInts(Reader& in, std::array<int, 4>& values) {
+  for (int& value : values) {
+    int32_t v = 0;
+    if (!in.Get(v)) return false;
+    value = v;
+  }
+  return true;
+}
 
-  template <typename T>
-  bool Get(T& value) {
-    if (bytes.size() - at < sizeof(T)) return false;
-    std::memcpy(&value, bytes.data() + at, sizeof(T));
-    at += sizeof(T);
-    return true;
+bool GetFloats(Reader& in, std::array<float, 4>& values) {
+  for (float& value : values) {
+    if (!in.Get(value)) return false;
   }
-  bool GetString(std::string& text) {
-    uint64_t size = 0;
-    if (!Get(size) || bytes.size() - at < size) return false;
-    text.assign(bytes, at, size);
-    at += size;
-    return true;
-  }
-  bool GetBool(bool& value) {
-    uint8_t byte = 0;
-    if (!Get(byte) || byte > 1) return false;
-    value = byte == 1;
-    return true;
-  }
-  bool GetInts(std::array<int, 4>& values) {
-    for (int& value : values) {
-      int32_t v = 0;
-      if (!Get(v)) return false;
-      value = v;
-    }
-    return true;
-  }
-  bool GetFloats(std::array<float, 4>& values) {
-    for (float& value : values) {
-      if (!Get(value)) return false;
-    }
-    return true;
-  }
-};
+  return true;
+}
 
 void PutChannel(std::string& out, const ChannelInput& channel) {
   Put(out, static_cast<uint8_t>(channel.kind));
@@ -132,7 +104,7 @@ std::optional<RenderRequest> DecodeRequest(const std::string& bytes) {
       !in.GetString(request.fragment_source) || !in.GetBool(request.fullscreen_vertex) ||
       !in.Get(request.width) || !in.Get(request.height) || !in.Get(frames) ||
       !in.Get(request.inputs.time) || !in.Get(frame) || !in.Get(request.inputs.frame_rate) ||
-      !in.GetFloats(request.inputs.mouse) || !in.GetFloats(request.inputs.date)) {
+      !GetFloats(in, request.inputs.mouse) || !GetFloats(in, request.inputs.date)) {
     return std::nullopt;
   }
   request.frames = frames;
@@ -146,12 +118,12 @@ std::optional<RenderRequest> DecodeRequest(const std::string& bytes) {
   for (BufferPass& pass : request.buffer_passes) {
     int32_t buffer = 0;
     if (!in.Get(buffer) || !in.GetString(pass.fragment_source) ||
-        !in.GetInts(pass.channel_buffers)) {
+        !GetInts(in, pass.channel_buffers)) {
       return std::nullopt;
     }
     pass.buffer = buffer;
   }
-  if (!in.GetInts(request.channel_buffers) || !in.GetString(request.probe_output) ||
+  if (!GetInts(in, request.channel_buffers) || !in.GetString(request.probe_output) ||
       in.at != bytes.size()) {
     return std::nullopt;
   }
