@@ -115,31 +115,41 @@ void CollectUserMacros(const glsl::LexedFile& lexed, FileId file, std::vector<Us
   }
 }
 
-const glsl::Token* LastCodeToken(const glsl::LexedFile& lexed) {
-  const Token* last = nullptr;
+namespace {
+
+// Calls `fn` on each token outside preprocessor directives, in order, until it
+// returns false.
+template <class Fn>
+void ForEachCodeToken(const glsl::LexedFile& lexed, Fn fn) {
   for (size_t i = 0; i < lexed.tokens.size(); ++i) {
     const Token& token = lexed.tokens[i];
-    if (token.kind == TokenKind::kEndOfFile) break;
+    if (token.kind == TokenKind::kEndOfFile) return;
     if (token.kind == TokenKind::kHash && token.at_line_start) {
       i = EndOfDirective(lexed, i) - 1;
       continue;
     }
-    last = &token;
+    if (!fn(token)) return;
   }
+}
+
+}  // namespace
+
+const glsl::Token* LastCodeToken(const glsl::LexedFile& lexed) {
+  const Token* last = nullptr;
+  ForEachCodeToken(lexed, [&](const Token& token) {
+    last = &token;
+    return true;
+  });
   return last;
 }
 
 const glsl::Token* FirstCodeToken(const glsl::LexedFile& lexed) {
-  for (size_t i = 0; i < lexed.tokens.size(); ++i) {
-    const Token& token = lexed.tokens[i];
-    if (token.kind == TokenKind::kEndOfFile) break;
-    if (token.kind == TokenKind::kHash && token.at_line_start) {
-      i = EndOfDirective(lexed, i) - 1;
-      continue;
-    }
-    return &token;
-  }
-  return nullptr;
+  const Token* first = nullptr;
+  ForEachCodeToken(lexed, [&](const Token& token) {
+    first = &token;
+    return false;
+  });
+  return first;
 }
 
 uint32_t FirstCodeLine(const SourceFile& file, const glsl::LexedFile& lexed) {
