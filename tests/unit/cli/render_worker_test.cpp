@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "bounded_run.h"
+#include "render_process_support.h"
 #include "temp_project.h"
 
 namespace shaderport::testing {
@@ -24,26 +25,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using std::chrono::steady_clock;
-
-// Heavy work in a loop llvmpipe caps at 65,535 iterations per pixel: minutes of
-// drawing at 128x128, so only the timeout ends it.
-constexpr const char* kSpinningShader =
-    "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
-    "  vec4 x = vec4(fragCoord, 0.0, 1.0);\n"
-    "  for (int i = 0; i < 1000000; i++) {\n"
-    "    x = sin(x * 1.0001 + cos(x.yzwx)) + exp(-abs(x.zwxy)) * tan(x.wxyz);\n"
-    "    x = sin(x * 1.0001 + cos(x.yzwx)) + exp(-abs(x.zwxy)) * tan(x.wxyz);\n"
-    "  }\n"
-    "  fragColor = x;\n"
-    "}\n";
-
-// An 800 MB local array: Mesa's compiler and llvmpipe allocate far past 1 GiB.
-constexpr const char* kHugeArrayShader =
-    "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
-    "  float a[200000000];\n"
-    "  for (int i = 0; i < 200000000; i++) a[i] = float(i);\n"
-    "  fragColor = vec4(a[int(fragCoord.x)], 0.0, 0.0, 1.0);\n"
-    "}\n";
 
 // A picture with no finding, different for each `k`.
 std::string GoodShader(int k) {
@@ -188,67 +169,19 @@ TEST_F(RenderWorkerCliTest, CheckRenderJsonIsByteIdenticalWhateverTheWorkerReuse
   }
 }
 
-// Pids of live (not zombie) processes whose environment holds `marker`.
-std::set<pid_t> ProcessesWithMarker(const std::string& marker) {
-  std::set<pid_t> found;
-  for (const auto& entry : fs::directory_iterator("/proc")) {
-    const std::string name = entry.path().filename().string();
-    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
-    const std::string environ = ReadFile(entry.path() / "environ");
-    if (environ.find(marker) == std::string::npos) continue;
-    const std::string stat = ReadFile(entry.path() / "stat");
-    const size_t close = stat.rfind(')');
-    if (close != std::string::npos && close + 2 < stat.size() && stat[close + 2] == 'Z') continue;
-    found.insert(static_cast<pid_t>(std::stoi(name)));
-  }
-  return found;
-}
-
 // A worker between renders of a parallel check's batch dies with the parent too.
 TEST_F(RenderWorkerCliTest, NoWorkerOfACheckBatchOutlivesAKilledParent) {
   project_.Write("a_good.glsl", GoodShader(0));
   project_.Write("b_spin.glsl", kSpinningShader);
-  const std::string cache = "XDG_CACHE_HOME=" + (project_.Root() / "cache").string();
-  const std::string marker = "SHADERPORT_WORKER_TEST_MARKER=" + std::to_string(::getpid()) + "-" +
-                             std::to_string(steady_clock::now().time_since_epoch().count());
   // A batch: the worker serves the first file and is drawing the second when the
   // parent dies.
-  std::vector<std::string> words = {
-      SHADERPORT_BINARY,  "check", "--no-cache", "--render", "--render-size", "128",
-      "--render-timeout", "60",    "-j",         "2",        "a_good.glsl",   "b_spin.glsl"};
-  std::vector<char*> argv;
-  for (std::string& word : words) argv.push_back(word.data());
-  argv.push_back(nullptr);
-  const std::string directory = project_.Root().string();
-  const pid_t parent = ::fork();
-  ASSERT_GE(parent, 0);
-  if (parent == 0) {
-    if (::chdir(directory.c_str()) != 0) ::_exit(126);
-    ::putenv(const_cast<char*>(marker.c_str()));
-    ::putenv(const_cast<char*>(cache.c_str()));
-    ::execv(argv[0], argv.data());
-    ::_exit(127);
-  }
-  // Wait until the worker exists (two processes carry the marker).
-  const auto deadline = steady_clock::now() + std::chrono::seconds(30);
-  std::set<pid_t> processes;
-  while (steady_clock::now() < deadline) {
-    processes = ProcessesWithMarker(marker);
-    if (processes.size() >= 2) break;
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  EXPECT_GE(processes.size(), 2u) << "the worker never started";
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));  // it is drawing b_spin now
-  ::kill(parent, SIGKILL);
-  int status = 0;
-  ::waitpid(parent, &status, 0);
-  const auto gone_by = steady_clock::now() + std::chrono::seconds(5);
-  while (!ProcessesWithMarker(marker).empty() && steady_clock::now() < gone_by) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  const std::set<pid_t> survivors = ProcessesWithMarker(marker);
-  EXPECT_TRUE(survivors.empty()) << "a render worker survived its parent";
-  for (const pid_t pid : survivors) ::kill(pid, SIGKILL);
+  const KilledParentRun run =
+      RunAndKillParent({"check", "--no-cache", "--render", "--render-size", "128",
+                        "--render-timeout", "60", "-j", "2", "a_good.glsl", "b_spin.glsl"},
+                       project_.Root(), {"XDG_CACHE_HOME=" + (project_.Root() / "cache").string()},
+                       std::chrono::milliseconds(500));
+  EXPECT_TRUE(run.render_started) << "the worker never started";
+  EXPECT_TRUE(run.survivors.empty()) << "a render worker survived its parent";
 }
 
 }  // namespace
