@@ -15,8 +15,8 @@ struct InputText {
   std::string rule_id;              // why it was rejected ("input/too-large", ...)
   std::string message;
   // The text began with a UTF-8 byte order mark, which `text` no longer holds:
-  // compilers (clang, glslang) and browsers (TextDecoder) skip it, and `fix`
-  // writes it back.
+  // clang and the browser's TextDecoder (fetch().text()) skip it, glslang alone
+  // rejects it; `fix` writes it back.
   bool byte_order_mark = false;
 };
 

@@ -81,8 +81,8 @@ TEST_F(HostileInputTest, NulByteInCodeOrCommentIsBinary) {
   Expect({{"check", "code.frag"}}, "[input/binary]");
 }
 
-// Skipped as clang, glslang and a browser's TextDecoder do; glslang used to see the
-// mark inside the site's composed text ("'\xef': unexpected token" at 1:1).
+// Skipped as clang and a browser's TextDecoder do; glslang, given the mark, stops
+// at 1:1 ("'\xef': unexpected token"), as it used to here.
 TEST_F(HostileInputTest, Utf8ByteOrderMarkIsSkippedAndKeptByFix) {
   project_.Write("bom.frag", "\xef\xbb\xbf" + PassWithErrorOnLine3("\n"));
   Expect(CheckFixPort("bom.frag"), "bom.frag:3:13: error: 'undefined_name'");
