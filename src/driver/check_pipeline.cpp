@@ -11,6 +11,7 @@
 #include "driver/config/config_lookup.h"
 #include "driver/input_files.h"
 #include "driver/parallel_for.h"
+#include "render/isolated_render.h"
 
 namespace shaderport::driver {
 namespace {
@@ -112,7 +113,7 @@ CheckRun RunCheck(const CheckOptions& options) {
   // Each job thread draws with its own render worker (render/isolated_render.h),
   // so N jobs keep N workers busy; findings land in the file's own slot.
   if (options.render) {
-    ParallelFor(jobs.size(), options.jobs, [&](size_t i) {
+    ParallelFor(jobs.size(), render::ParallelRenderJobs(options.jobs), [&](size_t i) {
       RenderCheckedFile(jobs[i], options, sources, reports[i]);
       file_done();
     });

@@ -90,4 +90,13 @@ RenderOutcome RenderInFreshProcess(const RenderRequest& request, const RenderOpt
   return worker.Render(request, options.timeout);
 }
 
+unsigned ParallelRenderJobs(unsigned requested) {
+#ifdef SHADERPORT_ASAN
+  (void)requested;
+  return 1;
+#else
+  return requested;
+#endif
+}
+
 }  // namespace shaderport::render

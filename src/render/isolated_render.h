@@ -21,4 +21,10 @@ RenderOutcome RenderInFreshProcess(const RenderRequest& request, const RenderOpt
 // $XDG_CACHE_HOME/shaderport/mesa, or ~/.cache/shaderport/mesa.
 std::string DefaultMesaCacheDir();
 
+// How many threads may render at once for `requested` jobs (0: one per core). Each
+// thread forks its own worker while other threads run: glibc's fork resets malloc's
+// locks in the child, AddressSanitizer's allocator does not (a worker forked while
+// another thread allocates could hang), so sanitized builds draw on one thread.
+unsigned ParallelRenderJobs(unsigned requested);
+
 }  // namespace shaderport::render

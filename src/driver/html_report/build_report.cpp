@@ -11,6 +11,7 @@
 #include "driver/parallel_for.h"
 #include "driver/port/port_file.h"
 #include "driver/render_check/render_file.h"
+#include "render/isolated_render.h"
 #include "report/text_format.h"
 
 namespace shaderport::driver {
@@ -155,7 +156,7 @@ HtmlReportRun BuildHtmlReport(const HtmlReportOptions& options) {
   std::vector<ReportEntry> entries(jobs.size());
   // Each job thread ports, then draws with its own render worker
   // (render/isolated_render.h): one thread's glslang overlaps another's render.
-  ParallelFor(jobs.size(), options.jobs, [&](size_t i) {
+  ParallelFor(jobs.size(), render::ParallelRenderJobs(options.jobs), [&](size_t i) {
     const Job& job = jobs[i];
     ReportEntry& entry = entries[i];
     const FileReport& report = *job.checked;
