@@ -59,6 +59,8 @@ fi
 if [[ ! -f $build/CMakeCache.txt ]]; then
   (cd "$root" && cmake --preset fuzz >/dev/null)
 fi
+# The commit the targets are built from (HEAD may move while the campaign runs).
+commit=$(git -C "$root" rev-parse --short HEAD)
 cmake --build "$build" -j "$jobs" --target "${target_list[@]}"
 
 dict="$root/tests/fuzz/glsl.dict"
@@ -128,7 +130,7 @@ done
 {
   echo "# Fuzzing campaign $(date -u +%Y-%m-%dT%H:%MZ)"
   echo
-  echo "Commit $(git -C "$root" rev-parse --short HEAD), ${seconds} s per target with" \
+  echo "Commit $commit, ${seconds} s per target with" \
        "$jobs workers (libFuzzer -fork), work directory \`$work\`."
   echo "Total: $total_cpu CPU seconds, $total_crashes new crash/leak/timeout/OOM artifacts" \
        "(in \`<work>/<target>/artifacts/\`; replay one with \`<target> FILE\`)."
