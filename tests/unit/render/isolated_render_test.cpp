@@ -15,13 +15,8 @@ namespace {
 
 using testing::FastOptions;
 using testing::FragmentRequest;
+using testing::kGradient;
 using testing::ShaderToyText;
-
-const char* const kGradient =
-    "void mainImage(out vec4 c, in vec2 p) {\n"
-    "  vec2 uv = p / iResolution.xy;\n"
-    "  c = vec4(uv, 0.5 + 0.5 * sin(iTime), 1.0);\n"
-    "}\n";
 
 bool HasRule(const DiagnosticList& list, const std::string& rule) {
   for (const auto& d : list) {

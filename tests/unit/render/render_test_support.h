@@ -9,6 +9,13 @@
 
 namespace shaderport::render::testing {
 
+// A ShaderToy pass whose picture varies over x, y and iTime.
+inline constexpr const char* kGradient =
+    "void mainImage(out vec4 c, in vec2 p) {\n"
+    "  vec2 uv = p / iResolution.xy;\n"
+    "  c = vec4(uv, 0.5 + 0.5 * sin(iTime), 1.0);\n"
+    "}\n";
+
 // The site's header and main() around a mainImage body, as the driver composes it.
 inline std::string ShaderToyText(const std::string& body) {
   return "#version 300 es\n"

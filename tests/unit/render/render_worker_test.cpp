@@ -23,13 +23,8 @@ namespace {
 
 using testing::FastOptions;
 using testing::FragmentRequest;
+using testing::kGradient;
 using testing::ShaderToyText;
-
-const char* const kGradient =
-    "void mainImage(out vec4 c, in vec2 p) {\n"
-    "  vec2 uv = p / iResolution.xy;\n"
-    "  c = vec4(uv, 0.5 + 0.5 * sin(iTime), 1.0);\n"
-    "}\n";
 
 const char* const kRings =
     "void mainImage(out vec4 c, in vec2 p) {\n"
