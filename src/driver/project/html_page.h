@@ -1,0 +1,97 @@
+// One self-contained WebGL2 page per ShaderToy project: the ported passes run as the
+// site runs them (Buffers A-D, Cube A, Image), with the site's uniforms, keyboard,
+// mouse, pause and restart, and a compile-error panel on the user's lines. Nothing
+// is loaded from anywhere: the runtime and the shaders are inline. See
+// docs/html-pages.md for the page's behaviour and its test hooks.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "driver/dialect.h"
+
+namespace shaderport::driver::project {
+
+// What a channel reads; procedural stand-ins replace the site's media files.
+enum class PageInputKind {
+  kNone,        // unbound: samples (0,0,0,1), iChannelResolution 0
+  kBuffer,      // Buffer A-D (`buffer` = 0..3)
+  kCubeBuffer,  // the Cube A pass's cube map
+  kTexture,     // procedural 2D 256x256 (render's), overridable by a file
+  kCubemap,     // procedural cube, 64x64 faces
+  kVolume,      // procedural 3D 32x32x32
+  kKeyboard,    // 256x3 R8 key state
+  kVideo,       // procedural 2D, as render draws it
+  kAudio,       // procedural 2D, as render draws it
+};
+
+struct PageInput {
+  int channel = 0;  // 0..3
+  PageInputKind kind = PageInputKind::kNone;
+  int buffer = -1;                // kBuffer: 0..3
+  std::string filter = "mipmap";  // nearest | linear | mipmap
+  std::string wrap = "repeat";    // clamp | repeat
+  bool vflip = true;              // applies to user-given images only
+};
+
+// Lines [ported_first, ported_first + count) of a pass's shader came from the
+// user's text `origin` (a tab name: "Common", "Buffer A"), starting at user_first.
+// Lines outside every run were generated (header, main()).
+struct PageLineRun {
+  uint32_t ported_first = 1;  // 1-based
+  uint32_t count = 0;
+  std::string origin;
+  uint32_t user_first = 1;  // 1-based
+};
+
+struct PagePass {
+  std::string tab_name;  // "Image", "Buffer A", "Cube A", "Sound"
+  ShaderToyPass kind = ShaderToyPass::kImage;
+  int output_buffer = -1;  // Buffer passes: 0..3
+  std::vector<PageInput> inputs;
+  // The complete WebGL2 fragment shader (#version 300 es, uniforms, main()); empty
+  // when the port failed, and then `port_errors` says why.
+  std::string fragment_shader;
+  std::vector<PageLineRun> lines;
+  std::string port_errors;  // shown in the error panel as text
+};
+
+struct PageProject {
+  std::string name;
+  std::string id;
+  std::string author;
+  std::vector<PagePass> passes;  // any order; Common and Sound passes are not drawn
+};
+
+struct PageOptions {
+  uint32_t cube_size = 256;  // Cube A faces (the site draws 1024x1024)
+};
+
+// The page as one HTML document. Every string of the project is embedded as JSON
+// text with `<`, `>`, `&`, U+2028 and U+2029 escaped, so no name or code can end
+// the script element or be parsed as markup.
+std::string BuildProjectPage(const PageProject& project, const PageOptions& options = {});
+
+// The JSON the page embeds (exposed for tests).
+std::string PageProjectJson(const PageProject& project, const PageOptions& options = {});
+
+// Line runs for a ported text composed as header | Common | pass code | epilogue:
+// `header_lines` generated lines, then `common_lines` lines of Common (0: none),
+// then the pass's own lines.
+std::vector<PageLineRun> ComposedLineRuns(uint32_t header_lines, uint32_t common_lines,
+                                          uint32_t pass_lines, const std::string& pass_tab);
+
+// The page's runtime files (src/driver/project/page/), compiled in by
+// cmake/embed_text_files.cmake so that an installed binary reads no data files.
+namespace page_files {
+struct EmbeddedTextFile {
+  std::string_view name;  // "runtime.js", "page.css"
+  std::string_view text;
+};
+std::span<const EmbeddedTextFile> EmbeddedPageFiles();
+}  // namespace page_files
+
+}  // namespace shaderport::driver::project

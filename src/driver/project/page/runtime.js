@@ -1,0 +1,719 @@
+// The project page's runtime (docs/html-pages.md): runs the ported passes of one
+// ShaderToy project as shadertoy.com does. Embedded into the page by html_page.cpp;
+// must never contain the text that ends a script element.
+"use strict";
+(function () {
+  const $ = (id) => document.getElementById(id);
+  const stateEl = $("sp-state");
+  const logEl = $("sp-log");
+  const canvas = $("sp-canvas");
+
+  // Problems go to the DOM as well as the console, so that a test reading the DOM
+  // (chromium --dump-dom) sees them.
+  function note(kind, text) {
+    logEl.appendChild(document.createTextNode(kind + ": " + text + "\n"));
+  }
+  const consoleError = console.error.bind(console);
+  console.error = function (...args) {
+    note("console.error", args.map(String).join(" "));
+    consoleError(...args);
+  };
+  window.addEventListener("error", (e) => note("exception", String(e.message)));
+  window.addEventListener("unhandledrejection", (e) => note("rejection", String(e.reason)));
+  function setState(state) { stateEl.setAttribute("data-state", state); }
+
+  const project = JSON.parse($("sp-project").textContent);
+  $("sp-title").textContent = project.name || "ShaderToy project";
+
+  // #time=T&frames=N&size=WxH&frame=F&paused (the query string works too).
+  const params = new URLSearchParams(location.search.slice(1));
+  for (const [k, v] of new URLSearchParams(location.hash.slice(1))) params.set(k, v);
+  const fixedTime = params.has("time") || params.has("frames");
+  const startTime = params.has("time") ? Number(params.get("time")) : (fixedTime ? 1.0 : 0.0);
+  const startFrame = params.has("frame") ? (Number(params.get("frame")) | 0) : 0;
+  const frameLimit = params.has("frames") ? Math.max(1, Number(params.get("frames")) | 0) : 0;
+  let fixedSize = null;
+  if (params.has("size")) {
+    const m = /^(\d+)x(\d+)$/.exec(params.get("size"));
+    if (m) fixedSize = [Math.max(1, Math.min(4096, +m[1])), Math.max(1, Math.min(4096, +m[2]))];
+  }
+
+  const gl = canvas.getContext("webgl2", {alpha: false, antialias: false, depth: false,
+    stencil: false, premultipliedAlpha: false, preserveDrawingBuffer: true});
+  if (!gl) {
+    $("sp-fallback").hidden = false;
+    canvas.hidden = true;
+    note("error", "no WebGL2 context");
+    setState("no-webgl2");
+    return;
+  }
+
+  // --- Render targets: RGBA32F as the site, 16F when 32F cannot be filtered --------------
+  const hasFloat = !!gl.getExtension("EXT_color_buffer_float");
+  const hasFloatLinear = !!gl.getExtension("OES_texture_float_linear");
+  const hasHalf = hasFloat || !!gl.getExtension("EXT_color_buffer_half_float");
+  const formats = [];
+  if (hasFloat && hasFloatLinear) formats.push({internal: gl.RGBA32F, name: "RGBA32F"});
+  if (hasHalf) formats.push({internal: gl.RGBA16F, name: "RGBA16F"});
+  formats.push({internal: gl.RGBA8, name: "RGBA8"});
+  let format = formats[0];
+
+  function levelsFor(w, h, mips) {
+    return mips ? Math.floor(Math.log2(Math.max(w, h))) + 1 : 1;
+  }
+  function attachTarget(target, face, tex) {
+    const fbo = gl.createFramebuffer();
+    gl.bindFramebuffer(gl.FRAMEBUFFER, fbo);
+    gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, face, tex, 0);
+    const ok = gl.checkFramebufferStatus(gl.FRAMEBUFFER) === gl.FRAMEBUFFER_COMPLETE;
+    gl.clearColor(0, 0, 0, 0);  // the site starts buffers at zero
+    gl.clear(gl.COLOR_BUFFER_BIT);
+    return ok ? fbo : null;
+  }
+  // A 2D target (faces 0) or a cube target (faces 6) with a framebuffer per face.
+  function makeTarget(w, h, cube, mips) {
+    const target = cube ? gl.TEXTURE_CUBE_MAP : gl.TEXTURE_2D;
+    const tex = gl.createTexture();
+    gl.bindTexture(target, tex);
+    gl.texStorage2D(target, levelsFor(w, h, mips), format.internal, w, h);
+    gl.texParameteri(target, gl.TEXTURE_MIN_FILTER, gl.LINEAR);
+    gl.bindTexture(target, null);
+    const fbos = [];
+    for (let f = 0; f < (cube ? 6 : 1); ++f) {
+      const fbo = attachTarget(target, cube ? gl.TEXTURE_CUBE_MAP_POSITIVE_X + f : gl.TEXTURE_2D, tex);
+      if (!fbo) return null;
+      fbos.push(fbo);
+    }
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    return {tex: tex, fbos: fbos, target: target, w: w, h: h, mips: mips};
+  }
+  function freeTarget(t) {
+    if (!t) return;
+    for (const fbo of t.fbos) gl.deleteFramebuffer(fbo);
+    gl.deleteTexture(t.tex);
+  }
+  // Falls back to the next format when a framebuffer is incomplete.
+  function makeTargetWithFallback(w, h, cube, mips) {
+    for (;;) {
+      const t = makeTarget(w, h, cube, mips);
+      if (t) return t;
+      const next = formats.indexOf(format) + 1;
+      if (next >= formats.length) throw new Error("no colour-renderable buffer format");
+      note("warning", format.name + " targets are incomplete; using " + formats[next].name);
+      format = formats[next];
+    }
+  }
+
+  // --- Procedural textures: byte for byte src/render/procedural_textures.cpp -----------
+  function hash(x, y, z) {
+    let h = Math.imul(x, 0x8da6b343) ^ Math.imul(y, 0xd8163841) ^ Math.imul(z, 0xcb1ab31f);
+    h ^= h >>> 13;
+    h = Math.imul(h, 0x5bd1e995);
+    h ^= h >>> 15;
+    return h >>> 0;
+  }
+  function procedural2D(size) {
+    const t = new Uint8Array(size * size * 4);
+    for (let y = 0; y < size; ++y) {
+      for (let x = 0; x < size; ++x) {
+        const i = (y * size + x) * 4;
+        const check = ((Math.floor(x / 32) + Math.floor(y / 32)) % 2) === 0;
+        t[i] = Math.floor(x * 255 / (size - 1)) & 255;
+        t[i + 1] = Math.floor(y * 255 / (size - 1)) & 255;
+        t[i + 2] = check ? 200 : 56;
+        t[i + 3] = hash(x, y, 0) & 255;
+      }
+    }
+    return t;
+  }
+  const kTint = [[230, 80, 80], [80, 200, 200], [110, 200, 90], [180, 90, 190], [90, 110, 230],
+                 [220, 200, 80]];
+  function proceduralCubeFace(face, size) {
+    const t = new Uint8Array(size * size * 4);
+    for (let y = 0; y < size; ++y) {
+      for (let x = 0; x < size; ++x) {
+        const i = (y * size + x) * 4;
+        const shade = 160 + Math.floor((x + y) * 95 / (2 * (size - 1)));
+        for (let c = 0; c < 3; ++c) t[i + c] = Math.floor(kTint[face % 6][c] * shade / 255) & 255;
+        t[i + 3] = 255;
+      }
+    }
+    return t;
+  }
+  function procedural3D(size) {
+    const t = new Uint8Array(size * size * size * 4);
+    for (let z = 0; z < size; ++z) {
+      for (let y = 0; y < size; ++y) {
+        for (let x = 0; x < size; ++x) {
+          const h = hash(x, y, z + 1);
+          const i = ((z * size + y) * size + x) * 4;
+          t[i] = h & 255;
+          t[i + 1] = (h >>> 8) & 255;
+          t[i + 2] = (h >>> 16) & 255;
+          t[i + 3] = (h >>> 24) & 255;
+        }
+      }
+    }
+    return t;
+  }
+  // Created on first use and shared by every channel of their kind; mipmapped as
+  // render makes them (src/render/channel_textures.cpp). Rows are in GL order.
+  const procedural = {};
+  function proceduralTexture(kind) {
+    if (procedural[kind]) return procedural[kind];
+    const tex = gl.createTexture();
+    gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
+    gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, false);
+    let entry;
+    if (kind === "cubemap") {
+      gl.bindTexture(gl.TEXTURE_CUBE_MAP, tex);
+      for (let f = 0; f < 6; ++f) {
+        gl.texImage2D(gl.TEXTURE_CUBE_MAP_POSITIVE_X + f, 0, gl.RGBA8, 64, 64, 0, gl.RGBA,
+                      gl.UNSIGNED_BYTE, proceduralCubeFace(f, 64));
+      }
+      gl.generateMipmap(gl.TEXTURE_CUBE_MAP);
+      entry = {tex: tex, target: gl.TEXTURE_CUBE_MAP, size: [64, 64, 1]};
+    } else if (kind === "volume") {
+      gl.bindTexture(gl.TEXTURE_3D, tex);
+      gl.texImage3D(gl.TEXTURE_3D, 0, gl.RGBA8, 32, 32, 32, 0, gl.RGBA, gl.UNSIGNED_BYTE,
+                    procedural3D(32));
+      gl.generateMipmap(gl.TEXTURE_3D);
+      entry = {tex: tex, target: gl.TEXTURE_3D, size: [32, 32, 32]};
+    } else {
+      gl.bindTexture(gl.TEXTURE_2D, tex);
+      gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, 256, 256, 0, gl.RGBA, gl.UNSIGNED_BYTE,
+                    procedural2D(256));
+      gl.generateMipmap(gl.TEXTURE_2D);
+      entry = {tex: tex, target: gl.TEXTURE_2D, size: [256, 256, 1]};
+    }
+    procedural[kind] = entry;
+    return entry;
+  }
+
+  // --- Keyboard: 256x3 R8, row 0 down, row 1 pressed this frame, row 2 toggled --------
+  const keys = new Uint8Array(256 * 3);
+  let keysDirty = false;
+  let keyboard = null;
+  function keyboardTexture() {
+    if (!keyboard) {
+      const tex = gl.createTexture();
+      gl.bindTexture(gl.TEXTURE_2D, tex);
+      gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
+      gl.texImage2D(gl.TEXTURE_2D, 0, gl.R8, 256, 3, 0, gl.RED, gl.UNSIGNED_BYTE, keys);
+      keyboard = {tex: tex, target: gl.TEXTURE_2D, size: [256, 3, 1]};
+    }
+    if (keysDirty) {
+      gl.bindTexture(gl.TEXTURE_2D, keyboard.tex);
+      gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
+      gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, 256, 3, gl.RED, gl.UNSIGNED_BYTE, keys);
+      keysDirty = false;
+    }
+    return keyboard;
+  }
+
+  // --- Sampler objects, one per (filter, wrap) ------------------------------------------
+  const samplers = {};
+  function samplerFor(filter, wrap) {
+    const key = filter + "/" + wrap;
+    if (samplers[key]) return samplers[key];
+    const s = gl.createSampler();
+    const min = filter === "nearest" ? gl.NEAREST
+      : filter === "linear" ? gl.LINEAR : gl.LINEAR_MIPMAP_LINEAR;
+    gl.samplerParameteri(s, gl.TEXTURE_MIN_FILTER, min);
+    gl.samplerParameteri(s, gl.TEXTURE_MAG_FILTER, filter === "nearest" ? gl.NEAREST : gl.LINEAR);
+    const w = wrap === "clamp" ? gl.CLAMP_TO_EDGE : gl.REPEAT;
+    gl.samplerParameteri(s, gl.TEXTURE_WRAP_S, w);
+    gl.samplerParameteri(s, gl.TEXTURE_WRAP_T, w);
+    gl.samplerParameteri(s, gl.TEXTURE_WRAP_R, w);
+    samplers[key] = s;
+    return s;
+  }
+
+  // --- Passes ----------------------------------------------------------------------------
+  const kVertex = "#version 300 es\n" +
+    "void main() {\n" +
+    "  vec2 p = vec2(float((gl_VertexID & 1) << 2) - 1.0, float((gl_VertexID & 2) << 1) - 1.0);\n" +
+    "  gl_Position = vec4(p, 0.0, 1.0);\n" +
+    "}\n";
+  const passes = project.passes.filter((p) => p.kind !== "common");
+  const buffers = passes.filter((p) => p.kind === "buffer" && p.output >= 0 && p.output <= 3)
+    .sort((a, b) => a.output - b.output);
+  const cubePass = passes.find((p) => p.kind === "cube") || null;
+  const imagePass = passes.find((p) => p.kind === "image") || null;
+  const drawn = buffers.concat(cubePass ? [cubePass] : [], imagePass ? [imagePass] : []);
+  const cubeSize = Math.max(1, Math.min(2048, project.cubeSize | 0 || 256));
+
+  // Which buffers exist and which need mipmaps (an input reads them with "mipmap").
+  const bufferUsed = [false, false, false, false];
+  const bufferMips = [false, false, false, false];
+  let cubeMips = false;
+  for (const p of buffers) bufferUsed[p.output] = true;
+  for (const p of drawn) {
+    for (const input of p.inputs) {
+      if (input.kind === "buffer" && input.buffer >= 0 && input.buffer <= 3) {
+        bufferUsed[input.buffer] = true;
+        if (input.filter === "mipmap") bufferMips[input.buffer] = true;
+      }
+      if (input.kind === "cubebuffer" && input.filter === "mipmap") cubeMips = true;
+    }
+  }
+
+  // Maps a line of a pass's ported text to "Tab:line" in the user's code.
+  function userLine(pass, line) {
+    for (const [first, count, origin, userFirst] of pass.lines) {
+      if (line >= first && line < first + count) return origin + ":" + (userFirst + line - first);
+    }
+    return pass.name + " (generated line " + line + ")";
+  }
+  const errorsEl = $("sp-errors");
+  function showError(pass, where, lines, log) {
+    errorsEl.hidden = false;
+    const head = document.createElement("div");
+    head.className = "sp-error-where";
+    head.textContent = pass.name + ": " + where;
+    const pre = document.createElement("pre");
+    pre.textContent = lines.join("\n");
+    errorsEl.appendChild(head);
+    errorsEl.appendChild(pre);
+    if (log) {
+      const details = document.createElement("details");
+      const summary = document.createElement("summary");
+      summary.textContent = "the browser's log";
+      const raw = document.createElement("pre");
+      raw.textContent = log;
+      details.appendChild(summary);
+      details.appendChild(raw);
+      errorsEl.appendChild(details);
+    }
+    note("compile-error", pass.name + ": " + lines.join(" | "));
+  }
+  // ANGLE's messages read "ERROR: 0:LINE: text"; each is put on the user's line.
+  function mappedLog(pass, log) {
+    const out = [];
+    for (const line of log.split("\n")) {
+      const m = /^(ERROR|WARNING): \d+:(\d+): (.*)$/.exec(line.trim());
+      if (m) out.push(userLine(pass, +m[2]) + ": " + m[1].toLowerCase() + ": " + m[3]);
+      else if (line.trim()) out.push(line.trim());
+    }
+    return out;
+  }
+
+  const vertexShader = gl.createShader(gl.VERTEX_SHADER);
+  gl.shaderSource(vertexShader, kVertex);
+  gl.compileShader(vertexShader);
+  const kUniformNames = ["iResolution", "iTime", "iTimeDelta", "iFrameRate", "iFrame",
+    "iChannelTime", "iChannelResolution", "iMouse", "iDate", "iSampleRate", "unViewport",
+    "unCorners"];
+  let failed = false;
+  for (const pass of passes) {
+    if (pass.kind !== "image" && pass.kind !== "buffer" && pass.kind !== "cube" &&
+        pass.kind !== "sound") continue;
+    if (!pass.code) {
+      failed = true;
+      showError(pass, "the port failed", (pass.portErrors || "no shader text").split("\n"), "");
+      continue;
+    }
+    const fs = gl.createShader(gl.FRAGMENT_SHADER);
+    gl.shaderSource(fs, pass.code);
+    gl.compileShader(fs);
+    if (!gl.getShaderParameter(fs, gl.COMPILE_STATUS)) {
+      failed = true;
+      const log = gl.getShaderInfoLog(fs) || "";
+      showError(pass, "does not compile", mappedLog(pass, log), log);
+      continue;
+    }
+    const program = gl.createProgram();
+    gl.attachShader(program, vertexShader);
+    gl.attachShader(program, fs);
+    gl.linkProgram(program);
+    if (!gl.getProgramParameter(program, gl.LINK_STATUS)) {
+      failed = true;
+      const log = gl.getProgramInfoLog(program) || "";
+      showError(pass, "does not link", [log], "");
+      continue;
+    }
+    pass.program = program;
+    pass.loc = {};
+    for (const name of kUniformNames) pass.loc[name] = gl.getUniformLocation(program, name);
+    gl.useProgram(program);
+    for (let c = 0; c < 4; ++c) {
+      const loc = gl.getUniformLocation(program, "iChannel" + c);
+      if (loc) gl.uniform1i(loc, c);
+    }
+  }
+  if (failed || !imagePass) {
+    if (!imagePass) note("error", "the project has no Image pass");
+    setState("error");
+    $("sp-status").textContent = failed ? "compile errors" : "no Image pass";
+    return;
+  }
+
+  // --- Buffers: ping-pong pairs, reallocated (cleared) on resize ------------------------
+  let width = 0;
+  let height = 0;
+  const pairs = [null, null, null, null];
+  const latest = [0, 0, 0, 0];
+  let cubePair = null;
+  let cubeLatest = 0;
+  function allocate(w, h) {
+    for (let k = 0; k < 4; ++k) {
+      if (pairs[k]) { freeTarget(pairs[k][0]); freeTarget(pairs[k][1]); pairs[k] = null; }
+      if (!bufferUsed[k]) continue;
+      pairs[k] = [makeTargetWithFallback(w, h, false, bufferMips[k]),
+                  makeTargetWithFallback(w, h, false, bufferMips[k])];
+      latest[k] = 0;
+    }
+    if (cubePass && !cubePair) {
+      cubePair = [makeTargetWithFallback(cubeSize, cubeSize, true, cubeMips),
+                  makeTargetWithFallback(cubeSize, cubeSize, true, cubeMips)];
+    }
+    width = w;
+    height = h;
+  }
+  function clearCube() {
+    if (!cubePair) return;
+    for (const t of cubePair) { freeTarget(t); }
+    cubePair = null;
+    cubeLatest = 0;
+  }
+  function resize() {
+    let w, h;
+    if (fixedSize) {
+      [w, h] = fixedSize;
+      canvas.classList.add("sp-fixed");
+    } else {
+      const dpr = window.devicePixelRatio || 1;
+      w = Math.max(1, Math.round(canvas.clientWidth * dpr));
+      h = Math.max(1, Math.round(canvas.clientHeight * dpr));
+    }
+    if (w === width && h === height) return false;
+    canvas.width = w;
+    canvas.height = h;
+    allocate(w, h);
+    return true;
+  }
+
+  // --- Inputs of one pass ------------------------------------------------------------------
+  // The texture (and its size) channel `input` reads now; null: nothing bound.
+  function sourceOf(input) {
+    switch (input.kind) {
+      case "buffer": {
+        const pair = pairs[input.buffer];
+        if (!pair) return null;
+        return {tex: pair[latest[input.buffer]].tex, target: gl.TEXTURE_2D, size: [width, height, 1]};
+      }
+      case "cubebuffer":
+        if (!cubePair) return null;
+        return {tex: cubePair[cubeLatest].tex, target: gl.TEXTURE_CUBE_MAP,
+                size: [cubeSize, cubeSize, 1]};
+      case "keyboard": return keyboardTexture();
+      case "texture": case "video": case "audio":
+        return input.user || proceduralTexture("2d");
+      case "cubemap": return proceduralTexture("cubemap");
+      case "volume": return proceduralTexture("volume");
+      default: return null;
+    }
+  }
+  const kTargets = [gl.TEXTURE_2D, gl.TEXTURE_CUBE_MAP, gl.TEXTURE_3D];
+  function bindInputs(pass) {
+    const res = new Float32Array(12);
+    for (let c = 0; c < 4; ++c) {
+      gl.activeTexture(gl.TEXTURE0 + c);
+      for (const t of kTargets) gl.bindTexture(t, null);
+      gl.bindSampler(c, null);
+      const input = pass.inputs.find((i) => i.channel === c);
+      const source = input ? sourceOf(input) : null;
+      if (!source) continue;
+      gl.bindTexture(source.target, source.tex);
+      gl.bindSampler(c, samplerFor(input.filter, input.wrap));
+      res.set(source.size, c * 3);
+    }
+    gl.activeTexture(gl.TEXTURE0);
+    return res;
+  }
+
+  // --- Clock, mouse and date ---------------------------------------------------------------
+  const f32 = Math.fround;
+  let time = startTime;
+  let frame = startFrame;
+  let drawnFrames = 0;
+  let delta = 1 / 60;
+  let fps = 60;
+  let paused = params.has("paused") && !frameLimit;
+  const mouse = {x: 0, y: 0, ox: 0, oy: 0, down: false, click: false};
+  function frameValues() {
+    let t = time;
+    let date = [2025, 0, 1, 43200];
+    if (fixedTime) {
+      // As render computes it, in float: time + (1/60) * frame index.
+      t = f32(f32(startTime) + f32(f32(1 / 60) * (frame - startFrame)));
+    } else {
+      const d = new Date();
+      date = [d.getFullYear(), d.getMonth(), d.getDate(),
+              d.getHours() * 3600 + d.getMinutes() * 60 + d.getSeconds() + d.getMilliseconds() / 1000];
+    }
+    const m = [mouse.x, mouse.y, mouse.down ? mouse.ox : -mouse.ox, mouse.click ? mouse.oy : -mouse.oy];
+    return {time: t, delta: fixedTime ? 1 / 60 : delta, fps: fixedTime ? 60 : fps, frame: frame,
+            mouse: m, date: date};
+  }
+  function setUniforms(pass, v, w, h, res) {
+    const L = pass.loc;
+    if (L.iResolution) gl.uniform3f(L.iResolution, w, h, 1);
+    if (L.iTime) gl.uniform1f(L.iTime, v.time);
+    if (L.iTimeDelta) gl.uniform1f(L.iTimeDelta, v.delta);
+    if (L.iFrameRate) gl.uniform1f(L.iFrameRate, v.fps);
+    if (L.iFrame) gl.uniform1i(L.iFrame, v.frame);
+    if (L.iChannelTime) gl.uniform1fv(L.iChannelTime, [v.time, v.time, v.time, v.time]);
+    if (L.iChannelResolution) gl.uniform3fv(L.iChannelResolution, res);
+    if (L.iMouse) gl.uniform4fv(L.iMouse, v.mouse);
+    if (L.iDate) gl.uniform4fv(L.iDate, v.date);
+    if (L.iSampleRate) gl.uniform1f(L.iSampleRate, 44100);
+  }
+  // The corners of cube face f as the site's cube main() mixes them (bottom-left,
+  // bottom-right, top-right, top-left of the face in GL's cube-map layout), then the
+  // eye at the origin.
+  const kFaceCorners = [
+    [[1, 1, 1], [1, 1, -1], [1, -1, -1], [1, -1, 1]],
+    [[-1, 1, -1], [-1, 1, 1], [-1, -1, 1], [-1, -1, -1]],
+    [[-1, 1, -1], [1, 1, -1], [1, 1, 1], [-1, 1, 1]],
+    [[-1, -1, 1], [1, -1, 1], [1, -1, -1], [-1, -1, -1]],
+    [[-1, 1, 1], [1, 1, 1], [1, -1, 1], [-1, -1, 1]],
+    [[1, 1, -1], [-1, 1, -1], [-1, -1, -1], [1, -1, -1]],
+  ];
+
+  // --- One frame: Buffers A-D, Cube A, Image ---------------------------------------------
+  const vao = gl.createVertexArray();
+  function drawFrame() {
+    const v = frameValues();
+    gl.bindVertexArray(vao);
+    gl.disable(gl.BLEND);
+    gl.disable(gl.DEPTH_TEST);
+    for (const pass of buffers) {
+      const k = pass.output;
+      const write = 1 - latest[k];
+      const target = pairs[k][write];
+      gl.bindFramebuffer(gl.FRAMEBUFFER, target.fbos[0]);
+      gl.viewport(0, 0, width, height);
+      gl.useProgram(pass.program);
+      setUniforms(pass, v, width, height, bindInputs(pass));
+      gl.drawArrays(gl.TRIANGLES, 0, 3);
+      latest[k] = write;
+      if (target.mips) {
+        gl.bindTexture(gl.TEXTURE_2D, target.tex);
+        gl.generateMipmap(gl.TEXTURE_2D);
+        gl.bindTexture(gl.TEXTURE_2D, null);
+      }
+    }
+    if (cubePass) {
+      const write = 1 - cubeLatest;
+      const target = cubePair[write];
+      gl.useProgram(cubePass.program);
+      const res = bindInputs(cubePass);
+      gl.viewport(0, 0, cubeSize, cubeSize);
+      for (let f = 0; f < 6; ++f) {
+        gl.bindFramebuffer(gl.FRAMEBUFFER, target.fbos[f]);
+        setUniforms(cubePass, v, cubeSize, cubeSize, res);
+        if (cubePass.loc.unViewport) gl.uniform4f(cubePass.loc.unViewport, 0, 0, cubeSize, cubeSize);
+        if (cubePass.loc.unCorners) gl.uniform3fv(cubePass.loc.unCorners, kFaceCorners[f].flat().concat([0, 0, 0]));
+        gl.drawArrays(gl.TRIANGLES, 0, 3);
+      }
+      cubeLatest = write;
+      if (target.mips) {
+        gl.bindTexture(gl.TEXTURE_CUBE_MAP, target.tex);
+        gl.generateMipmap(gl.TEXTURE_CUBE_MAP);
+        gl.bindTexture(gl.TEXTURE_CUBE_MAP, null);
+      }
+    }
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    gl.viewport(0, 0, width, height);
+    gl.useProgram(imagePass.program);
+    setUniforms(imagePass, v, width, height, bindInputs(imagePass));
+    gl.drawArrays(gl.TRIANGLES, 0, 3);
+    // Keypresses and the click flag last one frame, as on the site.
+    if (keys.subarray(256, 512).some((b) => b !== 0)) { keys.fill(0, 256, 512); keysDirty = true; }
+    mouse.click = false;
+    frame += 1;
+    drawnFrames += 1;
+  }
+  const reportedErrors = new Set();
+  function checkGlErrors() {
+    for (let e = gl.getError(); e !== gl.NO_ERROR; e = gl.getError()) {
+      if (e === gl.CONTEXT_LOST_WEBGL) break;
+      if (!reportedErrors.has(e)) note("gl-error", "0x" + e.toString(16) + " by frame " + frame);
+      reportedErrors.add(e);
+    }
+  }
+
+  // The last frame's pixels, top row first, as base64 RGBA8 (for tests).
+  function publishPixels() {
+    const px = new Uint8Array(width * height * 4);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, px);
+    const rows = new Uint8Array(px.length);
+    const stride = width * 4;
+    for (let y = 0; y < height; ++y) rows.set(px.subarray((height - 1 - y) * stride, (height - y) * stride), y * stride);
+    let s = "";
+    for (let i = 0; i < rows.length; i += 0x8000) s += String.fromCharCode.apply(null, rows.subarray(i, i + 0x8000));
+    const out = $("sp-pixels");
+    out.setAttribute("data-width", String(width));
+    out.setAttribute("data-height", String(height));
+    out.textContent = btoa(s);
+  }
+
+  // --- Controls ------------------------------------------------------------------------------
+  const pauseButton = $("sp-pause");
+  function setPaused(p) {
+    paused = p;
+    pauseButton.textContent = paused ? "Resume" : "Pause";
+  }
+  function restart() {
+    time = fixedTime ? startTime : 0;
+    frame = startFrame;
+    width = height = 0;
+    clearCube();
+    resize();
+    if (paused) drawFrame();
+  }
+  pauseButton.addEventListener("click", () => setPaused(!paused));
+  $("sp-restart").addEventListener("click", restart);
+  setPaused(paused);
+  // Keys go to the shader while the canvas has focus (click it); elsewhere space pauses.
+  document.addEventListener("keydown", (e) => {
+    if (document.activeElement !== canvas) {
+      if (e.code === "Space" && !(e.target instanceof HTMLButtonElement)) {
+        e.preventDefault();
+        setPaused(!paused);
+      }
+      return;
+    }
+    const k = e.keyCode & 255;
+    e.preventDefault();
+    if (e.repeat) return;
+    keys[k] = 255;
+    keys[256 + k] = 255;
+    keys[512 + k] ^= 255;
+    keysDirty = true;
+  });
+  document.addEventListener("keyup", (e) => {
+    if (document.activeElement !== canvas) return;
+    keys[e.keyCode & 255] = 0;
+    keysDirty = true;
+  });
+  canvas.addEventListener("blur", () => { keys.fill(0, 0, 512); keysDirty = true; });
+  // iMouse: xy while the button is down, zw the click; z < 0 after release, w > 0
+  // only on the click's frame.
+  function canvasPoint(e) {
+    const r = canvas.getBoundingClientRect();
+    return [Math.floor((e.clientX - r.left) * canvas.width / Math.max(1, r.width)),
+            Math.floor(canvas.height - (e.clientY - r.top) * canvas.height / Math.max(1, r.height))];
+  }
+  canvas.addEventListener("pointerdown", (e) => {
+    if (e.button !== 0) return;
+    canvas.focus();
+    canvas.setPointerCapture(e.pointerId);
+    [mouse.x, mouse.y] = canvasPoint(e);
+    mouse.ox = mouse.x;
+    mouse.oy = mouse.y;
+    mouse.down = true;
+    mouse.click = true;
+  });
+  canvas.addEventListener("pointermove", (e) => {
+    if (mouse.down) [mouse.x, mouse.y] = canvasPoint(e);
+  });
+  const release = () => { mouse.down = false; };
+  canvas.addEventListener("pointerup", release);
+  canvas.addEventListener("pointercancel", release);
+
+  // A 2D channel's texture can be replaced by an image file (kept on this page only).
+  const channelsEl = $("sp-channels");
+  for (const pass of drawn) {
+    for (const input of pass.inputs) {
+      if (input.kind !== "texture") continue;
+      const label = document.createElement("label");
+      label.textContent = pass.name + " iChannel" + input.channel + ": ";
+      const file = document.createElement("input");
+      file.type = "file";
+      file.accept = "image/*";
+      file.addEventListener("change", () => {
+        if (!file.files || !file.files[0]) return;
+        const url = URL.createObjectURL(file.files[0]);
+        const img = new Image();
+        img.onload = () => {
+          const tex = gl.createTexture();
+          gl.bindTexture(gl.TEXTURE_2D, tex);
+          gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, input.vflip);
+          gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, gl.RGBA, gl.UNSIGNED_BYTE, img);
+          gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, false);
+          gl.generateMipmap(gl.TEXTURE_2D);
+          input.user = {tex: tex, target: gl.TEXTURE_2D, size: [img.width, img.height, 1]};
+          URL.revokeObjectURL(url);
+        };
+        img.onerror = () => note("warning", "the image could not be read");
+        img.src = url;
+      });
+      label.appendChild(file);
+      channelsEl.appendChild(label);
+    }
+  }
+  const sound = passes.find((p) => p.kind === "sound");
+  if (sound) {
+    const p = document.createElement("p");
+    p.textContent = "The Sound pass compiles here but is not played.";
+    channelsEl.appendChild(p);
+  }
+
+  let lost = false;
+  canvas.addEventListener("webglcontextlost", (e) => {
+    e.preventDefault();
+    lost = true;
+    note("error", "the WebGL context was lost");
+    setState("context-lost");
+    $("sp-status").textContent = "WebGL context lost";
+  });
+
+  // --- Run ---------------------------------------------------------------------------------
+  resize();
+  $("sp-status").textContent = "WebGL2, buffers " + format.name;
+  const clockEl = $("sp-clock");
+  function showClock() {
+    clockEl.textContent = "iTime " + frameValues().time.toFixed(2) + "  iFrame " + frame +
+      "  " + fps.toFixed(0) + " fps";
+  }
+  if (frameLimit) {
+    // Deterministic: exactly N frames, drawn now, then the picture is published.
+    for (let i = 0; i < frameLimit && !lost; ++i) {
+      drawFrame();
+      checkGlErrors();
+    }
+    if (!lost) {
+      publishPixels();
+      checkGlErrors();
+      showClock();
+      setState("done");
+    }
+    stateEl.setAttribute("data-frames", String(drawnFrames));
+    return;
+  }
+  let last = performance.now();
+  function tick(now) {
+    if (lost) return;
+    const dt = Math.max(0, (now - last) / 1000);
+    last = now;
+    if (resize() && paused) drawFrame();
+    if (!paused) {
+      // The first frame after a (re)start is drawn at the start time.
+      if (!fixedTime && frame !== startFrame) {
+        delta = dt;
+        if (dt > 0) fps = fps * 0.9 + 0.1 / dt;
+        time += dt;
+      }
+      drawFrame();
+      if (drawnFrames % 60 === 1) checkGlErrors();
+    }
+    showClock();
+    setState(paused ? "paused" : "running");
+    requestAnimationFrame(tick);
+  }
+  setState("running");
+  requestAnimationFrame(tick);
+})();

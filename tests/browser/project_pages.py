@@ -1,0 +1,285 @@
+#!/usr/bin/env python3
+"""Project pages (`shaderport port --emit html`) run in headless Chromium as the site
+runs the project, and draw what `shaderport render` draws.
+
+For each project in tests/browser/project_pages/ (ShaderToy API exports):
+  - build its page; open it in Debian's `chromium` (SwiftShader) in the page's
+    deterministic mode (#time=1&frames=N&size=64x64) and read the DOM after the last
+    frame: its state, its log (console errors, exceptions, GL errors, compile errors)
+    and the last frame's pixels;
+  - projects render can draw: `shaderport render` the same project at 64x64, N frames,
+    time 1, and compare the pictures by 8x8 block means within 12/255
+    (docs/render.md, tools/browser/compare_pictures.py); the texture probe must match
+    texel for texel (the procedural textures are the same bytes);
+  - page-only projects (Cube A, keyboard, a compile error, injection payloads) check
+    what the page itself shows.
+The pages come from `shaderport port --emit html` when the binary offers it, else
+from the fixture tool (the passes composed as the site composes them).
+  project_pages.py SHADERPORT_BINARY FIXTURE_BINARY WORK_DIR
+"""
+import base64
+import concurrent.futures
+import html
+import html.parser
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "tools", "browser"))
+import compare_pictures  # noqa: E402
+import pngio  # noqa: E402
+
+DATA = os.path.join(HERE, "project_pages")
+SIZE = 64
+MARK = "data-injected"
+# name -> frames; compared with render.
+COMPARED = {"feedback": 3, "buffer_order": 4, "textures": 1, "uniforms": 2}
+EXACT = {"textures": 2}  # largest per-channel difference allowed anywhere
+PAGE_ONLY = {"cube_pass": 2, "keyboard": 1, "broken": 1, "injection": 1}
+
+
+class Dom(html.parser.HTMLParser):
+    """The test hooks of the page: ids sp-state, sp-log, sp-pixels, sp-errors."""
+
+    def __init__(self):
+        super().__init__()
+        self.attrs = {}
+        self.text = {}
+        self.scripts = 0
+        self.handlers = []
+        self.body = {}
+        self.title = ""
+        self._open = []
+
+    def handle_starttag(self, tag, attrs):
+        attrs = dict(attrs)
+        if tag == "script":
+            self.scripts += 1
+        if tag == "body":
+            self.body = attrs
+        self.handlers += [(tag, n) for n in attrs if n.lower().startswith("on")]
+        ident = attrs.get("id")
+        if ident:
+            self.attrs[ident] = attrs
+            self.text.setdefault(ident, "")
+        self._open.append((tag, ident))
+
+    def handle_endtag(self, tag):
+        while self._open:
+            t, _ = self._open.pop()
+            if t == tag:
+                break
+
+    def handle_data(self, data):
+        for _, ident in self._open:
+            if ident:
+                self.text[ident] += data
+        if self._open and self._open[-1][0] == "title":
+            self.title += data
+
+
+def chromium_dom(chromium, work, page, fragment):
+    profile = tempfile.mkdtemp(prefix="chromium-", dir=work)
+    done = subprocess.run(
+        [chromium, "--headless", "--no-sandbox", "--disable-gpu", "--use-angle=swiftshader",
+         "--enable-unsafe-swiftshader", "--disable-background-networking", "--disable-extensions",
+         "--no-first-run", "--user-data-dir=" + profile, "--virtual-time-budget=10000",
+         "--enable-logging=stderr", "--v=0", "--dump-dom", "file://" + page + fragment],
+        capture_output=True, text=True, timeout=120)
+    shutil.rmtree(profile, ignore_errors=True)
+    # Performance notes of the GL driver (a ReadPixels stall) are not problems.
+    console = [line for line in done.stderr.splitlines()
+               if "CONSOLE" in line and "GL Driver Message (OpenGL, Performance" not in line]
+    return done.stdout, console
+
+
+def make_page(binary, fixture, project, out):
+    """`port --emit html` when the binary has it, else the fixture tool."""
+    done = subprocess.run([binary, "port", project, "--emit", "html", "-o", out],
+                          capture_output=True, text=True, timeout=120)
+    if done.returncode in (0, 1) and os.path.exists(out):
+        return "port"
+    subprocess.run([fixture, project, out], check=True, timeout=60)
+    return "fixture"
+
+
+def record_of(export):
+    """The corpus record render reads ({"passes": [...]}) for an API export."""
+    shader = export["Shader"]
+    passes = []
+    for p in shader["renderpass"]:
+        passes.append({"type": p["type"], "name": p["name"], "code": p["code"],
+                       "inputs": [{"channel": i["channel"], "ctype": i["ctype"], "src": i["src"]}
+                                  for i in p.get("inputs", [])]})
+    return {"id": shader["info"]["id"], "name": shader["info"]["name"], "passes": passes}
+
+
+def render(binary, work, name, frames):
+    record = os.path.join(work, name + ".record.json")
+    with open(record, "w") as f:
+        json.dump(record_of(json.load(open(os.path.join(DATA, name + ".json")))), f)
+    png = os.path.join(work, name + ".render.png")
+    done = subprocess.run([binary, "render", record, "--size", "%dx%d" % (SIZE, SIZE), "--frames",
+                           str(frames), "--time", "1", "--hermetic", "-o", png],
+                          capture_output=True, text=True, timeout=120)
+    if not os.path.exists(png):
+        return None, "render drew nothing (exit %d): %s" % (done.returncode, done.stderr.strip())
+    return pngio.read_png(png), ""
+
+
+def page_result(chromium, binary, fixture, work, name, frames):
+    page = os.path.join(work, name + ".html")
+    source = make_page(binary, fixture, os.path.join(DATA, name + ".json"), page)
+    dom_text, console = chromium_dom(chromium, work, page,
+                                     "#time=1&frames=%d&size=%dx%d" % (frames, SIZE, SIZE))
+    with open(os.path.join(work, name + ".dom.html"), "w") as f:
+        f.write(dom_text)
+    dom = Dom()
+    dom.feed(dom_text)
+    pixels = None
+    if dom.text.get("sp-pixels"):
+        pixels = (SIZE, SIZE, base64.b64decode(dom.text["sp-pixels"].strip()))
+        pngio.write_png(os.path.join(work, name + ".page.png"), *pixels)
+    return {"dom": dom, "raw": dom_text, "console": console, "pixels": pixels, "source": source}
+
+
+def clean_run(name, r, problems):
+    dom = r["dom"]
+    state = dom.attrs.get("sp-state", {}).get("data-state")
+    if state != "done":
+        problems.append("%s: page state %r, not done" % (name, state))
+    log = dom.text.get("sp-log", "").strip()
+    if log:
+        problems.append("%s: the page logged: %s" % (name, log))
+    if dom.text.get("sp-errors", "").strip() and "hidden" not in dom.attrs.get("sp-errors", {}):
+        problems.append("%s: error panel shown: %s" % (name, dom.text["sp-errors"].strip()))
+    for line in r["console"]:
+        problems.append("%s: console: %s" % (name, line))
+    if r["pixels"] is None:
+        problems.append("%s: no pixels published" % name)
+
+
+def max_difference(a, b):
+    return max(abs(x - y) for i, (x, y) in enumerate(zip(a[2], b[2])) if i % 4 != 3)
+
+
+def check_compared(name, r, reference, problems, measured):
+    clean_run(name, r, problems)
+    if r["pixels"] is None or reference is None:
+        return
+    c = compare_pictures.compare(r["pixels"], reference)
+    worst = max_difference(r["pixels"], reference)
+    measured.append("%s: %s; largest pixel difference %d" %
+                    (name, compare_pictures.describe(c), worst))
+    if not c.match:
+        problems.append("%s: page and render differ: %s" % (name, compare_pictures.describe(c)))
+    if name in EXACT and worst > EXACT[name]:
+        problems.append("%s: a texel differs by %d (> %d) from render" % (name, worst, EXACT[name]))
+
+
+def check_page_only(name, r, problems):
+    dom = r["dom"]
+    if name == "broken":
+        state = dom.attrs.get("sp-state", {}).get("data-state")
+        panel = dom.text.get("sp-errors", "")
+        if state != "error":
+            problems.append("broken: state %r, not error" % state)
+        if "hidden" in dom.attrs.get("sp-errors", {}):
+            problems.append("broken: the error panel is hidden")
+        if "Buffer A:3:" not in panel or "undefined_name" not in panel:
+            problems.append("broken: the panel does not put the error on Buffer A:3: %r" % panel)
+        for line in r["console"]:
+            if "undefined_name" not in line:
+                problems.append("broken: console: %s" % line)
+        return
+    clean_run(name, r, problems)
+    px = r["pixels"]
+    if px is None:
+        return
+    w, h, rgba = px
+    if name == "keyboard":
+        bad = sum(1 for i in range(0, len(rgba), 4) if tuple(rgba[i:i + 3]) != (0, 255, 0))
+        if bad:
+            problems.append("keyboard: %d pixels say the keyboard texture is wrong" % bad)
+    if name == "cube_pass":
+        left = [rgba[(y * w + x) * 4 + c] for y in range(h) for x in range(w // 2 - 1)
+                for c in range(3)]
+        right = [rgba[(y * w + x) * 4 + c] for y in range(h) for x in range(w // 2 + 1, w)
+                 for c in range(3)]
+        if max(right) > 24:
+            problems.append("cube_pass: Cube A differs from its ray directions by %d/255" % max(right))
+        if sum(left) / len(left) < 40:
+            problems.append("cube_pass: the cube map looks empty")
+    if name == "injection":
+        check_injection(r, problems)
+
+
+def check_injection(r, problems):
+    dom = r["dom"]
+    if MARK in dom.body:
+        problems.append("injection: a payload ran: body %s=%s" % (MARK, dom.body[MARK]))
+    if dom.scripts != 2:
+        problems.append("injection: %d <script> elements, expected the page's 2" % dom.scripts)
+    if dom.handlers:
+        problems.append("injection: event handler attributes: %s" % dom.handlers)
+    shown = html.unescape(dom.text.get("sp-title", ""))
+    if "</script><script>" not in shown or "onerror=" not in shown:
+        problems.append("injection: the title does not show the payload as text: %r" % shown)
+    if "</script><script>" not in html.unescape(dom.title):
+        problems.append("injection: <title> lost the payload text: %r" % dom.title)
+
+
+def control_catches(chromium, work):
+    """A page with a raw payload must trip the checks, or they prove nothing."""
+    page = os.path.join(work, "control.html")
+    with open(page, "w") as f:
+        f.write("<!DOCTYPE html><html><body><img src=x onerror=\"document.body.setAttribute("
+                "'%s','img')\"></body></html>" % MARK)
+    dom_text, _ = chromium_dom(chromium, work, page, "")
+    dom = Dom()
+    dom.feed(dom_text)
+    return MARK in dom.body
+
+
+def main():
+    binary, fixture, work = sys.argv[1], sys.argv[2], sys.argv[3]
+    chromium = shutil.which(os.environ.get("CHROMIUM", "chromium"))
+    if chromium is None:
+        print("project_pages: chromium is not installed (tools/install-deps.sh installs it)",
+              file=sys.stderr)
+        return 1
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    problems = []
+    measured = []
+    if not control_catches(chromium, work):
+        print("project_pages: the control page's payload did not run", file=sys.stderr)
+        return 1
+    jobs = dict(COMPARED, **PAGE_ONLY)
+    with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
+        pages = {n: pool.submit(page_result, chromium, binary, fixture, work, n, f)
+                 for n, f in jobs.items()}
+        renders = {n: pool.submit(render, binary, work, n, f) for n, f in COMPARED.items()}
+        for name in jobs:
+            r = pages[name].result()
+            if name in COMPARED:
+                reference, why = renders[name].result()
+                if reference is None:
+                    problems.append("%s: %s" % (name, why))
+                check_compared(name, r, reference, problems, measured)
+            else:
+                check_page_only(name, r, problems)
+            measured.append("%s: page from %s" % (name, r["source"]))
+    for line in measured:
+        print("project_pages: " + line)
+    for problem in problems:
+        print("project_pages: FAIL " + problem, file=sys.stderr)
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

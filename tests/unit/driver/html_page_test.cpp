@@ -1,0 +1,127 @@
+#include "driver/project/html_page.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cctype>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace shaderport::driver::project {
+namespace {
+
+size_t Count(const std::string& haystack, const std::string& needle) {
+  size_t n = 0;
+  for (size_t at = haystack.find(needle); at != std::string::npos;
+       at = haystack.find(needle, at + 1)) {
+    ++n;
+  }
+  return n;
+}
+
+std::string Lower(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
+// The text of the page's JSON script element.
+std::string EmbeddedJson(const std::string& page) {
+  const std::string open = "<script type=\"application/json\" id=\"sp-project\">";
+  const size_t begin = page.find(open) + open.size();
+  return page.substr(begin, page.find("</script>", begin) - begin);
+}
+
+PageProject Hostile() {
+  PageProject project;
+  project.name =
+      "</script><script>document.body.setAttribute('x','1')</script><!-- & <img src=x "
+      "onerror=alert(1)>";
+  PagePass pass;
+  pass.tab_name = "Image </SCRIPT ><b>";
+  pass.fragment_shader = "// </script><script>alert(2)</script> <!-- \xe2\x80\xa8 \xe2\x80\xa9\n";
+  pass.port_errors = "bad byte \xff here";
+  project.passes.push_back(pass);
+  return project;
+}
+
+TEST(HtmlPage, NoTextOfTheProjectEndsTheScriptOrOpensMarkup) {
+  const std::string page = BuildProjectPage(Hostile());
+  // Only the page's own two script elements open and close.
+  EXPECT_EQ(Count(Lower(page), "<script"), 2u);
+  EXPECT_EQ(Count(Lower(page), "</script"), 2u);
+  EXPECT_EQ(page.find("<!--"), std::string::npos);
+  EXPECT_EQ(page.find("<img"), std::string::npos);
+  EXPECT_EQ(page.find("<b>"), std::string::npos);
+  const std::string json = EmbeddedJson(page);
+  EXPECT_EQ(json.find_first_of("<>&"), std::string::npos);
+  EXPECT_EQ(json.find("\xe2\x80\xa8"), std::string::npos);
+  EXPECT_EQ(json.find("\xe2\x80\xa9"), std::string::npos);
+}
+
+TEST(HtmlPage, EmbeddedJsonReadsBackAsTheProject) {
+  const PageProject project = Hostile();
+  const nlohmann::json read = nlohmann::json::parse(EmbeddedJson(BuildProjectPage(project)));
+  EXPECT_EQ(read["name"], project.name);
+  EXPECT_EQ(read["passes"][0]["name"], project.passes[0].tab_name);
+  EXPECT_EQ(read["passes"][0]["code"], project.passes[0].fragment_shader);
+  // An invalid byte becomes U+FFFD instead of failing the page.
+  EXPECT_EQ(read["passes"][0]["portErrors"], "bad byte \xef\xbf\xbd here");
+}
+
+TEST(HtmlPage, TitleIsEscapedText) {
+  const std::string page = BuildProjectPage(Hostile());
+  EXPECT_NE(page.find("<title>&lt;/script&gt;&lt;script&gt;document.body.setAttribute(&#39;x&#39;"),
+            std::string::npos);
+}
+
+TEST(HtmlPage, PassesAndInputsAreDescribed) {
+  PageProject project;
+  project.name = "p";
+  PagePass buffer;
+  buffer.tab_name = "Buffer B";
+  buffer.kind = ShaderToyPass::kBuffer;
+  buffer.output_buffer = 1;
+  buffer.inputs.push_back({0, PageInputKind::kBuffer, 1, "linear", "clamp", true});
+  buffer.inputs.push_back({2, PageInputKind::kKeyboard, -1, "nearest", "clamp", false});
+  buffer.fragment_shader = "#version 300 es\n";
+  buffer.lines = ComposedLineRuns(22, 3, 5, "Buffer B");
+  project.passes.push_back(buffer);
+  const nlohmann::json read = nlohmann::json::parse(PageProjectJson(project, {128}));
+  EXPECT_EQ(read["cubeSize"], 128);
+  const nlohmann::json& pass = read["passes"][0];
+  EXPECT_EQ(pass["kind"], "buffer");
+  EXPECT_EQ(pass["output"], 1);
+  EXPECT_EQ(pass["inputs"][0]["kind"], "buffer");
+  EXPECT_EQ(pass["inputs"][0]["buffer"], 1);
+  EXPECT_EQ(pass["inputs"][1]["kind"], "keyboard");
+  EXPECT_EQ(pass["inputs"][1]["filter"], "nearest");
+  EXPECT_EQ(pass["inputs"][1]["vflip"], false);
+  EXPECT_EQ(pass["lines"], nlohmann::json::parse(R"([[23,3,"Common",1],[26,5,"Buffer B",1]])"));
+}
+
+TEST(HtmlPage, ComposedLineRunsWithoutCommon) {
+  const auto runs = ComposedLineRuns(10, 0, 4, "Image");
+  ASSERT_EQ(runs.size(), 1u);
+  EXPECT_EQ(runs[0].ported_first, 11u);
+  EXPECT_EQ(runs[0].count, 4u);
+  EXPECT_EQ(runs[0].origin, "Image");
+  EXPECT_EQ(runs[0].user_first, 1u);
+}
+
+TEST(HtmlPage, RuntimeIsInlineAndLoadsNothing) {
+  const std::string page = BuildProjectPage(PageProject{});
+  EXPECT_NE(page.find("getContext(\"webgl2\""), std::string::npos);
+  EXPECT_NE(page.find("#sp-canvas"), std::string::npos);  // the stylesheet
+  EXPECT_EQ(page.find("http://"), std::string::npos);
+  EXPECT_EQ(page.find("https://"), std::string::npos);
+  EXPECT_EQ(page.find(" src="), std::string::npos);
+  EXPECT_EQ(page.find(" href="), std::string::npos);
+  EXPECT_NE(page.find("<title>ShaderToy project</title>"), std::string::npos);
+  for (const page_files::EmbeddedTextFile& file : page_files::EmbeddedPageFiles()) {
+    EXPECT_EQ(Lower(std::string(file.text)).find("</script"), std::string::npos) << file.name;
+    EXPECT_EQ(std::string(file.text).find("<!--"), std::string::npos) << file.name;
+  }
+}
+
+}  // namespace
+}  // namespace shaderport::driver::project
