@@ -1,7 +1,8 @@
 // shadertoy/main-wrapper: the harness's entry point (ShaderToy's mainImage,
 // mainCubemap, mainSound, or a dialect file's) gets the real main() the host
 // would generate, appended at the end of the file; the output is a declared
-// `out highp vec4`. The Image pass's alpha is forced to 1 as on the site.
+// `out highp vec4`. The Image pass's alpha is forced to 1 as on the site; a
+// Buffer pass keeps it (the dialect's buffer_main).
 //
 // Before:                                   After:
 //   void mainImage(out vec4 c, in vec2 p) {   void mainImage(out vec4 c, in vec2 p) {
@@ -114,7 +115,11 @@ class MainWrapperRule final : public rule::Rule {
 
     harness::FreshNames fresh(context);
     const std::string out = fresh.Make(entry->output_name);
-    const std::string body = ExpandTemplate(entry->main_body, entry->function, out, fresh);
+    const std::string& main_body =
+        context.Settings().buffer_pass && !entry->buffer_main_body.empty()
+            ? entry->buffer_main_body
+            : entry->main_body;
+    const std::string body = ExpandTemplate(main_body, entry->function, out, fresh);
     const std::string_view text = context.Text();
     std::string insertion = text.empty() || text.back() == '\n' ? "\n" : "\n\n";
     // `#define main() mainImage(...)` would rewrite the added main() too (and every

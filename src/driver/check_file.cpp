@@ -38,7 +38,16 @@ DetectedKind ResolveKind(const FileJob& job, const CheckOptions& options,
   }
   if (options.dialect) kind.dialect = *options.dialect;
   if (options.stage) kind.stage = *options.stage;
+  if (job.pass) {
+    kind.dialect = Dialect::kShaderToy;
+    kind.stage = Stage::kFragment;
+    kind.pass = *job.pass;
+  }
   return kind;
+}
+
+const validate::ChannelTypes& ChannelsOf(const FileJob& job, const CheckOptions& options) {
+  return job.channels ? *job.channels : options.channels;
 }
 
 // --target, then the config's [[files]] target, then the default for the code.
@@ -68,7 +77,8 @@ validate::ValidationRequest ComposeRequest(const FileJob& job, const CheckOption
   }
   const bool is_common = kind.pass == ShaderToyPass::kCommon;
   validate::ValidationRequest request = validate::ComposeShaderToyRequest(
-      sources, ToPassType(kind.pass), options.channels, is_common ? nullptr : job.common, file);
+      sources, ToPassType(kind.pass), ChannelsOf(job, options), is_common ? nullptr : job.common,
+      file);
   // Common code has no entry point of its own: the site only compiles it inside
   // a pass, so here it is compiled but not linked.
   if (is_common) request.link = false;
@@ -90,14 +100,15 @@ void Finalize(const FileJob& job, const SourceFile& file, const FrontEndResult& 
 
 // Smoke-renders a file that validated (WebGL1 code through its port).
 void RenderChecked(const SourceFile& file, const DetectedKind& kind, const SourceFile* common,
-                   const CheckOptions& options, SourceManager& sources,
+                   const validate::ChannelTypes& channels, const CheckOptions& options,
+                   SourceManager& sources,
                    DiagnosticList& diagnostics) {
   RenderFileOptions render_options;
   render_options.base.width = static_cast<uint32_t>(options.render_size);
   render_options.base.height = static_cast<uint32_t>(options.render_size);
   render_options.render.timeout =
       std::chrono::milliseconds(static_cast<int64_t>(options.render_timeout * 1000));
-  render_options.channel_types = options.channels;
+  render_options.channel_types = channels;
   render_options.common = common;
   render_options.sources = &sources;
   RenderFileResult rendered;
@@ -121,7 +132,9 @@ void RenderCheckedFile(const FileJob& job, const CheckOptions& options, SourceMa
   quiet.report_unused = false;
   ApplySuppressions(file, front.lexed, settled, front.preprocessed.inactive_regions, quiet);
   if (job.config != nullptr) ApplyRuleConfig(*job.config, settled);
-  if (!HasErrors(settled)) RenderChecked(file, kind, common, options, sources, report.diagnostics);
+  if (!HasErrors(settled))
+    RenderChecked(file, kind, common, ChannelsOf(job, options), options, sources,
+                  report.diagnostics);
   Finalize(job, file, front, report.diagnostics);
 }
 
@@ -137,15 +150,17 @@ const SourceFile* LoadSharedFile(const std::filesystem::path& path, SourceManage
 
 FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceManager& sources) {
   FileReport report;
-  InputText input = job.contents != nullptr ? *job.contents : ReadInputFile(job.path);
-  if (!input.text) {
+  InputText input;
+  if (job.source == nullptr) input = job.contents != nullptr ? *job.contents : ReadInputFile(job.path);
+  if (job.source == nullptr && !input.text) {
     report.file = &sources.Add(job.path.string(), "");
     report.diagnostics.push_back(MakeDiagnostic(Severity::kError, std::move(input.rule_id),
                                                 {report.file->Id(), 0, 0},
                                                 std::move(input.message)));
     return report;
   }
-  const SourceFile& file = sources.Add(job.path.string(), std::move(*input.text));
+  const SourceFile& file =
+      job.source != nullptr ? *job.source : sources.Add(job.path.string(), std::move(*input.text));
   report.file = &file;
   // Lexed once: detection, the front end, suppressions and glslang's messages share it.
   glsl::LexedFile lexed = glsl::Lex(file);
@@ -163,7 +178,7 @@ FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceMana
   webgl.target = ResolveTarget(job, options, kind, lexed);
   FrontEndOptions front_options;
   front_options.analyze = true;
-  front_options.channels = options.channels;
+  front_options.channels = ChannelsOf(job, options);
   // WebGL 2 contexts allow 1024-character names in GLSL ES 1.00 code too.
   front_options.max_identifier_length = webgl.target == Target::kWebGL2 ? 1024 : 256;
   const FrontEndResult front =

@@ -6,6 +6,7 @@
 
 #include "driver/check_options.h"
 #include "driver/config/config.h"
+#include "driver/dialect.h"
 #include "driver/read_input.h"
 #include "report/check_report.h"
 #include "source/source_manager.h"
@@ -21,6 +22,11 @@ struct FileJob {
   // The file's contents when they were read elsewhere (--stdin); `path` then only
   // names the file and need not exist.
   const InputText* contents = nullptr;
+  // A pass of a ShaderToy project: its code, already registered (embedded in its
+  // JSON document), the tab it is and the sampler types its inputs give.
+  const SourceFile* source = nullptr;
+  std::optional<ShaderToyPass> pass;
+  std::optional<validate::ChannelTypes> channels;
 };
 
 // Thread-safe: adds the file (and generated text) to `sources` and never throws

@@ -1,5 +1,6 @@
 #include "driver/check_pipeline.h"
 
+#include <deque>
 #include <map>
 #include <mutex>
 #include <set>
@@ -7,6 +8,7 @@
 #include "driver/check_cache.h"
 #include "driver/check_file.h"
 #include "driver/check_link.h"
+#include "driver/check_projects.h"
 #include "driver/check_shard.h"
 #include "driver/config/config_lookup.h"
 #include "driver/input_files.h"
@@ -57,6 +59,8 @@ CheckRun RunCheck(const CheckOptions& options) {
   run.usage_errors = std::move(inputs.errors);
 
   std::map<fs::path, const SourceFile*> commons;
+  std::deque<project::ProjectDocument> projects;  // the jobs of project passes point into them
+  std::vector<FileReport> project_problems;
   std::vector<FileJob> jobs;
   std::error_code cwd_error;
   const fs::path working_directory = fs::current_path(cwd_error);
@@ -67,11 +71,16 @@ CheckRun RunCheck(const CheckOptions& options) {
                             ? input.path
                             : working_directory / input.path;
     job.config = configs.For(input.path);
-    job.common = CommonFor(input.path, options, commons, sources, run);
     if (options.in_memory) job.contents = &options.in_memory->contents;
+    if (IsProjectDocument(input.path)) {
+      AddProjectJobs(job, sources, projects, jobs, project_problems);
+      continue;
+    }
+    job.common = CommonFor(input.path, options, commons, sources, run);
     jobs.push_back(std::move(job));
   }
   for (FileReport& problem : configs.TakeProblems()) run.report.files.push_back(std::move(problem));
+  for (FileReport& problem : project_problems) run.report.files.push_back(std::move(problem));
   // Over every input, before sharding: a pass reports its Common's findings only
   // when no shard checks Common as a file of its own.
   std::set<fs::path> canonical_inputs;
@@ -82,7 +91,7 @@ CheckRun RunCheck(const CheckOptions& options) {
     }
   }
   for (FileJob& job : jobs) {
-    if (job.common == nullptr) continue;
+    if (job.common == nullptr || job.pass) continue;  // a project's Common is a job itself
     job.common_checked_separately =
         canonical_inputs.contains(fs::weakly_canonical(job.common->Name()));
   }

@@ -56,8 +56,14 @@ std::string FormatGithub(const CheckReport& report, const ReportOptions& options
   for (const FileReport& file : report.files) {
     for (const Diagnostic& diagnostic : file.diagnostics) {
       std::string properties;
-      const auto where = Resolve(report.sources, diagnostic.range);
+      auto where = Resolve(report.sources, diagnostic.range);
+      // A pass of a JSON project: the annotation goes on its bytes in the JSON file.
+      if (where) {
+        if (auto outer = ResolveInContainer(*where)) where = outer;
+      }
       const SourceFile* shown = where && !where->file->IsSynthetic() ? where->file : file.file;
+      if (shown != nullptr && shown->Embedded() != nullptr && shown->Embedded()->container)
+        shown = shown->Embedded()->container.get();
       if (shown) {
         properties +=
             "file=" + EscapeGithubProperty(DisplayPath(shown->Name(), options.base_directory));

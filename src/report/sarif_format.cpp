@@ -157,13 +157,35 @@ class SarifBuilder {
   }
 
   // A synthetic file (a generated header) is no artifact: point at the checked file.
+  // A pass of a JSON project points at its bytes in the JSON document.
   Json PhysicalLocation(const SourceRange& range, const SourceFile* fallback) const {
     const auto where = Resolve(report_.sources, range);
+    if (where) {
+      if (const auto outer = ResolveInContainer(*where))
+        return {{"artifactLocation", ArtifactLocation(*outer->file)}, {"region", Region(*outer)}};
+    }
     if (where && !where->file->IsSynthetic()) {
       return {{"artifactLocation", ArtifactLocation(*where->file)}, {"region", Region(*where)}};
     }
     if (fallback == nullptr) return nullptr;
     return {{"artifactLocation", ArtifactLocation(*fallback)}, {"region", StartOfFileRegion()}};
+  }
+
+  // The pass of a JSON project ("Buffer A") the finding is in, with the line and
+  // column inside the pass's own code, which the JSON region cannot show.
+  Json LogicalLocations(const SourceRange& range, const SourceFile* fallback) const {
+    const auto where = Resolve(report_.sources, range);
+    const SourceFile* file = where ? where->file : fallback;
+    const Embedding* embedding = file != nullptr ? file->Embedded() : nullptr;
+    if (embedding == nullptr) return nullptr;
+    Json logical = {{"name", embedding->logical_name},
+                    {"fullyQualifiedName", file->Name()},
+                    {"kind", "module"}};
+    if (where) {
+      logical["properties"] = {{"shaderport/passLine", where->start.line},
+                               {"shaderport/passColumn", where->start.column}};
+    }
+    return Json::array({std::move(logical)});
   }
 
   Json FixesToJson(const Diagnostic& diagnostic) const {
@@ -172,7 +194,8 @@ class SarifBuilder {
     std::string description;
     for (const FixIt& fix : diagnostic.fixes) {
       const auto where = Resolve(report_.sources, fix.range);
-      if (!where || where->file->IsSynthetic()) continue;
+      // A pass of a JSON project: its edits need JSON escaping (`shaderport fix` does it).
+      if (!where || where->file->IsSynthetic() || where->file->Embedded() != nullptr) continue;
       Json replacement = {{"deletedRegion", Region(*where)},
                           {"insertedContent", {{"text", fix.replacement}}}};
       Json artifact = ArtifactLocation(*where->file);
@@ -199,7 +222,12 @@ class SarifBuilder {
                    {"message", {{"text", diagnostic.message}}}};
     Json location = PhysicalLocation(diagnostic.range, file.file);
     result["locations"] = Json::array();
-    if (!location.is_null()) result["locations"].push_back({{"physicalLocation", location}});
+    if (!location.is_null()) {
+      Json entry = {{"physicalLocation", location}};
+      if (Json logical = LogicalLocations(diagnostic.range, file.file); !logical.is_null())
+        entry["logicalLocations"] = std::move(logical);
+      result["locations"].push_back(std::move(entry));
+    }
     if (!diagnostic.notes.empty()) {
       Json related = Json::array();
       int id_number = 1;

@@ -63,6 +63,24 @@ std::optional<ResolvedRange> Resolve(const SourceManager* sources, const SourceR
   return resolved;
 }
 
+std::optional<ResolvedRange> ResolveInContainer(const ResolvedRange& where) {
+  const Embedding* embedding = where.file != nullptr ? where.file->Embedded() : nullptr;
+  if (embedding == nullptr || embedding->container == nullptr) return std::nullopt;
+  const SourceFile& container = *embedding->container;
+  ResolvedRange resolved;
+  resolved.file = &container;
+  resolved.begin_offset = embedding->ContainerOffset(where.begin_offset);
+  resolved.end_offset =
+      std::max(resolved.begin_offset, embedding->ContainerOffset(where.end_offset));
+  resolved.start = container.LocationOf(resolved.begin_offset);
+  resolved.end = container.LocationOf(resolved.end_offset);
+  resolved.start_utf16 = {resolved.start.line, Utf16Column(container.LineText(resolved.start.line),
+                                                           resolved.start.column)};
+  resolved.end_utf16 = {resolved.end.line,
+                        Utf16Column(container.LineText(resolved.end.line), resolved.end.column)};
+  return resolved;
+}
+
 bool IsAbsolutePath(std::string_view path) {
   if (!path.empty() && (path[0] == '/' || path[0] == '\\')) return true;
   // "C:/..." or "C:\..."

@@ -28,6 +28,10 @@ struct ResolvedRange {
 // buggy producer cannot make a printer read out of bounds.
 std::optional<ResolvedRange> Resolve(const SourceManager* sources, const SourceRange& range);
 
+// For a range in a file embedded in another (a pass of a JSON project): the same
+// range in the container's own lines and columns; nullopt when not embedded.
+std::optional<ResolvedRange> ResolveInContainer(const ResolvedRange& where);
+
 // The 1-based UTF-16 column of byte column `byte_column` (1-based) in `line`.
 // Invalid UTF-8 bytes count as one unit each, as a decoder that replaces them would.
 uint32_t Utf16Column(std::string_view line, uint32_t byte_column);

@@ -38,6 +38,9 @@ struct EntryPoint {
   // the function, `{out}` the generated output variable, `{fresh:NAME}` a local
   // named NAME, or NAME_1, NAME_2... when the code already uses NAME.
   std::string main_body;
+  // The same for the host's off-screen buffer passes, when they differ (ShaderToy's
+  // Buffer passes keep alpha, which the Image pass forces to 1); empty: main_body.
+  std::string buffer_main_body;
   std::string output_name = "fragColor";  // base name of the generated `out highp vec4`
   // Extra variables this entry point's harness provides (e.g. mainCubemap's unCorners).
   std::vector<ProvidedVariable> provides;

@@ -315,6 +315,8 @@ class DialectParser {
         if (auto name = Identifier(key, value)) entry.function = std::move(*name);
       } else if (key == "main") {
         if (auto body = String(key, value)) entry.main_body = std::move(*body), has_main = true;
+      } else if (key == "buffer_main") {
+        if (auto body = String(key, value)) entry.buffer_main_body = std::move(*body);
       } else if (key == "output") {
         if (auto name = Identifier(key, value)) entry.output_name = std::move(*name);
       } else if (key == "provides") {
@@ -327,9 +329,11 @@ class DialectParser {
     }
     if (!has_function) return Missing(table, "function", "[[entry_points]]");
     if (!has_main) return Missing(table, "main", "[[entry_points]] '" + entry.function + "'");
-    if (auto bad = BadPlaceholder(entry.main_body)) {
-      Error(table.source(), "unknown placeholder '{" + *bad + "}' in main of '" + entry.function +
-                                "' (use {entry}, {out} or {fresh:NAME})");
+    for (const std::string* body : {&entry.main_body, &entry.buffer_main_body}) {
+      if (auto bad = BadPlaceholder(*body)) {
+        Error(table.source(), "unknown placeholder '{" + *bad + "}' in main of '" +
+                                  entry.function + "' (use {entry}, {out} or {fresh:NAME})");
+      }
     }
     if (entry.function == "main") {
       Error(table.source(), "the entry point is the function the user writes instead of main()");

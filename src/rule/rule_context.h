@@ -44,6 +44,8 @@ struct PortSettings {
   WebglTarget target = WebglTarget::kWebGL2;
   // The #version line as written (0 when absent), for rules about the line itself.
   int written_version = 0;
+  // The code is one of the harness's off-screen buffer passes (a ShaderToy Buffer tab).
+  bool buffer_pass = false;
 };
 
 // A read-only view of the analysed shader plus a sink for findings.

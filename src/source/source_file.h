@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -33,6 +34,22 @@ struct LineColumn {
   friend bool operator==(const LineColumn&, const LineColumn&) = default;
 };
 
+class SourceFile;
+
+// Where a file's text sits inside another file: a pass of a ShaderToy JSON project
+// is a string in the JSON document, and CI formats point at the document's bytes.
+struct Embedding {
+  std::shared_ptr<const SourceFile> container;  // the document (its own name and text)
+  std::string logical_name;                     // e.g. "Buffer A"
+  // Container offset of each byte of the text; one more entry for the end.
+  std::vector<uint32_t> offsets;
+
+  uint32_t ContainerOffset(uint32_t offset) const {
+    if (offsets.empty()) return offset;
+    return offsets[offset < offsets.size() ? offset : offsets.size() - 1];
+  }
+};
+
 // Owns the text of one file (original or synthetic) and answers line questions
 // about it. Line and column are computed on demand from byte offsets.
 class SourceFile {
@@ -43,6 +60,11 @@ class SourceFile {
   const std::string& Name() const { return name_; }
   std::string_view Text() const { return text_; }
   bool IsSynthetic() const { return synthetic_; }
+  // Set when the text is part of another file (nullptr otherwise).
+  const Embedding* Embedded() const { return embedding_.get(); }
+  void SetEmbedding(std::shared_ptr<const Embedding> embedding) {
+    embedding_ = std::move(embedding);
+  }
 
   uint32_t LineCount() const { return static_cast<uint32_t>(line_starts_.size()); }
   LineColumn LocationOf(uint32_t offset) const;
@@ -60,6 +82,7 @@ class SourceFile {
   std::string text_;
   bool synthetic_;
   std::vector<uint32_t> line_starts_;
+  std::shared_ptr<const Embedding> embedding_;
 };
 
 }  // namespace shaderport

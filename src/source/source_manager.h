@@ -3,6 +3,7 @@
 #pragma once
 
 #include <deque>
+#include <memory>
 #include <mutex>
 #include <string>
 
@@ -18,6 +19,14 @@ class SourceManager {
     const std::lock_guard lock(mutex_);
     files_.emplace_back(static_cast<FileId>(files_.size()), std::move(name), std::move(text),
                         synthetic);
+    return files_.back();
+  }
+  // A file whose text is part of another file (see Embedding).
+  const SourceFile& AddEmbedded(std::string name, std::string text,
+                                std::shared_ptr<const Embedding> embedding) {
+    const std::lock_guard lock(mutex_);
+    files_.emplace_back(static_cast<FileId>(files_.size()), std::move(name), std::move(text));
+    files_.back().SetEmbedding(std::move(embedding));
     return files_.back();
   }
   const SourceFile& Get(FileId id) const {

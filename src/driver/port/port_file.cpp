@@ -53,6 +53,11 @@ class Porter {
     kind_ = DetectKind(file.Text(), file.Name());
     if (options.dialect) kind_.dialect = *options.dialect;
     if (options.stage) kind_.stage = *options.stage;
+    if (options.pass) {
+      kind_.dialect = Dialect::kShaderToy;
+      kind_.pass = *options.pass;
+      kind_.stage = Stage::kFragment;
+    }
     if (kind_.dialect != Dialect::kShaderToy) common_ = nullptr;
     rules_ = options.rules;
     if (rules_.empty()) rules_ = rules::RulesForMode(options.mode);
@@ -71,6 +76,7 @@ class Porter {
       }
     }
     settings_.source_version = kind_.dialect == Dialect::kWebGL1 ? 100 : 300;
+    settings_.buffer_pass = kind_.pass == ShaderToyPass::kBuffer;
     for (int i = 0; i < 4; ++i) settings_.channels[i] = options.channels[i];
   }
 

@@ -21,6 +21,8 @@ struct PortOptions {
   rule::PortMode mode = rule::PortMode::kPort;
   std::optional<Dialect> dialect;  // forced; else detected from the code
   std::optional<Stage> stage;
+  // The ShaderToy tab the code is (from a project); implies the ShaderToy dialect.
+  std::optional<ShaderToyPass> pass;
   const rule::HarnessDialect* harness = nullptr;  // --dialect FILE
   rule::ChannelKind channels[4] = {rule::ChannelKind::kAuto, rule::ChannelKind::kAuto,
                                    rule::ChannelKind::kAuto, rule::ChannelKind::kAuto};

@@ -1,0 +1,57 @@
+#include "driver/project/shadertoy_project.h"
+
+#include <algorithm>
+
+namespace shaderport::driver::project {
+
+const ChannelBinding* ProjectPass::Input(int channel) const {
+  for (const ChannelBinding& input : inputs)
+    if (input.channel == channel) return &input;
+  return nullptr;
+}
+
+const ProjectPass* ShaderToyProject::Find(ShaderToyPass kind) const {
+  for (const ProjectPass& pass : passes)
+    if (pass.kind == kind) return &pass;
+  return nullptr;
+}
+
+std::vector<const ProjectPass*> ShaderToyProject::BuffersInOrder() const {
+  std::vector<const ProjectPass*> buffers;
+  for (const ProjectPass& pass : passes)
+    if (pass.kind == ShaderToyPass::kBuffer && pass.output_buffer >= 0) buffers.push_back(&pass);
+  std::stable_sort(buffers.begin(), buffers.end(), [](const ProjectPass* a, const ProjectPass* b) {
+    return a->output_buffer < b->output_buffer;
+  });
+  return buffers;
+}
+
+std::optional<int> BufferIndexFromName(std::string_view tab_name) {
+  if (tab_name.size() != 8 || !tab_name.starts_with("Buffer ")) return std::nullopt;
+  const char letter = tab_name[7];
+  if (letter < 'A' || letter > 'D') return std::nullopt;
+  return letter - 'A';
+}
+
+std::string BufferTabName(int index) {
+  return std::string("Buffer ") + static_cast<char>('A' + index);
+}
+
+std::string FolderFileName(const ProjectPass& pass) {
+  switch (pass.kind) {
+    case ShaderToyPass::kCommon:
+      return "common.glsl";
+    case ShaderToyPass::kCubemap:
+      return "cube-a.glsl";
+    case ShaderToyPass::kSound:
+      return "sound.glsl";
+    case ShaderToyPass::kImage:
+      return "image.glsl";
+    case ShaderToyPass::kBuffer:
+      return std::string("buffer-") + static_cast<char>('a' + std::max(pass.output_buffer, 0)) +
+             ".glsl";
+  }
+  return "image.glsl";
+}
+
+}  // namespace shaderport::driver::project
