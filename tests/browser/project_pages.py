@@ -38,6 +38,7 @@ SIZE = 64
 MARK = "data-injected"
 # name -> frames; compared with render.
 COMPARED = {"feedback": 3, "buffer_order": 4, "textures": 1, "uniforms": 2}
+MOUSE = {"uniforms": "20,30,10,-12"}  # iMouse as render's --mouse sets it
 EXACT = {"textures": 2}  # largest per-channel difference allowed anywhere
 PAGE_ONLY = {"cube_pass": 2, "keyboard": 1, "broken": 1, "injection": 1}
 
@@ -123,8 +124,9 @@ def render(binary, work, name, frames):
     with open(record, "w") as f:
         json.dump(record_of(json.load(open(os.path.join(DATA, name + ".json")))), f)
     png = os.path.join(work, name + ".render.png")
+    mouse = ["--mouse=" + MOUSE[name]] if name in MOUSE else []
     done = subprocess.run([binary, "render", record, "--size", "%dx%d" % (SIZE, SIZE), "--frames",
-                           str(frames), "--time", "1", "--hermetic", "-o", png],
+                           str(frames), "--time", "1", "--hermetic", "-o", png] + mouse,
                           capture_output=True, text=True, timeout=120)
     if not os.path.exists(png):
         return None, "render drew nothing (exit %d): %s" % (done.returncode, done.stderr.strip())
@@ -134,8 +136,10 @@ def render(binary, work, name, frames):
 def page_result(chromium, binary, fixture, work, name, frames):
     page = os.path.join(work, name + ".html")
     source = make_page(binary, fixture, os.path.join(DATA, name + ".json"), page)
-    dom_text, console = chromium_dom(chromium, work, page,
-                                     "#time=1&frames=%d&size=%dx%d" % (frames, SIZE, SIZE))
+    fragment = "#time=1&frames=%d&size=%dx%d" % (frames, SIZE, SIZE)
+    if name in MOUSE:
+        fragment += "&mouse=" + MOUSE[name]
+    dom_text, console = chromium_dom(chromium, work, page, fragment)
     with open(os.path.join(work, name + ".dom.html"), "w") as f:
         f.write(dom_text)
     dom = Dom()
@@ -233,6 +237,20 @@ def check_injection(r, problems):
         problems.append("injection: <title> lost the payload text: %r" % dom.title)
 
 
+def check_live(chromium, work, problems):
+    """Without the test parameters the page animates (requestAnimationFrame)."""
+    page = os.path.join(work, "feedback.html")
+    dom_text, console = chromium_dom(chromium, work, page, "")
+    dom = Dom()
+    dom.feed(dom_text)
+    state = dom.attrs.get("sp-state", {})
+    if state.get("data-state") != "running" or int(state.get("data-frames", "0")) < 2:
+        problems.append("live: the page does not animate: %s" % state)
+    if dom.text.get("sp-log", "").strip():
+        problems.append("live: the page logged: %s" % dom.text["sp-log"].strip())
+    problems += ["live: console: " + line for line in console]
+
+
 def control_catches(chromium, work):
     """A page with a raw payload must trip the checks, or they prove nothing."""
     page = os.path.join(work, "control.html")
@@ -274,6 +292,7 @@ def main():
             else:
                 check_page_only(name, r, problems)
             measured.append("%s: page from %s" % (name, r["source"]))
+    check_live(chromium, work, problems)
     for line in measured:
         print("project_pages: " + line)
     for problem in problems:

@@ -32,6 +32,13 @@
   const startTime = params.has("time") ? Number(params.get("time")) : (fixedTime ? 1.0 : 0.0);
   const startFrame = params.has("frame") ? (Number(params.get("frame")) | 0) : 0;
   const frameLimit = params.has("frames") ? Math.max(1, Number(params.get("frames")) | 0) : 0;
+  // mouse=x,y[,z,w]: iMouse as render's --mouse gives it, until the first click.
+  let fixedMouse = null;
+  if (params.has("mouse")) {
+    fixedMouse = params.get("mouse").split(",").map(Number).slice(0, 4);
+    while (fixedMouse.length < 4) fixedMouse.push(0);
+    if (fixedMouse.some((v) => !isFinite(v))) fixedMouse = null;
+  }
   let fixedSize = null;
   if (params.has("size")) {
     const m = /^(\d+)x(\d+)$/.exec(params.get("size"));
@@ -452,7 +459,8 @@
       date = [d.getFullYear(), d.getMonth(), d.getDate(),
               d.getHours() * 3600 + d.getMinutes() * 60 + d.getSeconds() + d.getMilliseconds() / 1000];
     }
-    const m = [mouse.x, mouse.y, mouse.down ? mouse.ox : -mouse.ox, mouse.click ? mouse.oy : -mouse.oy];
+    const m = fixedMouse ||
+      [mouse.x, mouse.y, mouse.down ? mouse.ox : -mouse.ox, mouse.click ? mouse.oy : -mouse.oy];
     return {time: t, delta: fixedTime ? 1 / 60 : delta, fps: fixedTime ? 60 : fps, frame: frame,
             mouse: m, date: date};
   }
@@ -562,6 +570,9 @@
 
   // --- Controls ------------------------------------------------------------------------------
   const pauseButton = $("sp-pause");
+  // While paused, a click still draws a frame (as on the site) so iMouse shows.
+  let forced = false;
+  function forceFrame() { if (paused) forced = true; }
   function setPaused(p) {
     paused = p;
     pauseButton.textContent = paused ? "Resume" : "Pause";
@@ -616,11 +627,16 @@
     mouse.oy = mouse.y;
     mouse.down = true;
     mouse.click = true;
+    fixedMouse = null;
+    forceFrame();
   });
   canvas.addEventListener("pointermove", (e) => {
     if (mouse.down) [mouse.x, mouse.y] = canvasPoint(e);
   });
-  const release = () => { mouse.down = false; };
+  const release = () => {
+    mouse.down = false;
+    forceFrame();
+  };
   canvas.addEventListener("pointerup", release);
   canvas.addEventListener("pointercancel", release);
 
@@ -699,7 +715,8 @@
     if (lost) return;
     const dt = Math.max(0, (now - last) / 1000);
     last = now;
-    if (resize() && paused) drawFrame();
+    if ((resize() || forced) && paused) drawFrame();
+    forced = false;
     if (!paused) {
       // The first frame after a (re)start is drawn at the start time.
       if (!fixedTime && frame !== startFrame) {
@@ -712,6 +729,7 @@
     }
     showClock();
     setState(paused ? "paused" : "running");
+    stateEl.setAttribute("data-frames", String(drawnFrames));
     requestAnimationFrame(tick);
   }
   setState("running");
