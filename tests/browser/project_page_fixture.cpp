@@ -1,8 +1,9 @@
 // Writes the project page of a ShaderToy JSON project (the site's API export or a
 // corpus record) with each pass composed as the site compiles it (header, Common,
 // the pass, main(): validate/shadertoy_contract.h), the same text `render` draws.
-// For tests/browser/project_pages.py, independent of the port pipeline.
-//   project_page_fixture PROJECT.json OUT.html
+// For tests/browser/project_pages.py, independent of the port pipeline; with
+// --port, the passes go through the port (PortProject) and PageFromPorted instead.
+//   project_page_fixture [--port] PROJECT.json OUT.html
 #include <algorithm>
 #include <fstream>
 #include <iostream>
@@ -10,6 +11,8 @@
 #include <sstream>
 
 #include "driver/project/html_page.h"
+#include "driver/project/json_project_reader.h"
+#include "driver/project/port_project.h"
 #include "validate/shadertoy_contract.h"
 
 namespace {
@@ -74,16 +77,39 @@ PageInput ReadInput(const nlohmann::json& input) {
   return page;
 }
 
+// The page through the project reader and the port, as `port --emit html` makes it.
+int PortedPage(const std::string& path, const std::string& text, std::ofstream& out) {
+  const ProjectDocument document = ReadShaderToyJson(text);
+  if (document.projects.empty()) {
+    std::cerr << "no project in " << path << "\n";
+    return 1;
+  }
+  shaderport::SourceManager sources;
+  const auto container =
+      std::make_shared<const shaderport::SourceFile>(shaderport::kNoFile, path, text);
+  const ProjectSources registered =
+      AddProjectSources(path, container, document.projects[0], 0, false, sources);
+  const PortedProject ported = PortProject(registered, shaderport::driver::PortOptions{}, sources);
+  out << BuildProjectPage(PageFromPorted(ported));
+  return out ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 3) {
-    std::cerr << "usage: project_page_fixture PROJECT.json OUT.html\n";
+  const bool port = argc == 4 && std::string(argv[1]) == "--port";
+  if (argc != 3 && !port) {
+    std::cerr << "usage: project_page_fixture [--port] PROJECT.json OUT.html\n";
     return 2;
   }
+  if (port) ++argv;
   std::ifstream in(argv[1], std::ios::binary);
   std::stringstream text;
   text << in.rdbuf();
+  if (port) {
+    std::ofstream out(argv[2], std::ios::binary);
+    return PortedPage(argv[1], text.str(), out);
+  }
   nlohmann::json doc = nlohmann::json::parse(text.str(), nullptr, false);
   if (doc.is_discarded()) {
     std::cerr << "not JSON: " << argv[1] << "\n";

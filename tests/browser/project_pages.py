@@ -13,8 +13,10 @@ For each project in tests/browser/project_pages/ (ShaderToy API exports):
     texel for texel (the procedural textures are the same bytes);
   - page-only projects (Cube A, keyboard, a compile error, injection payloads) check
     what the page itself shows.
-The pages come from `shaderport port --emit html` when the binary offers it, else
-from the fixture tool (the passes composed as the site composes them).
+Every project is checked twice: with the passes composed as the site composes them
+(the fixture tool: header, Common, pass, main(), the text render draws), which tests
+the page's runtime alone, and ported (`shaderport port --emit html` when the binary
+offers it, else the fixture tool's --port: PortProject and PageFromPorted).
   project_pages.py SHADERPORT_BINARY FIXTURE_BINARY WORK_DIR
 """
 import base64
@@ -98,14 +100,17 @@ def chromium_dom(chromium, work, page, fragment):
     return done.stdout, console
 
 
-def make_page(binary, fixture, project, out):
-    """`port --emit html` when the binary has it, else the fixture tool."""
+def make_page(binary, fixture, mode, project, out):
+    """site: the fixture's composition; ported: `port --emit html`, else fixture --port."""
+    if mode == "site":
+        subprocess.run([fixture, project, out], check=True, timeout=60)
+        return "fixture (site composition)"
     done = subprocess.run([binary, "port", project, "--emit", "html", "-o", out],
                           capture_output=True, text=True, timeout=120)
     if done.returncode in (0, 1) and os.path.exists(out):
-        return "port"
-    subprocess.run([fixture, project, out], check=True, timeout=60)
-    return "fixture"
+        return "shaderport port --emit html"
+    subprocess.run([fixture, "--port", project, out], check=True, timeout=120)
+    return "fixture --port (PortProject)"
 
 
 def record_of(export):
@@ -133,74 +138,74 @@ def render(binary, work, name, frames):
     return pngio.read_png(png), ""
 
 
-def page_result(chromium, binary, fixture, work, name, frames):
-    page = os.path.join(work, name + ".html")
-    source = make_page(binary, fixture, os.path.join(DATA, name + ".json"), page)
+def page_result(chromium, binary, fixture, work, mode, name, frames):
+    page = os.path.join(work, mode, name + ".html")
+    source = make_page(binary, fixture, mode, os.path.join(DATA, name + ".json"), page)
     fragment = "#time=1&frames=%d&size=%dx%d" % (frames, SIZE, SIZE)
     if name in MOUSE:
         fragment += "&mouse=" + MOUSE[name]
     dom_text, console = chromium_dom(chromium, work, page, fragment)
-    with open(os.path.join(work, name + ".dom.html"), "w") as f:
+    with open(os.path.join(work, mode, name + ".dom.html"), "w") as f:
         f.write(dom_text)
     dom = Dom()
     dom.feed(dom_text)
     pixels = None
     if dom.text.get("sp-pixels"):
         pixels = (SIZE, SIZE, base64.b64decode(dom.text["sp-pixels"].strip()))
-        pngio.write_png(os.path.join(work, name + ".page.png"), *pixels)
+        pngio.write_png(os.path.join(work, mode, name + ".page.png"), *pixels)
     return {"dom": dom, "raw": dom_text, "console": console, "pixels": pixels, "source": source}
 
 
-def clean_run(name, r, problems):
+def clean_run(label, r, problems):
     dom = r["dom"]
     state = dom.attrs.get("sp-state", {}).get("data-state")
     if state != "done":
-        problems.append("%s: page state %r, not done" % (name, state))
+        problems.append("%s: page state %r, not done" % (label, state))
     log = dom.text.get("sp-log", "").strip()
     if log:
-        problems.append("%s: the page logged: %s" % (name, log))
+        problems.append("%s: the page logged: %s" % (label, log))
     if dom.text.get("sp-errors", "").strip() and "hidden" not in dom.attrs.get("sp-errors", {}):
-        problems.append("%s: error panel shown: %s" % (name, dom.text["sp-errors"].strip()))
+        problems.append("%s: error panel shown: %s" % (label, dom.text["sp-errors"].strip()))
     for line in r["console"]:
-        problems.append("%s: console: %s" % (name, line))
+        problems.append("%s: console: %s" % (label, line))
     if r["pixels"] is None:
-        problems.append("%s: no pixels published" % name)
+        problems.append("%s: no pixels published" % label)
 
 
 def max_difference(a, b):
     return max(abs(x - y) for i, (x, y) in enumerate(zip(a[2], b[2])) if i % 4 != 3)
 
 
-def check_compared(name, r, reference, problems, measured):
-    clean_run(name, r, problems)
+def check_compared(name, label, r, reference, problems, measured):
+    clean_run(label, r, problems)
     if r["pixels"] is None or reference is None:
         return
     c = compare_pictures.compare(r["pixels"], reference)
     worst = max_difference(r["pixels"], reference)
     measured.append("%s: %s; largest pixel difference %d" %
-                    (name, compare_pictures.describe(c), worst))
+                    (label, compare_pictures.describe(c), worst))
     if not c.match:
-        problems.append("%s: page and render differ: %s" % (name, compare_pictures.describe(c)))
+        problems.append("%s: page and render differ: %s" % (label, compare_pictures.describe(c)))
     if name in EXACT and worst > EXACT[name]:
-        problems.append("%s: a texel differs by %d (> %d) from render" % (name, worst, EXACT[name]))
+        problems.append("%s: a texel differs by %d (> %d) from render" % (label, worst, EXACT[name]))
 
 
-def check_page_only(name, r, problems):
+def check_page_only(name, label, r, problems):
     dom = r["dom"]
     if name == "broken":
         state = dom.attrs.get("sp-state", {}).get("data-state")
         panel = dom.text.get("sp-errors", "")
         if state != "error":
-            problems.append("broken: state %r, not error" % state)
+            problems.append(label + ": state %r, not error" % state)
         if "hidden" in dom.attrs.get("sp-errors", {}):
-            problems.append("broken: the error panel is hidden")
+            problems.append(label + ": the error panel is hidden")
         if "Buffer A:3:" not in panel or "undefined_name" not in panel:
-            problems.append("broken: the panel does not put the error on Buffer A:3: %r" % panel)
+            problems.append(label + ": the panel does not put the error on Buffer A:3: %r" % panel)
         for line in r["console"]:
             if "undefined_name" not in line:
-                problems.append("broken: console: %s" % line)
+                problems.append(label + ": console: %s" % line)
         return
-    clean_run(name, r, problems)
+    clean_run(label, r, problems)
     px = r["pixels"]
     if px is None:
         return
@@ -208,38 +213,38 @@ def check_page_only(name, r, problems):
     if name == "keyboard":
         bad = sum(1 for i in range(0, len(rgba), 4) if tuple(rgba[i:i + 3]) != (0, 255, 0))
         if bad:
-            problems.append("keyboard: %d pixels say the keyboard texture is wrong" % bad)
+            problems.append(label + ": %d pixels say the keyboard texture is wrong" % bad)
     if name == "cube_pass":
         left = [rgba[(y * w + x) * 4 + c] for y in range(h) for x in range(w // 2 - 1)
                 for c in range(3)]
         right = [rgba[(y * w + x) * 4 + c] for y in range(h) for x in range(w // 2 + 1, w)
                  for c in range(3)]
         if max(right) > 24:
-            problems.append("cube_pass: Cube A differs from its ray directions by %d/255" % max(right))
+            problems.append(label + ": Cube A differs from its ray directions by %d/255" % max(right))
         if sum(left) / len(left) < 40:
-            problems.append("cube_pass: the cube map looks empty")
+            problems.append(label + ": the cube map looks empty")
     if name == "injection":
-        check_injection(r, problems)
+        check_injection(label, r, problems)
 
 
-def check_injection(r, problems):
+def check_injection(label, r, problems):
     dom = r["dom"]
     if MARK in dom.body:
-        problems.append("injection: a payload ran: body %s=%s" % (MARK, dom.body[MARK]))
+        problems.append(label + ": a payload ran: body %s=%s" % (MARK, dom.body[MARK]))
     if dom.scripts != 2:
-        problems.append("injection: %d <script> elements, expected the page's 2" % dom.scripts)
+        problems.append(label + ": %d <script> elements, expected the page's 2" % dom.scripts)
     if dom.handlers:
-        problems.append("injection: event handler attributes: %s" % dom.handlers)
+        problems.append(label + ": event handler attributes: %s" % dom.handlers)
     shown = html.unescape(dom.text.get("sp-title", ""))
     if "</script><script>" not in shown or "onerror=" not in shown:
-        problems.append("injection: the title does not show the payload as text: %r" % shown)
+        problems.append(label + ": the title does not show the payload as text: %r" % shown)
     if "</script><script>" not in html.unescape(dom.title):
-        problems.append("injection: <title> lost the payload text: %r" % dom.title)
+        problems.append(label + ": <title> lost the payload text: %r" % dom.title)
 
 
 def check_live(chromium, work, problems):
     """Without the test parameters the page animates (requestAnimationFrame)."""
-    page = os.path.join(work, "feedback.html")
+    page = os.path.join(work, "ported", "feedback.html")
     dom_text, console = chromium_dom(chromium, work, page, "")
     dom = Dom()
     dom.feed(dom_text)
@@ -278,20 +283,25 @@ def main():
         print("project_pages: the control page's payload did not run", file=sys.stderr)
         return 1
     jobs = dict(COMPARED, **PAGE_ONLY)
+    modes = ("site", "ported")
+    for mode in modes:
+        os.makedirs(os.path.join(work, mode))
     with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
-        pages = {n: pool.submit(page_result, chromium, binary, fixture, work, n, f)
-                 for n, f in jobs.items()}
         renders = {n: pool.submit(render, binary, work, n, f) for n, f in COMPARED.items()}
-        for name in jobs:
-            r = pages[name].result()
-            if name in COMPARED:
-                reference, why = renders[name].result()
-                if reference is None:
-                    problems.append("%s: %s" % (name, why))
-                check_compared(name, r, reference, problems, measured)
-            else:
-                check_page_only(name, r, problems)
-            measured.append("%s: page from %s" % (name, r["source"]))
+        pages = {(m, n): pool.submit(page_result, chromium, binary, fixture, work, m, n, f)
+                 for m in modes for n, f in jobs.items()}
+        for mode in modes:
+            for name in jobs:
+                r = pages[(mode, name)].result()
+                label = "%s (%s)" % (name, mode)
+                if name in COMPARED:
+                    reference, why = renders[name].result()
+                    if reference is None:
+                        problems.append("%s: %s" % (label, why))
+                    check_compared(name, label, r, reference, problems, measured)
+                else:
+                    check_page_only(name, label, r, problems)
+            measured.append("%s pages from %s" % (mode, r["source"]))
     check_live(chromium, work, problems)
     for line in measured:
         print("project_pages: " + line)

@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "driver/project/port_project.h"
+
 namespace shaderport::driver::project {
 namespace {
 
@@ -112,7 +114,104 @@ std::string ValidText(const std::string& text) {
   return nlohmann::json::parse(quoted).get<std::string>();
 }
 
+PageInputKind InputKindOf(ChannelSource source) {
+  switch (source) {
+    case ChannelSource::kNone:
+      return PageInputKind::kNone;
+    case ChannelSource::kBuffer:
+      return PageInputKind::kBuffer;
+    case ChannelSource::kCubeBuffer:
+      return PageInputKind::kCubeBuffer;
+    case ChannelSource::kTexture:
+      return PageInputKind::kTexture;
+    case ChannelSource::kCubemap:
+      return PageInputKind::kCubemap;
+    case ChannelSource::kVolume:
+      return PageInputKind::kVolume;
+    case ChannelSource::kKeyboard:
+      return PageInputKind::kKeyboard;
+    case ChannelSource::kVideo:
+      return PageInputKind::kVideo;
+    case ChannelSource::kAudio:
+      return PageInputKind::kAudio;
+  }
+  return PageInputKind::kNone;
+}
+
+// The tab a user line came from, by its source file.
+std::string TabOf(const PortedProject& ported, const SourceFile* file) {
+  if (file == nullptr) return {};
+  for (const PassSource& source : ported.sources.passes) {
+    if (source.file == file && source.pass != nullptr) return source.pass->name;
+  }
+  return file->Name();
+}
+
+// "Buffer A:3: message" for each error the port left on a pass without text.
+std::string PortErrors(const PortedProject& ported, const PortedPass& pass) {
+  std::string out;
+  for (const Diagnostic& d : pass.result.diagnostics) {
+    if (d.severity != Severity::kError) continue;
+    std::string where = pass.pass != nullptr ? pass.pass->name : std::string("pass");
+    for (const PassSource& source : ported.sources.passes) {
+      if (source.file == nullptr || source.file->Id() != d.range.file) continue;
+      where = (source.pass != nullptr ? source.pass->name : source.file->Name()) + ":" +
+              std::to_string(source.file->LocationOf(d.range.begin).line);
+    }
+    out += where + ": " + d.message + " [" + d.rule_id + "]\n";
+  }
+  return out.empty() ? "the port produced no shader text" : out;
+}
+
 }  // namespace
+
+PageProject PageFromPorted(const PortedProject& ported) {
+  PageProject page;
+  if (ported.project != nullptr) {
+    page.name = ported.project->name;
+    page.id = ported.project->id;
+    page.author = ported.project->author;
+  }
+  for (const PortedPass& pass : ported.passes) {
+    if (pass.pass == nullptr || pass.pass->kind == ShaderToyPass::kCommon) continue;
+    PagePass out;
+    out.tab_name = pass.pass->name;
+    out.kind = pass.pass->kind;
+    out.output_buffer = pass.pass->output_buffer;
+    for (const ChannelBinding& binding : pass.pass->inputs) {
+      out.inputs.push_back({binding.channel, InputKindOf(binding.source), binding.buffer,
+                            binding.sampler.filter, binding.sampler.wrap, binding.sampler.vflip});
+    }
+    if (!pass.result.read_failed) out.fragment_shader = pass.result.text;
+    if (out.fragment_shader.empty()) out.port_errors = PortErrors(ported, pass);
+    std::vector<LineOrigin> origins;
+    origins.reserve(pass.line_origins.size());
+    for (const UserLine& line : pass.line_origins)
+      origins.push_back({TabOf(ported, line.file), line.line});
+    out.lines = LineRunsFromOrigins(origins);
+    page.passes.push_back(std::move(out));
+  }
+  return page;
+}
+
+std::vector<PageLineRun> LineRunsFromOrigins(const std::vector<LineOrigin>& lines) {
+  std::vector<PageLineRun> runs;
+  for (size_t i = 0; i < lines.size(); ++i) {
+    const LineOrigin& line = lines[i];
+    if (line.origin.empty() || line.line == 0) continue;
+    const auto ported = static_cast<uint32_t>(i + 1);
+    if (!runs.empty()) {
+      PageLineRun& last = runs.back();
+      if (last.origin == line.origin && last.ported_first + last.count == ported &&
+          last.user_first + last.count == line.line) {
+        ++last.count;
+        continue;
+      }
+    }
+    runs.push_back({ported, 1, line.origin, line.line});
+  }
+  return runs;
+}
 
 std::string PageProjectJson(const PageProject& project, const PageOptions& options) {
   nlohmann::json passes = nlohmann::json::array();

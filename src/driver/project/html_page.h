@@ -75,6 +75,21 @@ struct PageOptions {
 // the script element or be parsed as markup.
 std::string BuildProjectPage(const PageProject& project, const PageOptions& options = {});
 
+struct PortedProject;  // driver/project/port_project.h
+
+// The page of a ported project: each pass's ported text and line origins, its tab,
+// output and inputs. A pass the port left without text gets its error findings as
+// `port_errors`.
+PageProject PageFromPorted(const PortedProject& ported);
+
+// Runs from one origin per ported line (index 0: line 1): consecutive lines of one
+// origin with consecutive user lines form a run; an empty origin is generated text.
+struct LineOrigin {
+  std::string origin;  // tab name, or empty
+  uint32_t line = 0;   // 1-based in that tab
+};
+std::vector<PageLineRun> LineRunsFromOrigins(const std::vector<LineOrigin>& lines);
+
 // The JSON the page embeds (exposed for tests).
 std::string PageProjectJson(const PageProject& project, const PageOptions& options = {});
 

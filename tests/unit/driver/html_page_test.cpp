@@ -108,6 +108,25 @@ TEST(HtmlPage, ComposedLineRunsWithoutCommon) {
   EXPECT_EQ(runs[0].user_first, 1u);
 }
 
+TEST(HtmlPage, LineRunsFromOrigins) {
+  const std::vector<LineOrigin> lines = {
+      {"", 0},      {"", 0},      {"Common", 1}, {"Common", 2}, {"Image", 1},
+      {"Image", 2}, {"Image", 4}, {"", 0},       {"Image", 5},
+  };
+  const auto runs = LineRunsFromOrigins(lines);
+  ASSERT_EQ(runs.size(), 4u);
+  EXPECT_EQ(runs[0].ported_first, 3u);
+  EXPECT_EQ(runs[0].count, 2u);
+  EXPECT_EQ(runs[0].origin, "Common");
+  EXPECT_EQ(runs[1].ported_first, 5u);
+  EXPECT_EQ(runs[1].count, 2u);
+  EXPECT_EQ(runs[1].user_first, 1u);
+  EXPECT_EQ(runs[2].ported_first, 7u);  // a user line skipped: a new run
+  EXPECT_EQ(runs[2].user_first, 4u);
+  EXPECT_EQ(runs[3].ported_first, 9u);
+  EXPECT_EQ(runs[3].user_first, 5u);
+}
+
 TEST(HtmlPage, RuntimeIsInlineAndLoadsNothing) {
   const std::string page = BuildProjectPage(PageProject{});
   EXPECT_NE(page.find("getContext(\"webgl2\""), std::string::npos);
