@@ -52,10 +52,9 @@ void AddProjectJobs(const FileJob& base, SourceManager& sources,
     report.file = &sources.Add(name, text);
     report.dialect = "shadertoy";
     for (const project::ProjectProblem& problem : document.problems) {
-      report.diagnostics.push_back(MakeDiagnostic(Severity::kError, "input/invalid-project",
-                                                  {report.file->Id(), problem.offset,
-                                                   problem.offset},
-                                                  problem.message));
+      report.diagnostics.push_back(
+          MakeDiagnostic(Severity::kError, "input/invalid-project",
+                         {report.file->Id(), problem.offset, problem.offset}, problem.message));
     }
     if (document.projects.empty() && document.problems.empty()) {
       report.diagnostics.push_back(MakeDiagnostic(Severity::kError, "input/invalid-project",

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <fstream>
 #include <set>
 #include <system_error>
 
@@ -19,6 +20,19 @@ bool IsShaderExtension(const fs::path& path) {
 }
 
 namespace {
+
+// A walked .json/.jsonl file is taken only when its start names ShaderToy's pass
+// arrays: a repository's package.json or tsconfig.json is not a shader.
+bool LooksLikeShaderToyDocument(const fs::path& path) {
+  const std::string extension = path.extension().string();
+  if (extension != ".json" && extension != ".jsonl") return false;
+  std::ifstream in(path, std::ios::binary);
+  std::string head(65536, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<size_t>(in.gcount()));
+  return head.find("\"renderpass\"") != std::string::npos ||
+         head.find("\"passes\"") != std::string::npos;
+}
 
 // The files under `root`, sorted; what could not be walked goes to `problems`.
 std::vector<fs::path> WalkDirectory(const fs::path& root, std::vector<std::string>& problems) {
@@ -45,7 +59,9 @@ std::vector<fs::path> WalkDirectory(const fs::path& root, std::vector<std::strin
       }
       continue;
     }
-    if (fs::is_regular_file(status) && IsShaderExtension(it->path())) found.push_back(it->path());
+    if (fs::is_regular_file(status) &&
+        (IsShaderExtension(it->path()) || LooksLikeShaderToyDocument(it->path())))
+      found.push_back(it->path());
   }
   if (error) problems.push_back(root.string() + ": " + error.message());
   std::sort(problems.begin() + static_cast<std::ptrdiff_t>(first_problem), problems.end());

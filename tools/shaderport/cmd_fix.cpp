@@ -12,10 +12,12 @@
 #include <vector>
 
 #include "commands.h"
+#include "driver/check_projects.h"
 #include "driver/port/file_lock.h"
 #include "driver/port/output_files.h"
 #include "driver/port/port_file.h"
 #include "driver/port/port_report.h"
+#include "driver/project/fix_document.h"
 #include "driver/read_input.h"
 #include "port_arguments.h"
 
@@ -64,6 +66,29 @@ int Emit(const FixArgs& args, const driver::PortResult& result, const std::files
   return kExitOk;
 }
 
+// A ShaderToy JSON document: the fixed code goes back into its code strings only.
+int EmitDocument(const FixArgs& args, const driver::project::FixedDocument& fixed,
+                 const std::filesystem::path& path) {
+  if (fixed.read_failed) return kExitFindings;
+  driver::PortResult whole;
+  whole.file = fixed.document;
+  whole.text = fixed.text;
+  return Emit(args, whole, path);
+}
+
+// The passes' findings, and the document's own problems as a result of their own.
+void AddDocumentResults(driver::project::FixedDocument fixed,
+                        std::vector<driver::PortResult>& results) {
+  if (!fixed.problems.empty()) {
+    driver::PortResult problems;
+    problems.file = fixed.document;
+    problems.read_failed = true;
+    problems.diagnostics = std::move(fixed.problems);
+    results.push_back(std::move(problems));
+  }
+  for (driver::PortResult& pass : fixed.passes) results.push_back(std::move(pass));
+}
+
 int RunFix(const FixArgs& args) {
   SourceManager sources;
   driver::PortOptions options;
@@ -81,8 +106,16 @@ int RunFix(const FixArgs& args) {
     if (args.in_place) return Usage("standard input cannot be fixed in place");
     const std::filesystem::path name =
         args.stdin_filename.empty() ? "<stdin>" : args.stdin_filename;
-    results.push_back(driver::PortInput(name, driver::ReadInputStream(std::cin), options, sources));
-    exit_code = Emit(args, results.back(), name);
+    if (driver::IsProjectDocument(name)) {
+      driver::project::FixedDocument fixed =
+          driver::project::FixDocument(name, driver::ReadInputStream(std::cin), options, sources);
+      exit_code = EmitDocument(args, fixed, name);
+      AddDocumentResults(std::move(fixed), results);
+    } else {
+      results.push_back(
+          driver::PortInput(name, driver::ReadInputStream(std::cin), options, sources));
+      exit_code = Emit(args, results.back(), name);
+    }
   } else {
     bool config_failed = false;
     const auto inputs = SelectInputFiles("fix", args.input, config_failed);
@@ -104,6 +137,13 @@ int RunFix(const FixArgs& args) {
       // waits, then reads (and leaves alone) the text written here.
       const driver::FileUpdateLock lock =
           args.in_place ? driver::FileUpdateLock(input.path) : driver::FileUpdateLock();
+      if (driver::IsProjectDocument(input.path)) {
+        driver::project::FixedDocument fixed = driver::project::FixDocument(
+            input.path, driver::ReadInputFile(input.path), options, sources);
+        exit_code = std::max(exit_code, EmitDocument(args, fixed, input.path));
+        AddDocumentResults(std::move(fixed), results);
+        continue;
+      }
       results.push_back(driver::PortFile(input.path, options, sources));
       exit_code = std::max(exit_code, Emit(args, results.back(), input.path));
     }

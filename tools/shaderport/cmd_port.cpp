@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "driver/check_projects.h"
 #include "driver/dialect.h"
 #include "driver/parallel_for.h"
 #include "driver/port/emit_ported.h"
@@ -21,6 +22,7 @@
 #include "driver/port/port_report.h"
 #include "driver/read_input.h"
 #include "port_arguments.h"
+#include "port_projects.h"
 #include "progress_line.h"
 #include "rule/harness_dialect.h"
 #include "toolchain/emit.h"
@@ -51,7 +53,10 @@ int Usage(const std::string& message) {
 int RunPort(const PortArgs& args) {
   const std::optional<ProgressMode> progress_mode = ParseProgressMode(args.progress);
   if (!progress_mode) return Usage("unknown --progress '" + args.progress + "'");
-  const auto emit_kind = toolchain::EmitKindFromName(args.emit);
+  // A page is made from the ported shaders: the port itself runs as for essl.
+  const bool emit_html = args.emit == "html";
+  const auto emit_kind = emit_html ? std::optional(toolchain::EmitKind::kEssl)
+                                   : toolchain::EmitKindFromName(args.emit);
   if (!emit_kind) {
     std::fprintf(stderr, "shaderport port: unknown --emit kind '%s'\n", args.emit.c_str());
     return kExitUsage;
@@ -80,6 +85,17 @@ int RunPort(const PortArgs& args) {
   if (inputs->empty()) {
     std::fprintf(stderr, "shaderport port: warning: no shader files in the given paths\n");
     return config_exit;
+  }
+  // ShaderToy projects (and any input of --emit html) give several files or a page.
+  const bool any_project = std::any_of(
+      inputs->begin(), inputs->end(),
+      [](const driver::InputFile& input) { return driver::IsProjectDocument(input.path); });
+  if (emit_html || any_project) {
+    if (*emit_kind != toolchain::EmitKind::kEssl)
+      return Usage("ShaderToy JSON projects are ported with --emit essl or --emit html");
+    const int code =
+        PortProjectInputs(*inputs, options, {args.output, args.out_dir, emit_html}, sources);
+    return std::max(code, config_exit);
   }
 
   ProgressLine progress(*progress_mode, "porting");
@@ -169,8 +185,10 @@ void AddPortCommand(CLI::App& app, int& exit_code) {
   command->add_option("--dialect", args->dialect, "shadertoy|webgl1|webgl2 or a dialect TOML");
   command->add_option("--channel", args->channels, "Sampler type of a channel: N=2d|cube|3d");
   command->add_option("--stage", args->stage, "vertex|fragment (default: detected)");
-  command->add_option("--emit", args->emit,
-                      "essl (default), spirv, spvasm, hlsl, msl, essl-roundtrip, reflect");
+  command->add_option(
+      "--emit", args->emit,
+      "essl (default), spirv, spvasm, hlsl, msl, essl-roundtrip, reflect, html (a WebGL2 "
+      "page per ShaderToy project or pass)");
   command->add_option("--opt", args->optimize, "Optimise the SPIR-V: O (speed) or Os (size)");
   command->add_option("--hlsl-shader-model", args->hlsl_shader_model,
                       "HLSL shader model for --emit hlsl, e.g. 50 (default) or 60");

@@ -1,0 +1,49 @@
+// `shaderport port` of a ShaderToy JSON document: each project ported pass by pass
+// (port_project.h), and the files that result: one WebGL2 shader per drawn pass, or
+// one page per project (--emit html).
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "driver/project/json_project_reader.h"
+#include "driver/project/port_project.h"
+#include "driver/read_input.h"
+
+namespace shaderport::driver::project {
+
+struct PortedDocument {
+  const SourceFile* document = nullptr;
+  bool read_failed = false;  // unreadable or not a project: `problems` says why
+  DiagnosticList problems;
+  std::unique_ptr<ProjectDocument> read;  // the projects `ported` points into
+  std::vector<PortedProject> ported;      // one per project
+
+  // Every finding once, for the text report (the document's problems included).
+  PortResult Findings() const;
+};
+
+PortedDocument PortDocument(const std::filesystem::path& path, InputText input,
+                            const PortOptions& options, SourceManager& sources);
+
+// A ShaderToy pass on its own (a .glsl file), ported as a project with one Image
+// tab; findings stay on the file.
+PortedDocument PortSinglePass(const std::filesystem::path& path, InputText input,
+                              const PortOptions& options, SourceManager& sources);
+
+struct DocumentOutput {
+  // Below the output base: "image.frag", "buffer-a.frag", or with several projects
+  // "<id>/image.frag"; for pages "" (one project) or "<id>.html".
+  std::filesystem::path relative;
+  std::string text;
+};
+
+// The ported shaders of every drawn pass (Common is inlined; a Sound pass is
+// written too, for a page of the user's own).
+std::vector<DocumentOutput> ShaderOutputs(const PortedDocument& document);
+// One page per project.
+std::vector<DocumentOutput> PageOutputs(const PortedDocument& document);
+
+}  // namespace shaderport::driver::project

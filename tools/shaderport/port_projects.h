@@ -1,0 +1,25 @@
+// `shaderport port` of ShaderToy JSON documents (and, for --emit html, of single
+// ShaderToy passes): a shader per pass under --out-dir, or a page per project.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "driver/input_files.h"
+#include "driver/port/port_file.h"
+
+namespace shaderport::cli {
+
+struct ProjectPortTargets {
+  std::string output;   // -o
+  std::string out_dir;  // --out-dir
+  bool html = false;    // --emit html
+};
+
+// Ports `inputs` (each a .json/.jsonl document, or with `html` a ShaderToy pass),
+// writes what they give and prints the findings; returns the exit code.
+int PortProjectInputs(const std::vector<driver::InputFile>& inputs,
+                      const driver::PortOptions& options, const ProjectPortTargets& targets,
+                      SourceManager& sources);
+
+}  // namespace shaderport::cli
