@@ -90,8 +90,8 @@ CheckCache::CheckCache(const CheckOptions& options, const std::vector<FileJob>& 
 
 FileReport CheckCache::Check(size_t index, SourceManager& sources) {
   const FileJob& job = jobs_[index];
-  // Passes of JSON projects are not cached: the key knows nothing of their tab and inputs.
-  if (job.source != nullptr) return CheckFile(job, options_, sources);
+  // Passes of projects are not cached: the key knows nothing of their tab and inputs.
+  if (job.source != nullptr || job.pass) return CheckFile(job, options_, sources);
   InputText input = ReadInputFile(job.path);
   // A file that cannot be read is reported by CheckFile, as without a cache.
   if (!input.text) return CheckFile(job, options_, sources);

@@ -77,6 +77,7 @@ CheckRun RunCheck(const CheckOptions& options) {
       continue;
     }
     job.common = CommonFor(input.path, options, commons, sources, run);
+    ApplyFolderTab(job);
     jobs.push_back(std::move(job));
   }
   for (FileReport& problem : configs.TakeProblems()) run.report.files.push_back(std::move(problem));
@@ -91,7 +92,7 @@ CheckRun RunCheck(const CheckOptions& options) {
     }
   }
   for (FileJob& job : jobs) {
-    if (job.common == nullptr || job.pass) continue;  // a project's Common is a job itself
+    if (job.common == nullptr || job.source != nullptr) continue;  // JSON: Common is a job
     job.common_checked_separately =
         canonical_inputs.contains(fs::weakly_canonical(job.common->Name()));
   }

@@ -2,6 +2,7 @@
 
 #include <memory>
 
+#include "driver/project/folder_project.h"
 #include "driver/project/project_sources.h"
 #include "driver/read_input.h"
 
@@ -22,6 +23,19 @@ validate::ChannelTypes ChannelTypesOf(const project::ProjectPass& pass) {
 }
 
 }  // namespace
+
+bool ApplyFolderTab(FileJob& job) {
+  int buffer = -1;
+  const std::optional<ShaderToyPass> tab = project::TabOfFile(job.path, buffer);
+  const std::filesystem::path directory =
+      job.path.parent_path().empty() ? std::filesystem::path(".") : job.path.parent_path();
+  if (!tab || !project::IsProjectFolder(directory)) return false;
+  project::ProjectPass pass;
+  pass.inputs = project::FolderPassInputs(job.path);
+  job.pass = *tab;
+  job.channels = ChannelTypesOf(pass);
+  return true;
+}
 
 bool IsProjectDocument(const std::filesystem::path& path) {
   const std::filesystem::path extension = path.extension();

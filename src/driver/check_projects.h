@@ -23,4 +23,8 @@ void AddProjectJobs(const FileJob& base, SourceManager& sources,
                     std::deque<project::ProjectDocument>& documents, std::vector<FileJob>& jobs,
                     std::vector<FileReport>& problems);
 
+// A file of a project folder (a tab file beside shadertoy.toml): its tab and the
+// sampler types of the manifest's channels; false for any other file.
+bool ApplyFolderTab(FileJob& job);
+
 }  // namespace shaderport::driver

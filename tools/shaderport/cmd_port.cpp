@@ -53,10 +53,11 @@ int Usage(const std::string& message) {
 int RunPort(const PortArgs& args) {
   const std::optional<ProgressMode> progress_mode = ParseProgressMode(args.progress);
   if (!progress_mode) return Usage("unknown --progress '" + args.progress + "'");
-  // A page is made from the ported shaders: the port itself runs as for essl.
+  // A page is made from the ported shaders; a folder is the project as written.
   const bool emit_html = args.emit == "html";
-  const auto emit_kind = emit_html ? std::optional(toolchain::EmitKind::kEssl)
-                                   : toolchain::EmitKindFromName(args.emit);
+  const bool emit_folder = args.emit == "folder";
+  const auto emit_kind = emit_html || emit_folder ? std::optional(toolchain::EmitKind::kEssl)
+                                                  : toolchain::EmitKindFromName(args.emit);
   if (!emit_kind) {
     std::fprintf(stderr, "shaderport port: unknown --emit kind '%s'\n", args.emit.c_str());
     return kExitUsage;
@@ -87,14 +88,18 @@ int RunPort(const PortArgs& args) {
     return config_exit;
   }
   // ShaderToy projects (and any input of --emit html) give several files or a page.
-  const bool any_project = std::any_of(
-      inputs->begin(), inputs->end(),
-      [](const driver::InputFile& input) { return driver::IsProjectDocument(input.path); });
-  if (emit_html || any_project) {
+  const bool any_project =
+      std::any_of(inputs->begin(), inputs->end(), [](const driver::InputFile& input) {
+        return driver::IsProjectDocument(input.path) || !InputProjectFolder(input.path).empty();
+      });
+  if (emit_html || emit_folder || any_project) {
     if (*emit_kind != toolchain::EmitKind::kEssl)
-      return Usage("ShaderToy JSON projects are ported with --emit essl or --emit html");
+      return Usage("ShaderToy projects are ported with --emit essl, html or folder");
+    const ProjectEmit emit = emit_html     ? ProjectEmit::kHtml
+                             : emit_folder ? ProjectEmit::kFolder
+                                           : ProjectEmit::kShaders;
     const int code =
-        PortProjectInputs(*inputs, options, {args.output, args.out_dir, emit_html}, sources);
+        PortProjectInputs(*inputs, options, {args.output, args.out_dir, emit}, sources);
     return std::max(code, config_exit);
   }
 

@@ -6,6 +6,8 @@
 
 #include "commands.h"
 #include "driver/check_file.h"
+#include "driver/check_projects.h"
+#include "driver/project/folder_project.h"
 #include "driver/render_check/render_file.h"
 #include "driver/render_check/render_multipass.h"
 #include "render/png_io.h"
@@ -93,11 +95,15 @@ int RunRender(const RenderArgs& args) {
     options.common = driver::LoadSharedFile(args.common, sources, error);
     if (options.common == nullptr) return Usage(error);
   }
-  // A .json file is a ShaderToy export (all passes); anything else is one shader.
-  driver::RenderFileResult result =
-      std::filesystem::path(args.path).extension() == ".json"
-          ? driver::RenderShaderToyJsonFile(args.path, sources, options)
-          : driver::RenderFile(args.path, sources, options);
+  // A ShaderToy project (JSON export or record, .jsonl, a project folder) is drawn
+  // with all its passes; anything else is one shader.
+  const std::filesystem::path path(args.path);
+  std::error_code directory_error;
+  const bool project =
+      driver::IsProjectDocument(path) ||
+      (std::filesystem::is_directory(path, directory_error) && driver::project::IsProjectFolder(path));
+  driver::RenderFileResult result = project ? driver::RenderProject(path, sources, options)
+                                            : driver::RenderFile(args.path, sources, options);
   int code = kExitOk;
   if (result.image && !args.output.empty()) {
     std::string error;

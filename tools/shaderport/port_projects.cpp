@@ -4,15 +4,25 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <set>
 
 #include "commands.h"
 #include "driver/check_projects.h"
 #include "driver/port/output_files.h"
 #include "driver/port/port_report.h"
+#include "driver/project/folder_project.h"
 #include "driver/project/port_document.h"
 
 namespace shaderport::cli {
 namespace fs = std::filesystem;
+
+fs::path InputProjectFolder(const fs::path& file) {
+  int buffer = -1;
+  const fs::path directory = file.parent_path().empty() ? fs::path(".") : file.parent_path();
+  if (!driver::project::TabOfFile(file, buffer) || !driver::project::IsProjectFolder(directory))
+    return {};
+  return directory;
+}
 
 int PortProjectInputs(const std::vector<driver::InputFile>& inputs,
                       const driver::PortOptions& options, const ProjectPortTargets& targets,
@@ -22,27 +32,42 @@ int PortProjectInputs(const std::vector<driver::InputFile>& inputs,
   std::vector<fs::path> target_paths;
   std::vector<std::string> texts;
   int exit_code = kExitOk;
+  std::set<fs::path> folders_done;
   for (const driver::InputFile& input : inputs) {
-    driver::InputText text = driver::ReadInputFile(input.path);
-    documents.push_back(
-        driver::IsProjectDocument(input.path)
-            ? driver::project::PortDocument(input.path, std::move(text), options, sources)
-            : driver::project::PortSinglePass(input.path, std::move(text), options, sources));
-    const auto outputs = targets.html ? driver::project::PageOutputs(documents.back())
-                                      : driver::project::ShaderOutputs(documents.back());
+    // A tab file of a project folder stands for the whole folder, ported once.
+    const fs::path folder = InputProjectFolder(input.path);
+    fs::path relative = input.relative;
+    if (!folder.empty()) {
+      if (!folders_done.insert(folder).second) continue;
+      documents.push_back(driver::project::PortFolder(folder, options, sources));
+      relative = relative.parent_path().empty() ? folder.filename() : relative.parent_path();
+    } else if (driver::IsProjectDocument(input.path)) {
+      documents.push_back(
+          driver::project::PortDocument(input.path, driver::ReadInputFile(input.path), options,
+                                        sources, targets.emit != ProjectEmit::kFolder));
+    } else {
+      documents.push_back(driver::project::PortSinglePass(
+          input.path, driver::ReadInputFile(input.path), options, sources));
+    }
+    const auto outputs =
+        targets.emit == ProjectEmit::kHtml     ? driver::project::PageOutputs(documents.back())
+        : targets.emit == ProjectEmit::kFolder ? driver::project::FolderOutputs(documents.back())
+                                               : driver::project::ShaderOutputs(documents.back());
     const bool single = outputs.size() == 1;
     if (!single && targets.out_dir.empty() && !outputs.empty()) {
       std::fprintf(stderr, "shaderport port: %s gives %zu files: use --out-dir%s\n",
                    input.path.string().c_str(), outputs.size(),
-                   targets.html ? "" : " (or --emit html for one page)");
+                   targets.emit == ProjectEmit::kShaders ? " (or --emit html for one page)" : "");
       return kExitUsage;
     }
     for (const driver::project::DocumentOutput& output : outputs) {
       fs::path target;
       if (!targets.out_dir.empty()) {
         // doc.json -> OUT/doc/image.frag, OUT/doc.html (or OUT/doc/<id>.html).
-        const fs::path base = driver::OutDirPath(targets.out_dir, input.relative, "");
-        if (targets.html && output.relative.empty()) {
+        const fs::path base =
+            folder.empty() ? driver::OutDirPath(targets.out_dir, relative, "")
+                           : driver::OutDirPath(targets.out_dir, relative / "x", "").parent_path();
+        if (targets.emit == ProjectEmit::kHtml && output.relative.empty()) {
           target = base.string() + ".html";
         } else {
           target = base / output.relative;

@@ -10,11 +10,21 @@
 
 namespace shaderport::cli {
 
+enum class ProjectEmit {
+  kShaders,  // a WebGL2 shader per pass (--emit essl)
+  kHtml,     // a page per project (--emit html)
+  kFolder,   // the project folder layout, code as written (--emit folder)
+};
+
 struct ProjectPortTargets {
   std::string output;   // -o
   std::string out_dir;  // --out-dir
-  bool html = false;    // --emit html
+  ProjectEmit emit = ProjectEmit::kShaders;
 };
+
+// The project folder `file` is a tab file of ("" when none): its directory holds
+// shadertoy.toml.
+std::filesystem::path InputProjectFolder(const std::filesystem::path& file);
 
 // Ports `inputs` (each a .json/.jsonl document, or with `html` a ShaderToy pass),
 // writes what they give and prints the findings; returns the exit code.

@@ -1,5 +1,6 @@
 #include "driver/project/port_document.h"
 
+#include "driver/project/folder_project.h"
 #include "driver/project/html_page.h"
 
 namespace shaderport::driver::project {
@@ -38,7 +39,7 @@ PortResult PortedDocument::Findings() const {
 }
 
 PortedDocument PortDocument(const std::filesystem::path& path, InputText input,
-                            const PortOptions& options, SourceManager& sources) {
+                            const PortOptions& options, SourceManager& sources, bool port) {
   PortedDocument out;
   const std::string name = path.string();
   if (!input.text) {
@@ -66,6 +67,7 @@ PortedDocument PortDocument(const std::filesystem::path& path, InputText input,
     out.read_failed = true;
     return out;
   }
+  if (!port) return out;
   const auto container = std::make_shared<const SourceFile>(kNoFile, name, std::string(text));
   const bool several = out.read->projects.size() > 1;
   for (size_t i = 0; i < out.read->projects.size(); ++i) {
@@ -93,6 +95,40 @@ PortedDocument PortSinglePass(const std::filesystem::path& path, InputText input
   out.document = registered.passes.front().file;
   out.ported.push_back(PortProject(registered, options, sources));
   return out;
+}
+
+PortedDocument PortFolder(const std::filesystem::path& directory, const PortOptions& options,
+                          SourceManager& sources) {
+  PortedDocument out;
+  const std::filesystem::path manifest = directory / kManifestName;
+  out.read = std::make_unique<ProjectDocument>(ReadFolderProject(directory));
+  out.document = &sources.Add(manifest.string(), "");
+  for (const ProjectProblem& problem : out.read->problems) {
+    out.problems.push_back(MakeDiagnostic(Severity::kError, "input/invalid-project",
+                                          {out.document->Id(), 0, 0}, problem.message));
+  }
+  if (!out.problems.empty() || out.read->projects.empty()) {
+    out.read_failed = true;
+    return out;
+  }
+  const ProjectSources registered =
+      AddProjectSources(manifest.string(), nullptr, out.read->projects.front(), 0, false, sources);
+  out.ported.push_back(PortProject(registered, options, sources));
+  return out;
+}
+
+std::vector<DocumentOutput> FolderOutputs(const PortedDocument& document) {
+  std::vector<DocumentOutput> outputs;
+  if (document.read == nullptr) return outputs;
+  const auto& projects = document.read->projects;
+  for (size_t i = 0; i < projects.size(); ++i) {
+    std::filesystem::path folder;
+    if (projects.size() > 1)
+      folder = IsSafeFileName(projects[i].id) ? projects[i].id : std::to_string(i);
+    for (auto& [name, text] : WriteFolderProject(projects[i]))
+      outputs.push_back({folder / name, std::move(text)});
+  }
+  return outputs;
 }
 
 std::vector<DocumentOutput> ShaderOutputs(const PortedDocument& document) {

@@ -19,19 +19,24 @@ struct PortedDocument {
   bool read_failed = false;  // unreadable or not a project: `problems` says why
   DiagnosticList problems;
   std::unique_ptr<ProjectDocument> read;  // the projects `ported` points into
-  std::vector<PortedProject> ported;      // one per project
+  std::vector<PortedProject> ported;      // one per project (when ported)
 
   // Every finding once, for the text report (the document's problems included).
   PortResult Findings() const;
 };
 
+// With `port` false the projects are only read (for FolderOutputs).
 PortedDocument PortDocument(const std::filesystem::path& path, InputText input,
-                            const PortOptions& options, SourceManager& sources);
+                            const PortOptions& options, SourceManager& sources, bool port = true);
 
 // A ShaderToy pass on its own (a .glsl file), ported as a project with one Image
 // tab; findings stay on the file.
 PortedDocument PortSinglePass(const std::filesystem::path& path, InputText input,
                               const PortOptions& options, SourceManager& sources);
+
+// A project folder (a directory with shadertoy.toml).
+PortedDocument PortFolder(const std::filesystem::path& directory, const PortOptions& options,
+                          SourceManager& sources);
 
 struct DocumentOutput {
   // Below the output base: "image.frag", "buffer-a.frag", or with several projects
@@ -45,5 +50,7 @@ struct DocumentOutput {
 std::vector<DocumentOutput> ShaderOutputs(const PortedDocument& document);
 // One page per project.
 std::vector<DocumentOutput> PageOutputs(const PortedDocument& document);
+// The folder layout of every project (the code as written, and shadertoy.toml).
+std::vector<DocumentOutput> FolderOutputs(const PortedDocument& document);
 
 }  // namespace shaderport::driver::project

@@ -29,7 +29,7 @@ ProjectSources AddProjectSources(const std::string& document,
       embedding->container = container;
       embedding->logical_name = several_projects ? name.substr(document.size() + 1) : pass.name;
       embedding->offsets = pass.origin.document_offsets;
-        file = &sources.AddEmbedded(std::move(name), pass.code, std::move(embedding));
+      file = &sources.AddEmbedded(std::move(name), pass.code, std::move(embedding));
     }
     out.passes.push_back({&pass, file});
     if (pass.kind == ShaderToyPass::kCommon && out.common == nullptr) out.common = file;

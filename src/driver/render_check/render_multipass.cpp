@@ -4,6 +4,9 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "driver/project/folder_project.h"
+#include "driver/project/json_project_reader.h"
+#include "driver/project/record_json.h"
 #include "driver/read_input.h"
 #include "driver/render_check/composed_text.h"
 
@@ -150,6 +153,46 @@ RenderFileResult RenderShaderToyJsonFile(const std::filesystem::path& path, Sour
     return result;
   }
   return RenderShaderToyJson(path.string(), *input.text, sources, options);
+}
+
+RenderFileResult RenderProject(const std::filesystem::path& path, SourceManager& sources,
+                               const RenderFileOptions& options) {
+  RenderFileResult result;
+  project::ProjectDocument document;
+  std::string name = path.string();
+  if (project::IsProjectFolder(path)) {
+    document = project::ReadFolderProject(path);
+    name = path.string();
+  } else {
+    InputText input = ReadInputFile(path);
+    if (!input.text) {
+      const SourceFile& empty = sources.Add(name, "");
+      result.file = &empty;
+      result.diagnostics.push_back(Note(empty.WholeRange(), input.message, Severity::kError));
+      result.diagnostics.back().rule_id = input.rule_id;
+      return result;
+    }
+    // The corpus record is what RenderShaderToyJson reads as it is.
+    const nlohmann::json probe = nlohmann::json::parse(*input.text, nullptr, false);
+    if (path.extension() == ".json" && probe.is_object() && probe.contains("passes"))
+      return RenderShaderToyJson(name, *input.text, sources, options);
+    document = path.extension() == ".jsonl" ? project::ReadShaderToyJsonLines(*input.text)
+                                            : project::ReadShaderToyJson(*input.text);
+  }
+  std::string problem;
+  if (!document.problems.empty()) problem = document.problems.front().message;
+  if (problem.empty() && document.projects.size() != 1)
+    problem = "the file holds " + std::to_string(document.projects.size()) +
+              " projects; render draws one (split the file)";
+  if (!problem.empty()) {
+    const SourceFile& file = sources.Add(name, "");
+    result.file = &file;
+    result.diagnostics.push_back(Note({file.Id(), 0, 0}, problem, Severity::kError));
+    result.diagnostics.back().rule_id = "input/invalid-project";
+    return result;
+  }
+  return RenderShaderToyJson(name, project::ToRecordJson(document.projects.front()), sources,
+                             options);
 }
 
 }  // namespace shaderport::driver

@@ -1,0 +1,59 @@
+#include "driver/project/record_json.h"
+
+#include <nlohmann/json.hpp>
+
+namespace shaderport::driver::project {
+namespace {
+
+const char* TypeName(ShaderToyPass kind) {
+  switch (kind) {
+    case ShaderToyPass::kImage:
+      return "image";
+    case ShaderToyPass::kBuffer:
+      return "buffer";
+    case ShaderToyPass::kCommon:
+      return "common";
+    case ShaderToyPass::kCubemap:
+      return "cube";
+    case ShaderToyPass::kSound:
+      return "sound";
+  }
+  return "image";
+}
+
+}  // namespace
+
+std::string ToRecordJson(const ShaderToyProject& project) {
+  nlohmann::ordered_json record = {{"id", project.id},
+                                   {"name", project.name},
+                                   {"author", project.author},
+                                   {"license", project.license}};
+  nlohmann::ordered_json passes = nlohmann::ordered_json::array();
+  for (const ProjectPass& pass : project.passes) {
+    nlohmann::ordered_json inputs = nlohmann::ordered_json::array();
+    for (const ChannelBinding& input : pass.inputs) {
+      // render finds a buffer input by its src, which exports by id may not spell so.
+      const std::string src = input.source == ChannelSource::kBuffer && input.buffer >= 0
+                                  ? "/media/previz/buffer0" + std::to_string(input.buffer) + ".png"
+                                  : input.src;
+      inputs.push_back({{"channel", input.channel},
+                        {"ctype", input.ctype},
+                        {"src", src},
+                        {"sampler",
+                         {{"filter", input.sampler.filter},
+                          {"wrap", input.sampler.wrap},
+                          {"vflip", input.sampler.vflip ? "true" : "false"}}}});
+    }
+    std::string name = pass.name;
+    if (pass.kind == ShaderToyPass::kBuffer && pass.output_buffer >= 0)
+      name = BufferTabName(pass.output_buffer);  // render finds buffers by tab name
+    passes.push_back({{"type", TypeName(pass.kind)},
+                      {"name", name},
+                      {"code", pass.code},
+                      {"inputs", std::move(inputs)}});
+  }
+  record["passes"] = std::move(passes);
+  return record.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+}
+
+}  // namespace shaderport::driver::project
