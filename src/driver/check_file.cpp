@@ -76,9 +76,9 @@ validate::ValidationRequest ComposeRequest(const FileJob& job, const CheckOption
     return request;
   }
   const bool is_common = kind.pass == ShaderToyPass::kCommon;
-  validate::ValidationRequest request = validate::ComposeShaderToyRequest(
-      sources, ToPassType(kind.pass), ChannelsOf(job, options), is_common ? nullptr : job.common,
-      file);
+  validate::ValidationRequest request =
+      validate::ComposeShaderToyRequest(sources, ToPassType(kind.pass), ChannelsOf(job, options),
+                                        is_common ? nullptr : job.common, file);
   // Common code has no entry point of its own: the site only compiles it inside
   // a pass, so here it is compiled but not linked.
   if (is_common) request.link = false;
@@ -101,8 +101,7 @@ void Finalize(const FileJob& job, const SourceFile& file, const FrontEndResult& 
 // Smoke-renders a file that validated (WebGL1 code through its port).
 void RenderChecked(const SourceFile& file, const DetectedKind& kind, const SourceFile* common,
                    const validate::ChannelTypes& channels, const CheckOptions& options,
-                   SourceManager& sources,
-                   DiagnosticList& diagnostics) {
+                   SourceManager& sources, DiagnosticList& diagnostics) {
   RenderFileOptions render_options;
   render_options.base.width = static_cast<uint32_t>(options.render_size);
   render_options.base.height = static_cast<uint32_t>(options.render_size);
@@ -151,7 +150,8 @@ const SourceFile* LoadSharedFile(const std::filesystem::path& path, SourceManage
 FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceManager& sources) {
   FileReport report;
   InputText input;
-  if (job.source == nullptr) input = job.contents != nullptr ? *job.contents : ReadInputFile(job.path);
+  if (job.source == nullptr)
+    input = job.contents != nullptr ? *job.contents : ReadInputFile(job.path);
   if (job.source == nullptr && !input.text) {
     report.file = &sources.Add(job.path.string(), "");
     report.diagnostics.push_back(MakeDiagnostic(Severity::kError, std::move(input.rule_id),
