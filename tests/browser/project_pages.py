@@ -18,6 +18,9 @@ Every project is checked twice: with the passes composed as the site composes th
 the page's runtime alone, and ported (`shaderport port --emit html` when the binary
 offers it, else the fixture tool's --port: PortProject and PageFromPorted).
   project_pages.py SHADERPORT_BINARY FIXTURE_BINARY WORK_DIR
+Measuring on a corpus (not part of ctest): every project with a Buffer pass in a
+ShaderToy .jsonl, both ways, against render:
+  project_pages.py --corpus CORPUS.jsonl [--limit N] [--frames N] SHADERPORT FIXTURE WORK
 """
 import base64
 import concurrent.futures
@@ -85,14 +88,14 @@ class Dom(html.parser.HTMLParser):
             self.title += data
 
 
-def chromium_dom(chromium, work, page, fragment):
+def chromium_dom(chromium, work, page, fragment, timeout=120):
     profile = tempfile.mkdtemp(prefix="chromium-", dir=work)
     done = subprocess.run(
         [chromium, "--headless", "--no-sandbox", "--disable-gpu", "--use-angle=swiftshader",
          "--enable-unsafe-swiftshader", "--disable-background-networking", "--disable-extensions",
          "--no-first-run", "--user-data-dir=" + profile, "--virtual-time-budget=10000",
          "--enable-logging=stderr", "--v=0", "--dump-dom", "file://" + page + fragment],
-        capture_output=True, text=True, timeout=120)
+        capture_output=True, text=True, timeout=timeout)
     shutil.rmtree(profile, ignore_errors=True)
     # Performance notes of the GL driver (a ReadPixels stall) are not problems.
     console = [line for line in done.stderr.splitlines()
@@ -268,7 +271,83 @@ def control_catches(chromium, work):
     return MARK in dom.body
 
 
+def measure_corpus(argv):
+    """Pages of a corpus's multipass projects against render; prints one line each."""
+    import argparse
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--corpus", required=True)
+    ap.add_argument("--limit", type=int, default=0)
+    ap.add_argument("--frames", type=int, default=3)
+    ap.add_argument("binary")
+    ap.add_argument("fixture")
+    ap.add_argument("work")
+    args = ap.parse_args(argv)
+    chromium = shutil.which(os.environ.get("CHROMIUM", "chromium"))
+    shutil.rmtree(args.work, ignore_errors=True)
+    for mode in ("site", "ported"):
+        os.makedirs(os.path.join(args.work, mode))
+    records = []
+    with open(args.corpus) as f:
+        for line in f:
+            record = json.loads(line)
+            if any(p.get("type") == "buffer" for p in record.get("passes", [])):
+                records.append(record)
+    if args.limit:
+        records = records[:args.limit]
+
+    def one(record):
+        key = record["id"]
+        path = os.path.join(args.work, key + ".json")
+        with open(path, "w") as f:
+            json.dump(record, f)
+        png = os.path.join(args.work, key + ".render.png")
+        try:
+            subprocess.run([args.binary, "render", path, "--size", "%dx%d" % (SIZE, SIZE),
+                            "--frames", str(args.frames), "--time", "1", "--hermetic", "-o", png],
+                           capture_output=True, timeout=120)
+        except subprocess.TimeoutExpired:
+            pass
+        reference = pngio.read_png(png) if os.path.exists(png) else None
+        out = {"id": key}
+        for mode in ("site", "ported"):
+            page = os.path.join(args.work, mode, key + ".html")
+            try:
+                command = [args.fixture] + (["--port"] if mode == "ported" else []) + [path, page]
+                subprocess.run(command, check=True, capture_output=True, timeout=120)
+                text, _ = chromium_dom(chromium, args.work, page, "#time=1&frames=%d&size=%dx%d" %
+                                       (args.frames, SIZE, SIZE), timeout=60)
+            except (subprocess.CalledProcessError, subprocess.TimeoutExpired) as e:
+                out[mode] = "page-failed " + type(e).__name__
+                continue
+            dom = Dom()
+            dom.feed(text)
+            state = dom.attrs.get("sp-state", {}).get("data-state")
+            if state != "done" or not dom.text.get("sp-pixels"):
+                out[mode] = "state-%s %s" % (state, dom.text.get("sp-log", "").strip()[:160])
+                continue
+            pixels = (SIZE, SIZE, base64.b64decode(dom.text["sp-pixels"].strip()))
+            if reference is None:
+                out[mode] = "no-render"
+                continue
+            c = compare_pictures.compare(pixels, reference)
+            out[mode] = "%s %.1f" % ("match" if c.match else "MISMATCH", c.worst)
+        return out
+
+    counts = {}
+    with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
+        for out in pool.map(one, records):
+            print("%s site=%s ported=%s" % (out["id"], out.get("site"), out.get("ported")),
+                  flush=True)
+            for mode in ("site", "ported"):
+                word = out.get(mode, "?").split(" ")[0]
+                counts[(mode, word)] = counts.get((mode, word), 0) + 1
+    print("%d projects with buffers: %s" % (len(records), sorted(counts.items())))
+    return 0
+
+
 def main():
+    if "--corpus" in sys.argv:
+        return measure_corpus(sys.argv[1:])
     binary, fixture, work = sys.argv[1], sys.argv[2], sys.argv[3]
     chromium = shutil.which(os.environ.get("CHROMIUM", "chromium"))
     if chromium is None:

@@ -4,8 +4,14 @@
 
 #include <algorithm>
 #include <cctype>
+#include <fstream>
+#include <memory>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
+
+#include "driver/project/json_project_reader.h"
+#include "driver/project/port_project.h"
 
 namespace shaderport::driver::project {
 namespace {
@@ -125,6 +131,52 @@ TEST(HtmlPage, LineRunsFromOrigins) {
   EXPECT_EQ(runs[2].user_first, 4u);
   EXPECT_EQ(runs[3].ported_first, 9u);
   EXPECT_EQ(runs[3].user_first, 5u);
+}
+
+// tests/browser/project_pages/broken.json: Common (2 lines), Buffer A with an error
+// on its line 3, Image reading Buffer A.
+TEST(HtmlPage, PageFromPortedKeepsTabsInputsAndUserLines) {
+  const std::string path =
+      std::string(SHADERPORT_SOURCE_DIR) + "/tests/browser/project_pages/broken.json";
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  const ProjectDocument document = ReadShaderToyJson(text.str());
+  ASSERT_EQ(document.projects.size(), 1u);
+  SourceManager sources;
+  const auto container = std::make_shared<const SourceFile>(kNoFile, path, text.str());
+  const ProjectSources registered =
+      AddProjectSources("broken.json", container, document.projects[0], 0, false, sources);
+  const PageProject page = PageFromPorted(PortProject(registered, PortOptions{}, sources));
+  EXPECT_EQ(page.name, "Broken Buffer A");
+  ASSERT_EQ(page.passes.size(), 2u);  // Common is inlined, not a pass
+  const PagePass& buffer = page.passes[0];
+  EXPECT_EQ(buffer.tab_name, "Buffer A");
+  EXPECT_EQ(buffer.kind, ShaderToyPass::kBuffer);
+  EXPECT_EQ(buffer.output_buffer, 0);
+  EXPECT_NE(buffer.fragment_shader.find("#version 300 es"), std::string::npos);
+  // The ported line holding `undefined_name` maps to Buffer A line 3.
+  const size_t at = buffer.fragment_shader.find("undefined_name");
+  ASSERT_NE(at, std::string::npos);
+  const auto line = static_cast<uint32_t>(
+      1 + std::count(buffer.fragment_shader.begin(), buffer.fragment_shader.begin() + at, '\n'));
+  bool mapped = false;
+  for (const PageLineRun& run : buffer.lines) {
+    if (line < run.ported_first || line >= run.ported_first + run.count) continue;
+    EXPECT_EQ(run.origin, "Buffer A");
+    EXPECT_EQ(run.user_first + (line - run.ported_first), 3u);
+    mapped = true;
+  }
+  EXPECT_TRUE(mapped);
+  EXPECT_TRUE(std::any_of(buffer.lines.begin(), buffer.lines.end(),
+                          [](const PageLineRun& run) { return run.origin == "Common"; }));
+  const PagePass& image = page.passes[1];
+  EXPECT_EQ(image.kind, ShaderToyPass::kImage);
+  ASSERT_EQ(image.inputs.size(), 1u);
+  EXPECT_EQ(image.inputs[0].kind, PageInputKind::kBuffer);
+  EXPECT_EQ(image.inputs[0].buffer, 0);
+  EXPECT_EQ(image.inputs[0].filter, "linear");
+  EXPECT_EQ(image.inputs[0].wrap, "clamp");
 }
 
 TEST(HtmlPage, RuntimeIsInlineAndLoadsNothing) {
