@@ -32,10 +32,11 @@ std::string ToRecordJson(const ShaderToyProject& project) {
   for (const ProjectPass& pass : project.passes) {
     nlohmann::ordered_json inputs = nlohmann::ordered_json::array();
     for (const ChannelBinding& input : pass.inputs) {
-      // render finds a buffer input by its src, which exports by id may not spell so.
-      const std::string src = input.source == ChannelSource::kBuffer && input.buffer >= 0
-                                  ? "/media/previz/buffer0" + std::to_string(input.buffer) + ".png"
-                                  : input.src;
+      // Drawn inputs are known by their src, which exports by id may not spell so.
+      std::string src = input.src;
+      if (input.source == ChannelSource::kBuffer && input.buffer >= 0)
+        src = "/media/previz/buffer0" + std::to_string(input.buffer) + ".png";
+      if (input.source == ChannelSource::kCubeBuffer) src = "/media/previz/cubemap00.png";
       inputs.push_back({{"channel", input.channel},
                         {"ctype", input.ctype},
                         {"src", src},
