@@ -275,6 +275,7 @@ std::string BuildProjectPage(const PageProject& project, const PageOptions& opti
   page += "<script type=\"application/json\" id=\"sp-project\">";
   page += PageProjectJson(project, options);
   page += "</script>\n<script>\n";
+  page += PageFile("textures.js");  // spResources(), used by the runtime
   page += PageFile("runtime.js");
   page += "</script>\n</body>\n</html>\n";
   return page;
