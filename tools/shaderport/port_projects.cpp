@@ -16,13 +16,7 @@
 namespace shaderport::cli {
 namespace fs = std::filesystem;
 
-fs::path InputProjectFolder(const fs::path& file) {
-  int buffer = -1;
-  const fs::path directory = file.parent_path().empty() ? fs::path(".") : file.parent_path();
-  if (!driver::project::TabOfFile(file, buffer) || !driver::project::IsProjectFolder(directory))
-    return {};
-  return directory;
-}
+fs::path InputProjectFolder(const fs::path& file) { return driver::project::ProjectFolderOf(file); }
 
 int PortProjectInputs(const std::vector<driver::InputFile>& inputs,
                       const driver::PortOptions& options, const ProjectPortTargets& targets,

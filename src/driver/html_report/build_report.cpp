@@ -6,7 +6,9 @@
 #include "driver/check_file.h"
 #include "driver/check_pipeline.h"
 #include "driver/html_report/png_base64.h"
+#include "driver/html_report/project_entry.h"
 #include "driver/html_report/render_ported.h"
+#include "driver/html_report/report_steps.h"
 #include "driver/input_files.h"
 #include "driver/parallel_for.h"
 #include "driver/port/port_file.h"
@@ -18,34 +20,6 @@ namespace shaderport::driver {
 namespace {
 
 namespace fs = std::filesystem;
-
-StepStatus StatusOf(const DiagnosticList& diagnostics) {
-  StepStatus status = StepStatus::kPass;
-  for (const Diagnostic& d : diagnostics) {
-    if (d.severity == Severity::kError) return StepStatus::kFail;
-    if (d.severity == Severity::kWarning) status = StepStatus::kWarn;
-  }
-  return status;
-}
-
-// Clang-style text of `diagnostics` (no summary line: the badges say it).
-std::string DiagnosticText(const SourceFile* file, DiagnosticList diagnostics,
-                           const SourceManager& sources) {
-  if (diagnostics.empty()) return "";
-  CheckReport report;
-  report.sources = &sources;
-  FileReport entry;
-  entry.file = file;
-  entry.diagnostics = std::move(diagnostics);
-  report.files.push_back(std::move(entry));
-  SortReport(report);
-  std::string text = FormatText(report, ReportOptions{});
-  // FormatText ends with a summary line; drop it.
-  while (!text.empty() && text.back() == '\n') text.pop_back();
-  const size_t last = text.rfind('\n');
-  text.resize(last == std::string::npos ? 0 : last + 1);
-  return text;
-}
 
 bool ReadFailed(const FileReport& report) {
   return std::any_of(report.diagnostics.begin(), report.diagnostics.end(), [](const auto& d) {
@@ -71,6 +45,9 @@ const SourceFile* CommonBeside(const fs::path& path, SourceManager& sources,
 
 struct Job {
   const FileReport* checked = nullptr;
+  // A ShaderToy project: the document or folder, and all its passes' reports.
+  std::filesystem::path project;
+  std::vector<const FileReport*> project_reports;
   fs::path path;
   const SourceFile* common = nullptr;
   bool shader = false;  // false: a config file's own findings, shown but not ported
@@ -140,7 +117,19 @@ HtmlReportRun BuildHtmlReport(const HtmlReportOptions& options) {
 
   std::map<fs::path, const SourceFile*> commons;
   std::vector<Job> jobs;
+  std::map<fs::path, size_t> project_jobs;  // a project's passes share one entry
   for (const FileReport& report : checked.report.files) {
+    if (const fs::path project = ProjectOfReport(report); !project.empty()) {
+      auto [it, added] = project_jobs.emplace(project, jobs.size());
+      if (added) {
+        Job job;
+        job.checked = &report;
+        job.project = project;
+        jobs.push_back(std::move(job));
+      }
+      jobs[it->second].project_reports.push_back(&report);
+      continue;
+    }
     Job job;
     job.checked = &report;
     if (report.file != nullptr) {
@@ -159,6 +148,10 @@ HtmlReportRun BuildHtmlReport(const HtmlReportOptions& options) {
   ParallelFor(jobs.size(), render::ParallelRenderJobs(options.jobs), [&](size_t i) {
     const Job& job = jobs[i];
     ReportEntry& entry = entries[i];
+    if (!job.project.empty()) {
+      FillProjectEntry(job.project, job.project_reports, options, sources, entry);
+      return;
+    }
     const FileReport& report = *job.checked;
     entry.path = report.file != nullptr ? std::string(report.file->Name()) : "";
     entry.dialect = report.dialect;

@@ -178,6 +178,13 @@ std::optional<ShaderToyPass> TabOfFile(const fs::path& file, int& buffer) {
   return tab->kind;
 }
 
+fs::path ProjectFolderOf(const fs::path& file) {
+  int buffer = -1;
+  const fs::path directory = file.parent_path().empty() ? fs::path(".") : file.parent_path();
+  if (!TabOfFile(file, buffer) || !IsProjectFolder(directory)) return {};
+  return directory;
+}
+
 std::vector<ChannelBinding> FolderPassInputs(const fs::path& file) {
   const fs::path directory = file.parent_path().empty() ? fs::path(".") : file.parent_path();
   if (!IsProjectFolder(directory)) return {};

@@ -30,6 +30,10 @@ bool IsProjectFolder(const std::filesystem::path& directory);
 // The tab a file of a project folder stands for ("buffer-c.glsl" -> Buffer C).
 std::optional<ShaderToyPass> TabOfFile(const std::filesystem::path& file, int& buffer);
 
+// The project folder `file` is a tab file of ("" when none): its directory holds
+// shadertoy.toml.
+std::filesystem::path ProjectFolderOf(const std::filesystem::path& file);
+
 // Reads the manifest and the tab files beside it; problems carry no offsets (0) and
 // name the file in their message.
 ProjectDocument ReadFolderProject(const std::filesystem::path& directory);
