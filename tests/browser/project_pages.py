@@ -28,15 +28,20 @@ import html
 import html.parser
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
 import tempfile
+import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "tools", "browser"))
 import compare_pictures  # noqa: E402
 import pngio  # noqa: E402
+
+sys.path.insert(0, HERE)
+import cdp_pipe  # noqa: E402
 
 DATA = os.path.join(HERE, "project_pages")
 SIZE = 64
@@ -259,6 +264,146 @@ def check_live(chromium, work, problems):
     problems += ["live: console: " + line for line in console]
 
 
+# Reads the canvas at the middle of each 16-pixel column (the interaction project's).
+_READ_COLUMNS = """(() => {
+  const c = document.getElementById('sp-canvas');
+  const t = document.createElement('canvas');
+  t.width = c.width; t.height = c.height;
+  const g = t.getContext('2d');
+  g.drawImage(c, 0, 0);
+  return [8, 24, 40, 56].map((x) => Array.from(g.getImageData(x, 8, 1, 1).data).slice(0, 3));
+})()"""
+
+
+class Interaction:
+    """The interaction page in a browser driven over the DevTools protocol."""
+
+    def __init__(self, browser):
+        self.b = browser
+
+    def frame(self):
+        clock = self.b.evaluate("document.getElementById('sp-clock').textContent") or ""
+        m = re.search(r"iFrame (\d+)", clock)
+        return int(m.group(1)) if m else -1
+
+    def wait_frames(self, n, timeout=30):
+        start = self.frame()
+        deadline = time.time() + timeout
+        while self.frame() < start + n:
+            if time.time() > deadline:
+                raise TimeoutError("the page stopped drawing at iFrame %d" % self.frame())
+            time.sleep(0.05)
+
+    def columns(self):
+        return self.b.evaluate(_READ_COLUMNS)
+
+    def canvas_point(self, x, y):
+        r = self.b.evaluate("(() => { const r = document.getElementById('sp-canvas')"
+                            ".getBoundingClientRect(); return [r.left, r.top]; })()")
+        return r[0] + x + 0.5, r[1] + y + 0.5
+
+    def click(self, button_id):
+        self.b.evaluate("document.getElementById('%s').click()" % button_id)
+
+    def state(self):
+        return self.b.evaluate("document.getElementById('sp-state').getAttribute('data-state')")
+
+
+def expect(problems, what, got, want):
+    if got != want:
+        problems.append("interaction: %s: got %s, expected %s" % (what, got, want))
+
+
+def check_interaction(chromium, binary, fixture, work, problems):
+    """Mouse, keyboard, pause, space, restart and resize as on the site."""
+    page = os.path.join(work, "ported", "interaction.html")
+    make_page(binary, fixture, "ported", os.path.join(DATA, "interaction.json"), page)
+    browser = cdp_pipe.Browser(chromium, work)
+    try:
+        browser.open("file://" + page + "#size=64x64")
+        p = Interaction(browser)
+        p.wait_frames(3)
+        expect(problems, "iMouse before any click", p.columns()[:2], [[0, 0, 0], [0, 0, 0]])
+        # Press at canvas pixel (10, 20) from the top: iMouse.xy = (10, 43), z and w > 0.
+        x, y = p.canvas_point(10, 20)
+        browser.mouse("mousePressed", x, y, 1)
+        p.wait_frames(3)
+        c = p.columns()
+        expect(problems, "iMouse while down", c[0], [10, 43, 255])
+        expect(problems, "iMouse.zw after the click's frame", c[1], [10, 43, 0])
+        expect(problems, "iMouse.w > 0 on the click's frame (latched)", c[2][0], 255)
+        x, y = p.canvas_point(30, 40)
+        browser.mouse("mouseMoved", x, y, 1)
+        p.wait_frames(3)
+        expect(problems, "iMouse after dragging", p.columns()[0], [30, 23, 255])
+        browser.mouse("mouseReleased", x, y, 0)
+        p.wait_frames(3)
+        c = p.columns()
+        expect(problems, "iMouse after release (z < 0)", c[0], [30, 23, 0])
+        expect(problems, "|iMouse.zw| after release", c[1], [10, 43, 0])
+        # The click focused the canvas: keys go to the shader.
+        expect(problems, "canvas focused by the click",
+               browser.evaluate("document.activeElement.id"), "sp-canvas")
+        browser.key("keyDown", "a", "KeyA", 65)
+        p.wait_frames(3)
+        c = p.columns()
+        expect(problems, "key A down (row 0)", c[3][0], 255)
+        expect(problems, "key A pressed (row 1, latched) and toggled (row 2)", c[2][1:], [255, 255])
+        browser.key("keyUp", "a", "KeyA", 65)
+        p.wait_frames(3)
+        c = p.columns()
+        expect(problems, "key A up (row 0)", c[3][0], 0)
+        expect(problems, "key A still toggled (row 2)", c[2][2], 255)
+        # Pause and resume with the button, then with space (canvas not focused).
+        for how in ("button", "space"):
+            if how == "button":
+                p.click("sp-pause")
+            else:
+                browser.evaluate("document.getElementById('sp-canvas').blur()")
+                browser.key("keyDown", " ", "Space", 32)
+                browser.key("keyUp", " ", "Space", 32)
+            time.sleep(0.3)
+            before = p.frame()
+            time.sleep(0.5)
+            expect(problems, "iFrame while paused by " + how, p.frame(), before)
+            expect(problems, "state paused by " + how, p.state(), "paused")
+            if how == "button":
+                p.click("sp-pause")
+            else:
+                browser.key("keyDown", " ", "Space", 32)
+                browser.key("keyUp", " ", "Space", 32)
+            p.wait_frames(3)
+        # Restart: iFrame from 0 and the buffers cleared (Buffer A counts its frames).
+        p.wait_frames(20)
+        before = p.frame()
+        p.click("sp-restart")
+        time.sleep(0.1)
+        after, count = p.frame(), p.columns()[3][1]
+        if not (after < before and count <= after + 1):
+            problems.append("interaction: restart: iFrame %d -> %d, Buffer A counted %d frames" %
+                            (before, after, count))
+        # Resize: the canvas follows its element; buffers are reallocated and cleared.
+        browser.open("file://" + page)
+        p.wait_frames(20)
+        browser.send("Emulation.setDeviceMetricsOverride",
+                     {"width": 320, "height": 400, "deviceScaleFactor": 1, "mobile": False})
+        p.wait_frames(2)
+        size = browser.evaluate("[document.getElementById('sp-canvas').width,"
+                                " document.getElementById('sp-canvas').clientWidth]")
+        expect(problems, "canvas width after resize (= its element's)", size[0], size[1])
+        expect(problems, "canvas width after resize", size[0], 320)
+        if p.columns()[3][1] > p.frame() + 1 or p.columns()[3][1] > 60:
+            problems.append("interaction: buffers not cleared on resize: Buffer A counted %d" %
+                            p.columns()[3][1])
+        log = browser.evaluate("document.getElementById('sp-log').textContent").strip()
+        if log:
+            problems.append("interaction: the page logged: " + log)
+    except (TimeoutError, RuntimeError, EOFError) as e:
+        problems.append("interaction: %s" % e)
+    finally:
+        browser.close()
+
+
 def control_catches(chromium, work):
     """A page with a raw payload must trip the checks, or they prove nothing."""
     page = os.path.join(work, "control.html")
@@ -269,6 +414,26 @@ def control_catches(chromium, work):
     dom = Dom()
     dom.feed(dom_text)
     return MARK in dom.body
+
+
+def render_differs(record):
+    """Why render cannot draw what the site (and the page) draws, or ''."""
+    reasons = set()
+    for p in record.get("passes", []):
+        for i in p.get("inputs") or []:
+            ctype = i.get("ctype", "")
+            sampler = i.get("sampler") or {}
+            filt, wrap = sampler.get("filter", "mipmap"), sampler.get("wrap", "repeat")
+            if ctype == "keyboard":
+                reasons.add("keyboard")  # render: a procedural texture; the site: zeros
+            elif p.get("type") == "buffer" and ctype != "buffer":
+                reasons.add("media-in-buffer")  # render binds by the Image pass's channels
+            elif ctype == "buffer" and (filt != "linear" or wrap != "clamp"):
+                reasons.add("buffer-sampler")  # render: always linear, clamp
+            elif ctype in ("texture", "video", "music", "musicstream", "mic", "webcam") and (
+                    filt != "mipmap" or wrap != "repeat"):
+                reasons.add("texture-sampler")  # render: always mipmap, repeat
+    return ",".join(sorted(reasons))
 
 
 def measure_corpus(argv):
@@ -308,7 +473,7 @@ def measure_corpus(argv):
         except subprocess.TimeoutExpired:
             pass
         reference = pngio.read_png(png) if os.path.exists(png) else None
-        out = {"id": key}
+        out = {"id": key, "differs": render_differs(record)}
         for mode in ("site", "ported"):
             page = os.path.join(args.work, mode, key + ".html")
             try:
@@ -336,11 +501,13 @@ def measure_corpus(argv):
     counts = {}
     with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
         for out in pool.map(one, records):
-            print("%s site=%s ported=%s" % (out["id"], out.get("site"), out.get("ported")),
+            print("%s site=%s ported=%s render-differs=%s" %
+                  (out["id"], out.get("site"), out.get("ported"), out["differs"] or "-"),
                   flush=True)
             for mode in ("site", "ported"):
                 word = out.get(mode, "?").split(" ")[0]
-                counts[(mode, word)] = counts.get((mode, word), 0) + 1
+                group = "render-differs" if out["differs"] else "comparable"
+                counts[(group, mode, word)] = counts.get((group, mode, word), 0) + 1
     print("%d projects with buffers: %s" % (len(records), sorted(counts.items())))
     return 0
 
@@ -382,6 +549,7 @@ def main():
                     check_page_only(name, label, r, problems)
             measured.append("%s pages from %s" % (mode, r["source"]))
     check_live(chromium, work, problems)
+    check_interaction(chromium, binary, fixture, work, problems)
     for line in measured:
         print("project_pages: " + line)
     for problem in problems:
