@@ -87,6 +87,12 @@ class Browser:
                                              "windowsVirtualKeyCode": key_code,
                                              "nativeVirtualKeyCode": key_code})
 
+    def set_file(self, selector, path):
+        """Chooses `path` in the file input `selector`, as a user would."""
+        root = self.send("DOM.getDocument")["root"]["nodeId"]
+        node = self.send("DOM.querySelector", {"nodeId": root, "selector": selector})["nodeId"]
+        self.send("DOM.setFileInputFiles", {"files": [path], "nodeId": node})
+
     def close(self):
         self.process.kill()
         self.process.wait()

@@ -398,10 +398,36 @@ def check_interaction(chromium, binary, fixture, work, problems):
         log = browser.evaluate("document.getElementById('sp-log').textContent").strip()
         if log:
             problems.append("interaction: the page logged: " + log)
+        check_texture_file(browser, binary, fixture, work, problems)
     except (TimeoutError, RuntimeError, EOFError) as e:
         problems.append("interaction: %s" % e)
     finally:
         browser.close()
+
+
+def check_texture_file(browser, binary, fixture, work, problems):
+    """A 2D channel's texture replaced by an image file (256x128 red): the textures
+    page's texel rows show it and iChannelResolution[0] is its size."""
+    page = os.path.join(work, "ported", "textures.html")
+    make_page(binary, fixture, "ported", os.path.join(DATA, "textures.json"), page)
+    image = os.path.join(work, "red.png")
+    pngio.write_png(image, 256, 128, bytes([255, 0, 0, 255] * (256 * 128)))
+    browser.open("file://" + page + "#size=64x64&time=1")
+    p = Interaction(browser)
+    p.wait_frames(2)
+    browser.set_file("#sp-channels input[type=file]", image)
+    deadline = time.time() + 30
+    read = "(() => { const c = document.getElementById('sp-canvas'); const t = " \
+           "document.createElement('canvas'); t.width = 64; t.height = 64; const g = " \
+           "t.getContext('2d'); g.drawImage(c, 0, 0); return [Array.from(g.getImageData(20, 58, " \
+           "1, 1).data).slice(0, 3), Array.from(g.getImageData(63, 0, 1, 1).data).slice(0, 3)]; })()"
+    while time.time() < deadline:
+        texel, resolution = browser.evaluate(read)
+        if texel == [255, 0, 0]:
+            break
+        time.sleep(0.1)
+    expect(problems, "a texel of the user's image", texel, [255, 0, 0])
+    expect(problems, "iChannelResolution[0] of the user's image / 256", resolution, [255, 128, 1])
 
 
 def control_catches(chromium, work):
