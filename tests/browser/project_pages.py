@@ -93,13 +93,14 @@ class Dom(html.parser.HTMLParser):
             self.title += data
 
 
-def chromium_dom(chromium, work, page, fragment, timeout=120):
+def chromium_dom(chromium, work, page, fragment, timeout=120, flags=()):
     profile = tempfile.mkdtemp(prefix="chromium-", dir=work)
     done = subprocess.run(
         [chromium, "--headless", "--no-sandbox", "--disable-gpu", "--use-angle=swiftshader",
          "--enable-unsafe-swiftshader", "--disable-background-networking", "--disable-extensions",
          "--no-first-run", "--user-data-dir=" + profile, "--virtual-time-budget=10000",
-         "--enable-logging=stderr", "--v=0", "--dump-dom", "file://" + page + fragment],
+         "--enable-logging=stderr", "--v=0"] + list(flags) +
+        ["--dump-dom", "file://" + page + fragment],
         capture_output=True, text=True, timeout=timeout)
     shutil.rmtree(profile, ignore_errors=True)
     # Performance notes of the GL driver (a ReadPixels stall) are not problems.
@@ -430,6 +431,18 @@ def check_texture_file(browser, binary, fixture, work, problems):
     expect(problems, "iChannelResolution[0] of the user's image / 256", resolution, [255, 128, 1])
 
 
+def check_without_webgl2(chromium, work, problems):
+    """Without WebGL the page says so instead of failing silently."""
+    page = os.path.join(work, "ported", "feedback.html")
+    dom_text, _ = chromium_dom(chromium, work, page, "", flags=["--disable-3d-apis"])
+    dom = Dom()
+    dom.feed(dom_text)
+    state = dom.attrs.get("sp-state", {}).get("data-state")
+    if state != "no-webgl2" or "hidden" in dom.attrs.get("sp-fallback", {"hidden": ""}):
+        problems.append("no WebGL2: state %r, fallback text %s" %
+                        (state, "hidden" if "hidden" in dom.attrs.get("sp-fallback", {}) else "shown"))
+
+
 def control_catches(chromium, work):
     """A page with a raw payload must trip the checks, or they prove nothing."""
     page = os.path.join(work, "control.html")
@@ -575,6 +588,7 @@ def main():
                     check_page_only(name, label, r, problems)
             measured.append("%s pages from %s" % (mode, r["source"]))
     check_live(chromium, work, problems)
+    check_without_webgl2(chromium, work, problems)
     check_interaction(chromium, binary, fixture, work, problems)
     for line in measured:
         print("project_pages: " + line)
