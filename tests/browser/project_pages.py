@@ -196,7 +196,8 @@ def check_compared(name, label, r, reference, problems, measured):
     if not c.match:
         problems.append("%s: page and render differ: %s" % (label, compare_pictures.describe(c)))
     if name in EXACT and worst > EXACT[name]:
-        problems.append("%s: a texel differs by %d (> %d) from render" % (label, worst, EXACT[name]))
+        problems.append("%s: a texel differs by %d (> %d) from render" %
+                        (label, worst, EXACT[name]))
 
 
 def check_page_only(name, label, r, problems):
@@ -229,7 +230,8 @@ def check_page_only(name, label, r, problems):
         right = [rgba[(y * w + x) * 4 + c] for y in range(h) for x in range(w // 2 + 1, w)
                  for c in range(3)]
         if max(right) > 24:
-            problems.append(label + ": Cube A differs from its ray directions by %d/255" % max(right))
+            problems.append(label + ": Cube A differs from its ray directions by %d/255" %
+                            max(right))
         if sum(left) / len(left) < 40:
             problems.append(label + ": the cube map looks empty")
     if name == "injection":
@@ -418,10 +420,11 @@ def check_texture_file(browser, binary, fixture, work, problems):
     p.wait_frames(2)
     browser.set_file("#sp-channels input[type=file]", image)
     deadline = time.time() + 30
-    read = "(() => { const c = document.getElementById('sp-canvas'); const t = " \
-           "document.createElement('canvas'); t.width = 64; t.height = 64; const g = " \
-           "t.getContext('2d'); g.drawImage(c, 0, 0); return [Array.from(g.getImageData(20, 58, " \
-           "1, 1).data).slice(0, 3), Array.from(g.getImageData(63, 0, 1, 1).data).slice(0, 3)]; })()"
+    read = ("(() => { const c = document.getElementById('sp-canvas');"
+            " const t = document.createElement('canvas'); t.width = 64; t.height = 64;"
+            " const g = t.getContext('2d'); g.drawImage(c, 0, 0);"
+            " const at = (x, y) => Array.from(g.getImageData(x, y, 1, 1).data).slice(0, 3);"
+            " return [at(20, 58), at(63, 0)]; })()")
     while time.time() < deadline:
         texel, resolution = browser.evaluate(read)
         if texel == [255, 0, 0]:
@@ -438,9 +441,10 @@ def check_without_webgl2(chromium, work, problems):
     dom = Dom()
     dom.feed(dom_text)
     state = dom.attrs.get("sp-state", {}).get("data-state")
-    if state != "no-webgl2" or "hidden" in dom.attrs.get("sp-fallback", {"hidden": ""}):
+    fallback = dom.attrs.get("sp-fallback", {"hidden": ""})
+    if state != "no-webgl2" or "hidden" in fallback:
         problems.append("no WebGL2: state %r, fallback text %s" %
-                        (state, "hidden" if "hidden" in dom.attrs.get("sp-fallback", {}) else "shown"))
+                        (state, "hidden" if "hidden" in fallback else "shown"))
 
 
 def control_catches(chromium, work):
