@@ -486,6 +486,7 @@ def measure_corpus(argv):
     ap.add_argument("--corpus", required=True)
     ap.add_argument("--limit", type=int, default=0)
     ap.add_argument("--frames", type=int, default=3)
+    ap.add_argument("--ids", default="", help="only these record ids (comma-separated)")
     ap.add_argument("binary")
     ap.add_argument("fixture")
     ap.add_argument("work")
@@ -500,6 +501,8 @@ def measure_corpus(argv):
             record = json.loads(line)
             if any(p.get("type") == "buffer" for p in record.get("passes", [])):
                 records.append(record)
+    if args.ids:
+        records = [r for r in records if r.get("id") in args.ids.split(",")]
     if args.limit:
         records = records[:args.limit]
 
@@ -511,7 +514,8 @@ def measure_corpus(argv):
         png = os.path.join(args.work, key + ".render.png")
         try:
             subprocess.run([args.binary, "render", path, "--size", "%dx%d" % (SIZE, SIZE),
-                            "--frames", str(args.frames), "--time", "1", "--hermetic", "-o", png],
+                            "--frames", str(args.frames), "--time", "1", "--hermetic",
+                            "--timeout", "100", "-o", png],
                            capture_output=True, timeout=120)
         except subprocess.TimeoutExpired:
             pass
