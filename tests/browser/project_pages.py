@@ -27,6 +27,7 @@ import concurrent.futures
 import html
 import html.parser
 import json
+import math
 import os
 import re
 import shutil
@@ -50,7 +51,8 @@ MARK = "data-injected"
 COMPARED = {"feedback": 3, "buffer_order": 4, "textures": 1, "uniforms": 2}
 MOUSE = {"uniforms": "20,30,10,-12"}  # iMouse as render's --mouse sets it
 EXACT = {"textures": 2}  # largest per-channel difference allowed anywhere
-PAGE_ONLY = {"cube_pass": 2, "keyboard": 1, "broken": 1, "injection": 1}
+PAGE_ONLY = {"cube_pass": 2, "keyboard": 1, "broken": 1, "injection": 1, "sound": 1}
+EXTRA = {"sound": "&sound=44100"}  # the first second of the Sound pass, for the test
 
 
 class Dom(html.parser.HTMLParser):
@@ -153,6 +155,7 @@ def page_result(chromium, binary, fixture, work, mode, name, frames):
     fragment = "#time=1&frames=%d&size=%dx%d" % (frames, SIZE, SIZE)
     if name in MOUSE:
         fragment += "&mouse=" + MOUSE[name]
+    fragment += EXTRA.get(name, "")
     dom_text, console = chromium_dom(chromium, work, page, fragment)
     with open(os.path.join(work, mode, name + ".dom.html"), "w") as f:
         f.write(dom_text)
@@ -236,6 +239,27 @@ def check_page_only(name, label, r, problems):
             problems.append(label + ": the cube map looks empty")
     if name == "injection":
         check_injection(label, r, problems)
+    if name == "sound":
+        check_sound(label, r, problems)
+
+
+def check_sound(label, r, problems):
+    """The Sound pass's samples, read back as the site reads them: 440 Hz left, 220 Hz
+    at half volume right (16-bit packing, float sin on the GPU: within 2e-3)."""
+    text = r["dom"].text.get("sp-sound", "")
+    if not text:
+        problems.append(label + ": no samples published")
+        return
+    samples = json.loads(text)
+    if len(samples) != 441:
+        problems.append(label + ": %d samples published, expected 441" % len(samples))
+    worst = 0.0
+    for k, (left, right) in enumerate(samples):
+        t = k * 100 / 44100.0
+        worst = max(worst, abs(left - math.sin(2 * math.pi * 440 * t)),
+                    abs(right - 0.5 * math.sin(2 * math.pi * 220 * t)))
+    if worst > 2e-3:
+        problems.append(label + ": samples differ from the tone by %.4f" % worst)
 
 
 def check_injection(label, r, problems):
@@ -402,6 +426,7 @@ def check_interaction(chromium, binary, fixture, work, problems):
         if log:
             problems.append("interaction: the page logged: " + log)
         check_texture_file(browser, binary, fixture, work, problems)
+        check_sound_button(browser, binary, fixture, work, problems)
     except (TimeoutError, RuntimeError, EOFError) as e:
         problems.append("interaction: %s" % e)
     finally:
@@ -445,6 +470,29 @@ def check_without_webgl2(chromium, work, problems):
     if state != "no-webgl2" or "hidden" in fallback:
         problems.append("no WebGL2: state %r, fallback text %s" %
                         (state, "hidden" if "hidden" in fallback else "shown"))
+
+
+def check_sound_button(browser, binary, fixture, work, problems):
+    """A real click on the Sound button starts Web Audio; pausing stops it; no errors."""
+    page = os.path.join(work, "ported", "sound.html")
+    make_page(binary, fixture, "ported", os.path.join(DATA, "sound.json"), page)
+    browser.open("file://" + page + "#size=64x64")
+    p = Interaction(browser)
+    p.wait_frames(2)
+    box = browser.evaluate("(() => { const r = document.getElementById('sp-sound-toggle')"
+                           ".getBoundingClientRect(); return [r.left + r.width / 2,"
+                           " r.top + r.height / 2]; })()")
+    browser.mouse("mousePressed", box[0], box[1], 1)
+    browser.mouse("mouseReleased", box[0], box[1], 0)
+    p.wait_frames(2)
+    expect(problems, "Sound button after a click",
+           browser.evaluate("document.getElementById('sp-sound-toggle').textContent"), "Sound off")
+    p.click("sp-pause")
+    p.click("sp-pause")
+    p.wait_frames(2)
+    log = browser.evaluate("document.getElementById('sp-log').textContent").strip()
+    if log:
+        problems.append("interaction: the sound page logged: " + log)
 
 
 def control_catches(chromium, work):

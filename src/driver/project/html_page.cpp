@@ -276,6 +276,7 @@ std::string BuildProjectPage(const PageProject& project, const PageOptions& opti
   page += PageProjectJson(project, options);
   page += "</script>\n<script>\n";
   page += PageFile("textures.js");  // spResources(), used by the runtime
+  page += PageFile("sound.js");     // spSound()
   page += PageFile("runtime.js");
   page += "</script>\n</body>\n</html>\n";
   return page;

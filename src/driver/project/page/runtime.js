@@ -391,6 +391,55 @@
     out.textContent = btoa(s);
   }
 
+  // --- Sound: the whole track is drawn once (kSoundSeconds) and played from iTime ---------
+  const kSoundSeconds = 60;
+  const soundPass = passes.find((p) => p.kind === "sound" && p.program) || null;
+  const audio = spSound(gl);
+  let soundWanted = false;
+  let track = null;
+  function soundSamples(count) {
+    const n = count || kSoundSeconds * audio.rate;
+    if (track && track.left.length >= n) return track;
+    const samples = audio.synthesize(soundPass, n,
+      () => setUniforms(soundPass, frameValues(), 512, 512, bindInputs(soundPass)));
+    if (!count) track = samples;
+    return samples;
+  }
+  // Plays while wanted and not paused, from the current iTime.
+  function syncSound() {
+    if (!soundPass) return;
+    const play = soundWanted && !paused;
+    if (play && !audio.playing()) audio.play(soundSamples(), frameValues().time);
+    if (!play && audio.playing()) audio.stop();
+    if (soundButton) soundButton.textContent = soundWanted ? "Sound off" : "Sound on";
+  }
+  let soundButton = null;
+  if (soundPass) {
+    // Browsers start audio only after a click, so sound waits for this button.
+    soundButton = document.createElement("button");
+    soundButton.type = "button";
+    soundButton.id = "sp-sound-toggle";
+    soundButton.addEventListener("click", () => {
+      soundWanted = !soundWanted;
+      syncSound();
+    });
+    $("sp-controls").insertBefore(soundButton, $("sp-clock"));
+  }
+
+  // sound=N: the first N samples of the Sound pass, every 100th as [left, right] (tests).
+  function publishSound(count) {
+    const samples = soundSamples(Math.max(1, Math.min(count, 4 * 512 * 512)));
+    const out = [];
+    for (let i = 0; i < samples.left.length; i += 100) {
+      out.push([+samples.left[i].toFixed(5), +samples.right[i].toFixed(5)]);
+    }
+    const pre = document.createElement("pre");
+    pre.id = "sp-sound";
+    pre.hidden = true;
+    pre.textContent = JSON.stringify(out);
+    document.body.appendChild(pre);
+  }
+
   // --- Controls ------------------------------------------------------------------------------
   const pauseButton = $("sp-pause");
   // While paused, a click still draws a frame (as on the site) so iMouse shows.
@@ -399,6 +448,7 @@
   function setPaused(p) {
     paused = p;
     pauseButton.textContent = paused ? "Resume" : "Pause";
+    syncSound();
   }
   function restart() {
     time = fixedTime ? startTime : 0;
@@ -407,6 +457,7 @@
     clearCube();
     resize();
     if (paused) drawFrame();
+    if (audio.playing()) audio.play(soundSamples(), 0);
   }
   pauseButton.addEventListener("click", () => setPaused(!paused));
   $("sp-restart").addEventListener("click", restart);
@@ -490,12 +541,6 @@
       channelsEl.appendChild(label);
     }
   }
-  const sound = passes.find((p) => p.kind === "sound");
-  if (sound) {
-    const p = document.createElement("p");
-    p.textContent = "The Sound pass compiles here but is not played.";
-    channelsEl.appendChild(p);
-  }
 
   let lost = false;
   canvas.addEventListener("webglcontextlost", (e) => {
@@ -522,6 +567,7 @@
     }
     if (!lost) {
       publishPixels();
+      if (soundPass && params.has("sound")) publishSound(Number(params.get("sound")) | 0);
       checkGlErrors();
       showClock();
       setState("done");
