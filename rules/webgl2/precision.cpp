@@ -10,6 +10,7 @@
 // The statement goes after #version and the leading #extension lines. Without a
 // #version in the file it waits for webgl2/version to add one (next fix round),
 // so the two insertions never compete for offset 0.
+#include <map>
 #include <set>
 #include <string>
 
@@ -33,6 +34,14 @@ bool NeedsSamplerPrecision(std::string_view type) {
   return kTypes.contains(type);
 }
 
+// The type whose default precision covers `name`: float for vectors and matrices
+// of floats, int for integer vectors; samplers stand for themselves.
+std::string PrecisionBaseType(std::string_view name) {
+  if (name.starts_with("vec") || name.starts_with("mat")) return "float";
+  if (name.starts_with("ivec") || name == "uint" || name.starts_with("uvec")) return "int";
+  return std::string(name);
+}
+
 class PrecisionRule final : public rule::Rule {
  public:
   const rule::RuleInfo& Info() const override {
@@ -47,12 +56,31 @@ class PrecisionRule final : public rule::Rule {
     if (root == nullptr) return;
     // Types with a default precision at global scope (statements inside functions
     // only cover their own block).
-    std::set<std::string> has_default;
+    // A statement counts only when it comes before the type's first use: Common code
+    // compiled in front of a pass that declares `precision highp float;` further down
+    // uses float before any default exists (the site's header gives it one first).
+    std::map<std::string, uint32_t> declared_at;
     for (const glsl::Node* node : root->declarations) {
       const auto* precision = node->As<glsl::PrecisionDeclaration>();
       if (precision != nullptr && precision->type != nullptr) {
-        has_default.insert(precision->type->name.text);
+        declared_at.emplace(precision->type->name.text, precision->range.begin);
       }
+    }
+    std::map<std::string, uint32_t> first_use;
+    glsl::VisitPreorder(context.Tree(), [&](const glsl::Node& node, uint32_t) {
+      const auto* type = node.As<glsl::TypeSpecifier>();
+      if (type != nullptr && type->precision == glsl::Precision::kNone &&
+          type->range.file == context.File().Id()) {
+        const std::string base = PrecisionBaseType(type->name.text);
+        auto [it, added] = first_use.emplace(base, type->range.begin);
+        if (!added) it->second = std::min(it->second, type->range.begin);
+      }
+      return true;
+    });
+    std::set<std::string> has_default;
+    for (const auto& [type, at] : declared_at) {
+      const auto use = first_use.find(type);
+      if (use == first_use.end() || at <= use->second) has_default.insert(type);
     }
     std::vector<std::string> missing;
     if (context.Settings().stage == rule::ShaderStage::kFragment &&

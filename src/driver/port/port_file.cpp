@@ -167,6 +167,13 @@ class Porter {
     return validate::ValidateWithGlslang(request).diagnostics;
   }
 
+  // The engine run with only the fixes whose key is in `kept`.
+  template <typename KeyOf>
+  rule::FixEngineResult Attempt(const std::set<std::tuple<std::string, uint32_t, uint32_t>>& kept,
+                                const KeyOf& key_of) {
+    return RunEngine([&](const Diagnostic& d) { return kept.count(key_of(d)) > 0; });
+  }
+
   // Keeps the applied fixes one at a time (or rule by rule when there are many)
   // as long as they do not add validation errors.
   rule::FixEngineResult Narrow(const rule::FixEngineResult& full, size_t baseline,
@@ -182,17 +189,34 @@ class Porter {
         units.push_back(key_of(d));
       }
     }
-    std::set<Key> kept;
-    size_t best = baseline;
+    // First drop single units from the full set: port fixes depend on each other
+    // (#version needs the declared uniforms and main()), so one broken fix is best
+    // found by taking it out of the whole, not by building up from nothing.
+    std::set<Key> kept(units.begin(), units.end());
+    size_t current = ErrorCount(validation);
     for (const Key& unit : units) {
+      if (current <= baseline) break;
       std::set<Key> trial = kept;
-      trial.insert(unit);
-      rule::FixEngineResult attempt =
-          RunEngine([&](const Diagnostic& d) { return trial.count(key_of(d)) > 0; });
-      const size_t errors = ErrorCount(Validate(attempt.text, IsPort()));
-      if (errors <= best) {
+      trial.erase(unit);
+      const size_t errors = ErrorCount(Validate(Attempt(trial, key_of).text, IsPort()));
+      if (errors < current) {
         kept = std::move(trial);
-        best = errors;
+        current = errors;
+      }
+    }
+    if (current > baseline) {
+      // Still worse than the input: keep units one at a time as long as they do not
+      // add errors.
+      kept.clear();
+      size_t best = baseline;
+      for (const Key& unit : units) {
+        std::set<Key> trial = kept;
+        trial.insert(unit);
+        const size_t errors = ErrorCount(Validate(Attempt(trial, key_of).text, IsPort()));
+        if (errors <= best) {
+          kept = std::move(trial);
+          best = errors;
+        }
       }
     }
     rule::FixEngineResult narrowed =

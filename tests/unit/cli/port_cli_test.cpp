@@ -149,3 +149,27 @@ TEST(PortCli, SpirvLegKeepsTheBrowsersInitialisationAndClamping) {
 
 }  // namespace
 }  // namespace shaderport::testing
+
+namespace shaderport::testing {
+namespace {
+
+// A rename inside a macro body that misses a use breaks the ported text; narrowing
+// used to rebuild the fix set from nothing, where #version alone (without the
+// uniforms and main() it needs) fails too, and dropped every port fix. Now only the
+// breaking fix goes.
+TEST(PortCli, NarrowingDropsOnlyTheFixThatBreaksTheOutput) {
+  const fs::path dir = TempDir("narrow");
+  Write(dir / "toy.glsl",
+        "#define render() \\\nvoid mainImage(out vec4 c, in vec2 p) {\\\n"
+        "  vec2 dFdx = dFdx(p / 16.0), dFdy = dFdy(p);\\\n  vec2 d = dFdx;\\\n"
+        "  c = vec4(d, 0.0, 1.0);\\\n}\nrender()\n");
+  const CommandResult result = RunShaderport("port toy.glsl -o out.frag", dir);
+  EXPECT_LE(result.exit_code, 1) << result.err;
+  const std::string ported = ReadWholeFile(dir / "out.frag");
+  EXPECT_EQ(ported.rfind("#version 300 es\n", 0), 0u) << ported;
+  const std::string command = "glslangValidator '" + (dir / "out.frag").string() + "' >/dev/null";
+  EXPECT_EQ(std::system(command.c_str()), 0) << ported;
+}
+
+}  // namespace
+}  // namespace shaderport::testing
