@@ -119,6 +119,7 @@
   function mappedLog(pass, log) {
     const out = [];
     for (const line of log.split("\n")) {
+      // A message without a line ("ERROR: -1:-1: ...", e.g. no main()) stays as it is.
       const m = /^(ERROR|WARNING): \d+:(\d+): (.*)$/.exec(line.trim());
       if (m) out.push(userLine(pass, +m[2]) + ": " + m[1].toLowerCase() + ": " + m[3]);
       else if (line.trim()) out.push(line.trim());
@@ -531,6 +532,7 @@
           gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, gl.RGBA, gl.UNSIGNED_BYTE, img);
           gl.pixelStorei(gl.UNPACK_FLIP_Y_WEBGL, false);
           gl.generateMipmap(gl.TEXTURE_2D);
+          if (input.user) gl.deleteTexture(input.user.tex);
           input.user = {tex: tex, target: gl.TEXTURE_2D, size: [img.width, img.height, 1]};
           URL.revokeObjectURL(url);
         };
