@@ -63,7 +63,9 @@ struct PageProject {
   std::string name;
   std::string id;
   std::string author;
-  std::vector<PagePass> passes;  // any order; Common and Sound passes are not drawn
+  // Any order. A Common pass is ignored (the port inlines Common); Sound plays on
+  // request (browsers start audio only after a click).
+  std::vector<PagePass> passes;
 };
 
 struct PageOptions {
@@ -103,7 +105,7 @@ std::vector<PageLineRun> ComposedLineRuns(uint32_t header_lines, uint32_t common
 // cmake/embed_text_files.cmake so that an installed binary reads no data files.
 namespace page_files {
 struct EmbeddedTextFile {
-  std::string_view name;  // "runtime.js", "page.css"
+  std::string_view name;  // "runtime.js", "textures.js", "sound.js", "page.css"
   std::string_view text;
 };
 std::span<const EmbeddedTextFile> EmbeddedPageFiles();
