@@ -132,14 +132,16 @@ class ReservedNamesRule final : public rule::Rule {
         complete = false;
         return;
       }
-      if (!seen.insert({range->begin, range->end}).second) return;
       // A use written through a macro keeps its fix: Report() drops it with a note.
       if (!context.InMacro(*range) && context.TextOf(*range) != symbol.name) {
         complete = false;
         return;
       }
-      diagnostic.fixes.push_back(
-          webgl2::Replace(webgl2::NameFixRange(context, node, *range, symbol.name), name));
+      // Deduplicated on where the name is spelled: every name expanded from one macro
+      // shares the invocation's range, yet each has its own place in the body.
+      const SourceRange spelled = webgl2::NameFixRange(context, node, *range, symbol.name);
+      if (!seen.insert({spelled.begin, spelled.end}).second) return;
+      diagnostic.fixes.push_back(webgl2::Replace(spelled, name));
     };
     add(declaration);
     for (uint32_t id = 0; id < tree.NodeCount(); ++id) {

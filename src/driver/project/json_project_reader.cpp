@@ -175,6 +175,11 @@ class Reader {
     for (size_t i = 0; i < passes->size(); ++i)
       ReadPass((*passes)[i], passes_pointer + "/" + std::to_string(i), project);
     CheckTabs(project);
+    // The site always has an Image tab: it is what the page shows.
+    if (project.Find(ShaderToyPass::kImage) == nullptr) {
+      Problem("the project has no Image pass" +
+              (pointer.empty() ? std::string() : " (at " + pointer + ")"));
+    }
     out_.projects.push_back(std::move(project));
   }
 
