@@ -88,6 +88,27 @@ bool EndIsOpen(const rule::RuleContext& context) {
   return true;
 }
 
+// The entry point defined as a function-like macro in this file, and where its
+// name is; nullptr when there is none.
+const rule::EntryPoint* MacroEntryPoint(const rule::RuleContext& context,
+                                        const rule::HarnessDialect& dialect, SourceRange& where) {
+  const auto& tokens = context.Lexed().tokens;
+  for (size_t i = 0; i + 3 < tokens.size(); ++i) {
+    if (tokens[i].kind != glsl::TokenKind::kHash || tokens[i + 1].text != "define" ||
+        tokens[i + 2].at_line_start || tokens[i + 3].text != "(" ||
+        tokens[i + 3].begin != tokens[i + 2].end) {  // function-like: "(" right after the name
+      continue;
+    }
+    for (const rule::EntryPoint& entry : dialect.entry_points) {
+      if (tokens[i + 2].text == entry.function) {
+        where = {context.File().Id(), tokens[i + 2].begin, tokens[i + 2].end};
+        return &entry;
+      }
+    }
+  }
+  return nullptr;
+}
+
 class MainWrapperRule final : public rule::Rule {
  public:
   const rule::RuleInfo& Info() const override {
@@ -109,16 +130,24 @@ class MainWrapperRule final : public rule::Rule {
     const rule::CodeInterface code = rule::ReadCodeInterface(context.Tree(), context.Model());
     if (code.defined_functions.contains("main")) return;  // already has one (or ported)
     const rule::EntryPoint* entry = harness::DefinedEntryPoint(*dialect, code);
-    if (entry == nullptr) return;
-    const glsl::FunctionDeclaration* definition = harness::FindDefinition(context, entry->function);
-    if (definition == nullptr || definition->name.range.file != context.File().Id()) return;
+    SourceRange where;
+    if (entry != nullptr) {
+      const glsl::FunctionDeclaration* definition =
+          harness::FindDefinition(context, entry->function);
+      if (definition == nullptr || definition->name.range.file != context.File().Id()) return;
+      where = definition->name.range;
+    } else {
+      // `#define mainImage(c, p) (c = Main(p))`: the site's main() reaches the user's
+      // code through the macro, and so does the generated one.
+      entry = MacroEntryPoint(context, *dialect, where);
+      if (entry == nullptr) return;
+    }
 
     harness::FreshNames fresh(context);
     const std::string out = fresh.Make(entry->output_name);
     const std::string& main_body =
-        context.Settings().buffer_pass && !entry->buffer_main_body.empty()
-            ? entry->buffer_main_body
-            : entry->main_body;
+        context.Settings().buffer_pass && !entry->buffer_main_body.empty() ? entry->buffer_main_body
+                                                                           : entry->main_body;
     const std::string body = ExpandTemplate(main_body, entry->function, out, fresh);
     const std::string_view text = context.Text();
     std::string insertion = text.empty() || text.back() == '\n' ? "\n" : "\n\n";
@@ -131,7 +160,7 @@ class MainWrapperRule final : public rule::Rule {
     Diagnostic diagnostic;
     diagnostic.severity = Severity::kWarning;
     diagnostic.rule_id = std::string(kId);
-    diagnostic.range = definition->name.range;
+    diagnostic.range = where;
     diagnostic.message = "WebGL2 needs a main(); " + dialect->name + " calls " + entry->function +
                          "() from one it generates: adding it, with output '" + out + "'" +
                          (main_is_macro ? " ('main' is a macro here: #undef'd first)" : "");
