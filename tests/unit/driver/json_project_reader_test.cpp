@@ -78,18 +78,22 @@ TEST(JsonProjectReader, ReportsWhatIsWrongAndWhere) {
   ASSERT_EQ(broken.problems.size(), 1u);
   EXPECT_NE(broken.problems[0].message.find("invalid JSON"), std::string::npos);
   EXPECT_EQ(broken.problems[0].offset, 27u);
-  const ProjectDocument unknown =
-      ReadShaderToyJson(R"({"renderpass": [{"type": "video", "code": ""}]})");
+  const ProjectDocument unknown = ReadShaderToyJson(
+      R"({"renderpass": [{"type": "image", "code": "a"}, {"type": "video", "code": ""}]})");
   ASSERT_EQ(unknown.problems.size(), 1u);
   EXPECT_NE(unknown.problems[0].message.find("unknown pass type \"video\""), std::string::npos);
   const ProjectDocument twice = ReadShaderToyJson(
       R"({"renderpass": [{"type": "image", "code": "a"}, {"type": "image", "code": "b"}]})");
   ASSERT_EQ(twice.problems.size(), 1u);
   EXPECT_NE(twice.problems[0].message.find("a second \"Image\""), std::string::npos);
-  const ProjectDocument no_output =
-      ReadShaderToyJson(R"({"renderpass": [{"type": "buffer", "name": "Mine", "code": "a"}]})");
+  const ProjectDocument no_output = ReadShaderToyJson(
+      R"({"renderpass": [{"type": "image", "code": "a"}, {"type": "buffer", "name": "Mine", "code": "a"}]})");
   ASSERT_EQ(no_output.problems.size(), 1u);
   EXPECT_TRUE(ReadShaderToyJson(R"({"name": "package.json"})").projects.empty());
+  const ProjectDocument no_image =
+      ReadShaderToyJson(R"({"renderpass": [{"type": "common", "code": "float k;"}]})");
+  ASSERT_EQ(no_image.problems.size(), 1u);
+  EXPECT_NE(no_image.problems[0].message.find("no Image pass"), std::string::npos);
   // Deep nesting is refused before parsing.
   const ProjectDocument deep =
       ReadShaderToyJson(std::string(100000, '[') + std::string(100000, ']'));
