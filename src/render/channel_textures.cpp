@@ -19,7 +19,7 @@ void SetSampling(const GlFunctions& gl, GLenum target, GLenum wrap) {
 }  // namespace
 
 BoundTexture CreateChannelTexture(const GlFunctions& gl, GLenum sampler_type,
-                                  const ImageRgba8& user_image) {
+                                  const ImageRgba8& user_image, bool vflip) {
   BoundTexture bound;
   const GLenum target = TextureTargetOf(sampler_type);
   bound.target = target;
@@ -52,7 +52,8 @@ BoundTexture CreateChannelTexture(const GlFunctions& gl, GLenum sampler_type,
     const size_t row = size_t{user_image.width} * 4;
     std::vector<uint8_t> flipped(user_image.pixels.size());
     for (uint32_t y = 0; y < user_image.height; ++y) {
-      std::copy_n(&user_image.pixels[(user_image.height - 1 - y) * row], row, &flipped[y * row]);
+      const uint32_t from = vflip ? user_image.height - 1 - y : y;
+      std::copy_n(&user_image.pixels[from * row], row, &flipped[y * row]);
     }
     gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, user_image.width, user_image.height, 0, GL_RGBA,
                   GL_UNSIGNED_BYTE, flipped.data());
@@ -67,6 +68,36 @@ BoundTexture CreateChannelTexture(const GlFunctions& gl, GLenum sampler_type,
   }
   SetSampling(gl, GL_TEXTURE_2D, GL_REPEAT);
   return bound;
+}
+
+BoundTexture CreateKeyboardTexture(const GlFunctions& gl) {
+  constexpr GLsizei kKeys = 256;
+  constexpr GLsizei kRows = 3;  // down, pressed this frame, toggled
+  const std::vector<uint8_t> zeros(size_t{kKeys} * kRows, 0);
+  BoundTexture bound;
+  gl.GenTextures(1, &bound.name);
+  gl.BindTexture(GL_TEXTURE_2D, bound.name);
+  gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  gl.TexImage2D(GL_TEXTURE_2D, 0, GL_R8, kKeys, kRows, 0, GL_RED, GL_UNSIGNED_BYTE, zeros.data());
+  bound.width = kKeys;
+  bound.height = kRows;
+  return bound;
+}
+
+GLuint CreateChannelSampler(const GlFunctions& gl, ChannelFilter filter, ChannelWrap wrap) {
+  GLuint sampler = 0;
+  gl.GenSamplers(1, &sampler);
+  const GLint min = filter == ChannelFilter::kNearest  ? GL_NEAREST
+                    : filter == ChannelFilter::kLinear ? GL_LINEAR
+                                                       : GL_LINEAR_MIPMAP_LINEAR;
+  gl.SamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, min);
+  gl.SamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER,
+                       filter == ChannelFilter::kNearest ? GL_NEAREST : GL_LINEAR);
+  const GLint mode = wrap == ChannelWrap::kClamp ? GL_CLAMP_TO_EDGE : GL_REPEAT;
+  gl.SamplerParameteri(sampler, GL_TEXTURE_WRAP_S, mode);
+  gl.SamplerParameteri(sampler, GL_TEXTURE_WRAP_T, mode);
+  gl.SamplerParameteri(sampler, GL_TEXTURE_WRAP_R, mode);
+  return sampler;
 }
 
 GLenum TextureTargetOf(GLenum sampler_type) {

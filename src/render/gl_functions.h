@@ -27,6 +27,9 @@ namespace shaderport::render {
   X(PFNGLTEXIMAGE3DPROC, TexImage3D)                           \
   X(PFNGLTEXPARAMETERIPROC, TexParameteri)                     \
   X(PFNGLGENERATEMIPMAPPROC, GenerateMipmap)                   \
+  X(PFNGLGENSAMPLERSPROC, GenSamplers)                         \
+  X(PFNGLBINDSAMPLERPROC, BindSampler)                         \
+  X(PFNGLSAMPLERPARAMETERIPROC, SamplerParameteri)             \
   X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                     \
   X(PFNGLGENFRAMEBUFFERSPROC, GenFramebuffers)                 \
   X(PFNGLBINDFRAMEBUFFERPROC, BindFramebuffer)                 \

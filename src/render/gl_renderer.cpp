@@ -39,13 +39,48 @@ struct BufferTargets {
   std::array<std::array<FloatTarget, 2>, 4> targets{};
   std::array<int, 4> latest = {0, 0, 0, 0};
   std::array<bool, 4> used{};
+  // Read with a mipmap filter somewhere: mipmaps are rebuilt after each write, as
+  // the site and the project page do.
+  std::array<bool, 4> mipmapped{};
 };
 
-ChannelOverrides OverridesFor(const std::array<int, 4>& channel_buffers,
+// The buffer each channel reads: the pass's own channels when the request gives
+// them, else `channel_buffers`.
+std::array<int, 4> BuffersRead(const PassChannels& channels,
+                               const std::array<int, 4>& channel_buffers) {
+  std::array<int, 4> read = channel_buffers;
+  for (size_t i = 0; i < 4; ++i) {
+    if (channels[i].kind == PassChannelKind::kFromInputs) continue;
+    read[i] = channels[i].kind == PassChannelKind::kBuffer ? channels[i].buffer : -1;
+  }
+  return read;
+}
+
+// A project's passes read buffers that no pass writes too: those are zero on the
+// site, so they get (cleared) targets as well.
+void NoteBuffersRead(const PassChannels& channels, BufferTargets& buffers) {
+  for (const PassChannel& channel : channels) {
+    if (channel.kind != PassChannelKind::kBuffer || channel.buffer < 0 || channel.buffer > 3)
+      continue;
+    const auto k = static_cast<size_t>(channel.buffer);
+    buffers.used[k] = true;
+    if (channel.filter == ChannelFilter::kMipmap) buffers.mipmapped[k] = true;
+  }
+}
+
+void BuildMipmaps(const GlFunctions& gl, GLuint texture) {
+  gl.BindTexture(GL_TEXTURE_2D, texture);
+  gl.GenerateMipmap(GL_TEXTURE_2D);
+  gl.BindTexture(GL_TEXTURE_2D, 0);
+}
+
+ChannelOverrides OverridesFor(const PassChannels& channels,
+                              const std::array<int, 4>& channel_buffers,
                               const BufferTargets& buffers, const RenderRequest& request) {
   ChannelOverrides overrides{};
+  const std::array<int, 4> read = BuffersRead(channels, channel_buffers);
   for (size_t i = 0; i < 4; ++i) {
-    const int k = channel_buffers[i];
+    const int k = read[i];
     if (k < 0 || k > 3 || !buffers.used[static_cast<size_t>(k)]) continue;
     const auto& pair = buffers.targets[static_cast<size_t>(k)];
     overrides[i] = {pair[static_cast<size_t>(buffers.latest[static_cast<size_t>(k)])].texture,
@@ -135,9 +170,12 @@ RenderOutcome RenderInThisProcess(const RenderRequest& request, BackendKind back
   const auto height = static_cast<GLsizei>(request.height);
   BufferTargets buffers;
   for (const BufferPass& pass : request.buffer_passes) {
-    const auto k = static_cast<size_t>(pass.buffer & 3);
-    if (buffers.used[k]) continue;
-    buffers.used[k] = true;
+    buffers.used[static_cast<size_t>(pass.buffer & 3)] = true;
+    NoteBuffersRead(pass.channels, buffers);
+  }
+  NoteBuffersRead(request.channels, buffers);
+  for (size_t k = 0; k < 4; ++k) {
+    if (!buffers.used[k]) continue;
     for (FloatTarget& target : buffers.targets[k]) {
       if (!CreateFloatTarget(gl, width, height, false, target)) {
         outcome.status = RenderStatus::kContextFailed;
@@ -146,6 +184,8 @@ RenderOutcome RenderInThisProcess(const RenderRequest& request, BackendKind back
       }
       gl.ClearColor(0, 0, 0, 0);  // the site starts buffers at zero
       gl.Clear(GL_COLOR_BUFFER_BIT);
+      // Every level zero, so a mipmapped read of the first frame sees zeros.
+      if (buffers.mipmapped[k]) BuildMipmaps(gl, target.texture);
     }
   }
   FloatTarget main_target;
@@ -176,16 +216,18 @@ RenderOutcome RenderInThisProcess(const RenderRequest& request, BackendKind back
       gl.BindFramebuffer(GL_FRAMEBUFFER,
                          buffers.targets[k][static_cast<size_t>(write)].framebuffer);
       gl.UseProgram(buffer_programs[p]);
-      SetUniforms(gl, buffer_programs[p], request, frame, buffer_textures[p],
-                  OverridesFor(pass.channel_buffers, buffers, request));
+      SetUniforms(gl, buffer_programs[p], request, frame, buffer_textures[p], pass.channels,
+                  OverridesFor(pass.channels, pass.channel_buffers, buffers, request));
       gl.DrawArrays(GL_TRIANGLES, 0, 3);
       CollectGlErrors(gl, "drawing a buffer pass", outcome);
       buffers.latest[k] = write;
+      if (buffers.mipmapped[k])
+        BuildMipmaps(gl, buffers.targets[k][static_cast<size_t>(write)].texture);
     }
     gl.BindFramebuffer(GL_FRAMEBUFFER, main_target.framebuffer);
     gl.UseProgram(program);
-    SetUniforms(gl, program, request, frame, textures,
-                OverridesFor(request.channel_buffers, buffers, request));
+    SetUniforms(gl, program, request, frame, textures, request.channels,
+                OverridesFor(request.channels, request.channel_buffers, buffers, request));
     CollectGlErrors(gl, "setting uniforms and textures", outcome);
     gl.ClearColor(kSentinel[0], kSentinel[1], kSentinel[2], kSentinel[3]);
     gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);

@@ -39,6 +39,34 @@ struct ShaderToyInputs {
   std::array<ChannelInput, 4> channels;
 };
 
+// How a project's input is sampled: its `sampler.filter` and `sampler.wrap`.
+enum class ChannelFilter : uint8_t { kMipmap, kLinear, kNearest };
+enum class ChannelWrap : uint8_t { kRepeat, kClamp };
+
+// What one channel of one pass of a ShaderToy project reads. The site binds each
+// pass's own inputs, so every pass (the main one and each BufferPass) has its own.
+enum class PassChannelKind : uint8_t {
+  // Not given: the channel is bound as single-pass renders bind it, from
+  // ShaderToyInputs::channels and the pass's channel_buffers.
+  kFromInputs,
+  kUnbound,   // nothing bound: samples (0, 0, 0, 1), iChannelResolution 0
+  kTexture,   // texture, video, audio: the --channelN image or the procedural 2D texture
+  kCube,      // cube map: the procedural cube
+  kVolume,    // the procedural 3D noise
+  kKeyboard,  // 256x3 R8 of zeros: no key is down in a headless render
+  kBuffer,    // Buffer A..D (`buffer`)
+};
+inline constexpr uint8_t kLastPassChannelKind = static_cast<uint8_t>(PassChannelKind::kBuffer);
+
+struct PassChannel {
+  PassChannelKind kind = PassChannelKind::kFromInputs;
+  int buffer = -1;  // kBuffer: 0..3
+  ChannelFilter filter = ChannelFilter::kMipmap;
+  ChannelWrap wrap = ChannelWrap::kRepeat;
+  bool vflip = true;  // for a user image only (procedural textures are in GL order)
+};
+using PassChannels = std::array<PassChannel, 4>;
+
 // A ShaderToy Buffer pass, drawn every frame before the main pass into a ping-pong
 // pair of RGBA32F textures: a pass reading itself (or a later buffer) sees the
 // previous frame, one reading an earlier buffer sees this frame, as on the site.
@@ -46,6 +74,7 @@ struct BufferPass {
   int buffer = 0;               // 0..3: Buffer A..D, the output it writes
   std::string fragment_source;  // complete text, drawn on the full-screen triangle
   std::array<int, 4> channel_buffers = {-1, -1, -1, -1};  // iChannelN reads buffer k, or -1
+  PassChannels channels{};  // when given, these decide (channel_buffers is then unused)
 };
 
 struct RenderRequest {
@@ -63,6 +92,7 @@ struct RenderRequest {
   ShaderToyInputs inputs;
   std::vector<BufferPass> buffer_passes;                  // ShaderToy multipass, in drawing order
   std::array<int, 4> channel_buffers = {-1, -1, -1, -1};  // the main pass's buffer inputs
+  PassChannels channels{};  // the main pass's own channels, as BufferPass::channels
   // A fragment output (location 1) whose .x counts the loop iterations of each pixel
   // and whose .y is 1 where the colour output was assigned (added by the driver's
   // render text); empty or absent in the program: not read.

@@ -11,7 +11,9 @@ using wire::Put;
 using wire::PutString;
 using wire::Reader;
 
-constexpr uint32_t kMagic = 0x53505131;  // "SPQ1"
+// Bumped whenever the layout changes: both ends are the same binary, but a stale
+// request must fail to decode rather than be misread.
+constexpr uint32_t kMagic = 0x53505132;  // "SPQ2": per-pass channels
 constexpr uint32_t kMaxBufferPasses = 64;
 
 void PutInts(std::string& out, const std::array<int, 4>& values) {
@@ -65,6 +67,36 @@ bool GetChannel(Reader& in, ChannelInput& channel) {
   return true;
 }
 
+void PutPassChannels(std::string& out, const PassChannels& channels) {
+  for (const PassChannel& channel : channels) {
+    Put(out, static_cast<uint8_t>(channel.kind));
+    Put(out, static_cast<int32_t>(channel.buffer));
+    Put(out, static_cast<uint8_t>(channel.filter));
+    Put(out, static_cast<uint8_t>(channel.wrap));
+    Put(out, static_cast<uint8_t>(channel.vflip));
+  }
+}
+
+bool GetPassChannels(Reader& in, PassChannels& channels) {
+  for (PassChannel& channel : channels) {
+    uint8_t kind = 0;
+    int32_t buffer = 0;
+    uint8_t filter = 0;
+    uint8_t wrap = 0;
+    if (!in.Get(kind) || kind > kLastPassChannelKind || !in.Get(buffer) || buffer < -1 ||
+        buffer > 3 || !in.Get(filter) || filter > static_cast<uint8_t>(ChannelFilter::kNearest) ||
+        !in.Get(wrap) || wrap > static_cast<uint8_t>(ChannelWrap::kClamp) ||
+        !in.GetBool(channel.vflip)) {
+      return false;
+    }
+    channel.kind = static_cast<PassChannelKind>(kind);
+    channel.buffer = buffer;
+    channel.filter = static_cast<ChannelFilter>(filter);
+    channel.wrap = static_cast<ChannelWrap>(wrap);
+  }
+  return true;
+}
+
 }  // namespace
 
 std::string EncodeRequest(const RenderRequest& request) {
@@ -88,8 +120,10 @@ std::string EncodeRequest(const RenderRequest& request) {
     Put(out, static_cast<int32_t>(pass.buffer));
     PutString(out, pass.fragment_source);
     PutInts(out, pass.channel_buffers);
+    PutPassChannels(out, pass.channels);
   }
   PutInts(out, request.channel_buffers);
+  PutPassChannels(out, request.channels);
   PutString(out, request.probe_output);
   return out;
 }
@@ -118,13 +152,13 @@ std::optional<RenderRequest> DecodeRequest(const std::string& bytes) {
   for (BufferPass& pass : request.buffer_passes) {
     int32_t buffer = 0;
     if (!in.Get(buffer) || !in.GetString(pass.fragment_source) ||
-        !GetInts(in, pass.channel_buffers)) {
+        !GetInts(in, pass.channel_buffers) || !GetPassChannels(in, pass.channels)) {
       return std::nullopt;
     }
     pass.buffer = buffer;
   }
-  if (!GetInts(in, request.channel_buffers) || !in.GetString(request.probe_output) ||
-      in.at != bytes.size()) {
+  if (!GetInts(in, request.channel_buffers) || !GetPassChannels(in, request.channels) ||
+      !in.GetString(request.probe_output) || in.at != bytes.size()) {
     return std::nullopt;
   }
   return request;

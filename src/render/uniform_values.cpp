@@ -6,8 +6,6 @@
 #include <cmath>
 #include <string_view>
 
-#include "render/channel_textures.h"
-
 namespace shaderport::render {
 namespace {
 
@@ -198,7 +196,8 @@ std::vector<float> ViewMatrix() {
 }
 
 void SetUniforms(const GlFunctions& gl, GLuint program, const RenderRequest& request,
-                 int frame_index, ProgramTextures& textures, const ChannelOverrides& overrides) {
+                 int frame_index, ProgramTextures& textures, const PassChannels& channels,
+                 const ChannelOverrides& overrides) {
   GLint count = 0;
   gl.GetProgramiv(program, GL_ACTIVE_UNIFORMS, &count);
   std::vector<UniformInfo> uniforms;
@@ -223,39 +222,18 @@ void SetUniforms(const GlFunctions& gl, GLuint program, const RenderRequest& req
     const auto this_unit = static_cast<GLint>(unit);
     gl.Uniform1iv(u.location, 1, &this_unit);
     gl.ActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
-    if (!textures.created) {
-      ProgramTextures::Unit entry;
-      if (u.name.size() == 9 && u.name.starts_with("iChannel") && u.name[8] >= '0' &&
-          u.name[8] <= '3') {
-        entry.channel = u.name[8] - '0';
-      }
-      const bool overridden =
-          entry.channel >= 0 && overrides[static_cast<size_t>(entry.channel)].texture != 0;
-      const bool unbound =
-          entry.channel >= 0 && request.inputs.channels[static_cast<size_t>(entry.channel)].unbound;
-      if (unbound && !overridden) {
-        entry.target = TextureTargetOf(u.type);  // texture 0: incomplete, samples (0,0,0,1)
-      } else if (!overridden) {
-        static const ImageRgba8 kNoImage;
-        const ImageRgba8& image =
-            entry.channel >= 0 ? request.inputs.channels[static_cast<size_t>(entry.channel)].image
-                               : kNoImage;
-        const BoundTexture bound = CreateChannelTexture(gl, u.type, image);
-        entry.target = bound.target;
-        entry.name = bound.name;
-        entry.size = {bound.width, bound.height, bound.depth};
-      }
-      textures.units.push_back(entry);
-    }
+    if (!textures.created)
+      textures.units.push_back(CreateTextureUnit(gl, u.name, u.type, request, channels, overrides));
     const ProgramTextures::Unit& entry = textures.units[unit++];
     std::array<float, 3> size = entry.size;
-    if (entry.channel >= 0 && overrides[static_cast<size_t>(entry.channel)].texture != 0) {
+    if (entry.follows_buffer && overrides[static_cast<size_t>(entry.channel)].texture != 0) {
       const ChannelOverride& o = overrides[static_cast<size_t>(entry.channel)];
       gl.BindTexture(GL_TEXTURE_2D, o.texture);
       size = {o.width, o.height, 1.0f};
     } else {
       gl.BindTexture(entry.target, entry.name);
     }
+    gl.BindSampler(static_cast<GLuint>(this_unit), entry.sampler);
     if (entry.channel >= 0) channel_res[static_cast<size_t>(entry.channel)] = size;
   }
   textures.created = true;

@@ -38,7 +38,51 @@ struct PassInputs {
   validate::ChannelTypes types{};
   std::array<int, 4> buffers = {-1, -1, -1, -1};
   std::array<bool, 4> fed{};  // the record names an input for the channel
+  // What each channel of this pass reads, sampled how: the site binds every pass's
+  // own inputs. A channel the record names nothing for is unbound.
+  render::PassChannels channels = UnboundChannels();
+
+  static render::PassChannels UnboundChannels() {
+    render::PassChannels unbound{};
+    for (render::PassChannel& channel : unbound) channel.kind = render::PassChannelKind::kUnbound;
+    return unbound;
+  }
 };
+
+// The input kinds as the project page binds them (src/driver/project/page/runtime.js,
+// sourceOf): media become render's procedural textures of their shape; an unknown
+// ctype (or a buffer input naming no buffer) binds nothing.
+render::PassChannelKind ChannelKindOf(const std::string& ctype, int buffer) {
+  using Kind = render::PassChannelKind;
+  if (ctype == "buffer") return buffer >= 0 ? Kind::kBuffer : Kind::kUnbound;
+  if (ctype == "texture" || ctype == "video" || ctype == "webcam" || ctype == "music" ||
+      ctype == "musicstream" || ctype == "mic") {
+    return Kind::kTexture;
+  }
+  // A Cube A pass's output too: render does not draw cube passes.
+  if (ctype == "cubemap") return Kind::kCube;
+  if (ctype == "volume") return Kind::kVolume;
+  if (ctype == "keyboard") return Kind::kKeyboard;
+  return Kind::kUnbound;
+}
+
+// The input's `sampler`: filter nearest | linear | mipmap, wrap clamp | repeat,
+// vflip (a boolean or "true"/"false"); absent members keep the site's defaults.
+void ReadSampler(const nlohmann::json& input, render::PassChannel& channel) {
+  const auto sampler = input.find("sampler");
+  if (sampler == input.end() || !sampler->is_object()) return;
+  // Compared as JSON values: a member of another type is ignored, not thrown on.
+  const auto is = [&](const char* key, const char* word) {
+    const auto it = sampler->find(key);
+    return it != sampler->end() && *it == word;
+  };
+  if (is("filter", "nearest")) channel.filter = render::ChannelFilter::kNearest;
+  if (is("filter", "linear")) channel.filter = render::ChannelFilter::kLinear;
+  if (is("wrap", "clamp")) channel.wrap = render::ChannelWrap::kClamp;
+  const auto vflip = sampler->find("vflip");
+  if (vflip != sampler->end() && vflip->is_boolean()) channel.vflip = vflip->get<bool>();
+  if (vflip != sampler->end() && vflip->is_string()) channel.vflip = *vflip == "true";
+}
 
 PassInputs InputsOf(const nlohmann::json& pass) {
   PassInputs inputs;
@@ -53,6 +97,11 @@ PassInputs InputsOf(const nlohmann::json& pass) {
     inputs.types[c] = validate::ChannelTypeFromCtype(ctype);
     inputs.fed[c] = true;
     if (ctype == "buffer") inputs.buffers[c] = BufferIndexFromSource(input.value("src", ""));
+    render::PassChannel& bound = inputs.channels[c];
+    bound = render::PassChannel{};
+    bound.kind = ChannelKindOf(ctype, inputs.buffers[c]);
+    bound.buffer = inputs.buffers[c];
+    ReadSampler(input, bound);
   }
   return inputs;
 }
@@ -115,11 +164,13 @@ RenderFileResult RenderShaderToyJson(std::string_view name, std::string_view jso
     buffer.buffer = index;
     buffer.fragment_source = composed->Text();
     buffer.channel_buffers = inputs.buffers;
+    buffer.channels = inputs.channels;
     pass_options.base.buffer_passes.push_back(std::move(buffer));
     buffer_texts.push_back(composed);
   }
   const PassInputs image_inputs = InputsOf(*image);
   pass_options.base.channel_buffers = image_inputs.buffers;
+  pass_options.base.channels = image_inputs.channels;
   // A channel the record feeds nothing is empty on the site: nothing bound.
   for (size_t c = 0; c < 4; ++c)
     pass_options.base.inputs.channels[c].unbound = !image_inputs.fed[c];
