@@ -79,7 +79,8 @@ int RunPort(const PortArgs& args) {
   const auto inputs = SelectInputFiles("port", args.input, config_failed);
   if (!inputs) return kExitUsage;
   const int config_exit = config_failed ? kExitFindings : kExitOk;
-  if (!args.output.empty() && inputs->size() != 1) {
+  // A page may draw two files (a vertex and a fragment shader): --emit html checks -o.
+  if (!args.output.empty() && inputs->size() != 1 && !emit_html) {
     return Usage("-o takes exactly one input file, and the paths hold " +
                  std::to_string(inputs->size()) + " (use --out-dir)");
   }

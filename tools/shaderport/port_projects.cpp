@@ -8,6 +8,7 @@
 
 #include "commands.h"
 #include "driver/check_projects.h"
+#include "driver/dialect.h"
 #include "driver/port/output_files.h"
 #include "driver/port/port_report.h"
 #include "driver/project/folder_project.h"
@@ -18,6 +19,49 @@ namespace fs = std::filesystem;
 
 fs::path InputProjectFolder(const fs::path& file) { return driver::project::ProjectFolderOf(file); }
 
+namespace {
+
+struct ProgramInput {
+  driver::InputFile input;
+  driver::PortResult result;
+  bool vertex() const { return result.output_stage == driver::Stage::kVertex; }
+};
+
+// Pages of shaders that are not ShaderToy passes: a vertex and a fragment shader
+// given together (or, among more files, with the same directory and name) make one
+// page; the others a page each. Appends (input, page) in input order.
+void ProgramPages(const std::vector<ProgramInput>& programs, std::vector<driver::InputFile>& inputs,
+                  std::vector<driver::project::DocumentOutput>& pages) {
+  std::vector<int> partner(programs.size(), -1);
+  const auto pair = [&](size_t a, size_t b) {
+    partner[a] = static_cast<int>(b);
+    partner[b] = static_cast<int>(a);
+  };
+  if (programs.size() == 2 && programs[0].vertex() != programs[1].vertex()) pair(0, 1);
+  for (size_t a = 0; a < programs.size() && programs.size() > 2; ++a) {
+    for (size_t b = 0; b < programs.size(); ++b) {
+      const fs::path& x = programs[a].input.path;
+      const fs::path& y = programs[b].input.path;
+      if (partner[a] < 0 && partner[b] < 0 && programs[a].vertex() && !programs[b].vertex() &&
+          x.parent_path() == y.parent_path() && x.stem() == y.stem()) {
+        pair(a, b);
+      }
+    }
+  }
+  for (size_t i = 0; i < programs.size(); ++i) {
+    const int other = partner[i];
+    if (other >= 0 && programs[i].vertex()) continue;  // written with its fragment shader
+    const ProgramInput* vertex = programs[i].vertex() ? &programs[i] : nullptr;
+    const ProgramInput* fragment = programs[i].vertex() ? nullptr : &programs[i];
+    if (other >= 0) vertex = &programs[static_cast<size_t>(other)];
+    inputs.push_back(programs[i].input);
+    pages.push_back(driver::project::ProgramPage(vertex ? &vertex->result : nullptr,
+                                                 fragment ? &fragment->result : nullptr));
+  }
+}
+
+}  // namespace
+
 int PortProjectInputs(const std::vector<driver::InputFile>& inputs,
                       const driver::PortOptions& options, const ProjectPortTargets& targets,
                       SourceManager& sources) {
@@ -27,6 +71,7 @@ int PortProjectInputs(const std::vector<driver::InputFile>& inputs,
   std::vector<std::string> texts;
   int exit_code = kExitOk;
   std::set<fs::path> folders_done;
+  std::vector<ProgramInput> programs;  // --emit html of shaders that are not ShaderToy's
   for (const driver::InputFile& input : inputs) {
     // A tab file of a project folder stands for the whole folder, ported once.
     const fs::path folder = InputProjectFolder(input.path);
@@ -40,8 +85,18 @@ int PortProjectInputs(const std::vector<driver::InputFile>& inputs,
           driver::project::PortDocument(input.path, driver::ReadInputFile(input.path), options,
                                         sources, targets.emit != ProjectEmit::kFolder));
     } else {
-      documents.push_back(driver::project::PortSinglePass(
-          input.path, driver::ReadInputFile(input.path), options, sources));
+      driver::InputText text = driver::ReadInputFile(input.path);
+      driver::DetectedKind kind =
+          driver::DetectKind(text.text ? std::string_view(*text.text) : "", input.path);
+      if (options.dialect) kind.dialect = *options.dialect;
+      if (targets.emit == ProjectEmit::kHtml && text.text &&
+          kind.dialect != driver::Dialect::kShaderToy) {
+        programs.push_back(
+            {input, driver::PortInput(input.path, std::move(text), options, sources)});
+        continue;
+      }
+      documents.push_back(
+          driver::project::PortSinglePass(input.path, std::move(text), options, sources));
     }
     const auto outputs =
         targets.emit == ProjectEmit::kHtml     ? driver::project::PageOutputs(documents.back())
@@ -74,6 +129,24 @@ int PortProjectInputs(const std::vector<driver::InputFile>& inputs,
       texts.push_back(output.text);
     }
   }
+  std::vector<driver::InputFile> program_inputs;
+  std::vector<driver::project::DocumentOutput> program_pages;
+  ProgramPages(programs, program_inputs, program_pages);
+  for (size_t i = 0; i < program_pages.size(); ++i) {
+    // geometry.vert + position.frag -> OUT/position.html (named after the fragment).
+    input_paths.push_back(program_inputs[i].path);
+    const fs::path base = driver::OutDirPath(targets.out_dir, program_inputs[i].relative, "");
+    target_paths.push_back(targets.out_dir.empty() ? fs::path(targets.output)
+                                                   : fs::path(base.string() + ".html"));
+    texts.push_back(std::move(program_pages[i].text));
+  }
+  if (!targets.output.empty() && texts.size() > 1) {
+    std::fprintf(stderr,
+                 "shaderport port: error: -o takes one page, and the inputs give %zu (use "
+                 "--out-dir)\n",
+                 texts.size());
+    return kExitUsage;
+  }
   if (!targets.out_dir.empty()) {
     const std::string clash = driver::OutputClash(input_paths, target_paths);
     if (!clash.empty()) {
@@ -97,6 +170,7 @@ int PortProjectInputs(const std::vector<driver::InputFile>& inputs,
   }
   std::vector<driver::PortResult> findings;
   for (const auto& document : documents) findings.push_back(document.Findings());
+  for (const ProgramInput& program : programs) findings.push_back(program.result);
   if (!driver::HasFindings(findings)) return exit_code;
   const bool color = ::isatty(STDERR_FILENO) != 0 && std::getenv("NO_COLOR") == nullptr;
   std::fputs(driver::FormatPortFindings(findings, sources, color).c_str(), stderr);

@@ -234,7 +234,9 @@ std::string PageProjectJson(const PageProject& project, const PageOptions& optio
                       {"inputs", std::move(inputs)},
                       {"code", pass.fragment_shader},
                       {"lines", std::move(lines)},
-                      {"portErrors", pass.port_errors}});
+                      {"portErrors", pass.port_errors},
+                      {"vertex", pass.vertex_shader},
+                      {"mesh", pass.mesh}});
   }
   const nlohmann::json page = {{"name", project.name},
                                {"id", project.id},

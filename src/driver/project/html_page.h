@@ -57,6 +57,12 @@ struct PagePass {
   std::string fragment_shader;
   std::vector<PageLineRun> lines;
   std::string port_errors;  // shown in the error panel as text
+  // A program of the user's own (not a ShaderToy tab), drawn as `shaderport render`
+  // draws it: this vertex shader (empty: the full-screen triangle), on render's
+  // sphere mesh with a depth test when `mesh`; uniforms other than ShaderToy's get
+  // render's defaults by name and type (docs/html-pages.md).
+  std::string vertex_shader;
+  bool mesh = false;
 };
 
 struct PageProject {

@@ -2,9 +2,43 @@
 
 #include "driver/project/folder_project.h"
 #include "driver/project/html_page.h"
+#include "driver/render_check/varying_feeder.h"
 
 namespace shaderport::driver::project {
 namespace {
+
+// What render draws a program with when the user gives no shader of that stage
+// (src/render/gl_renderer.cpp): the full-screen triangle, a depth shade.
+constexpr const char* kFullScreenVertex =
+    "#version 300 es\n"
+    "void main() {\n"
+    "  vec2 p = vec2(float((gl_VertexID & 1) << 2) - 1.0, float((gl_VertexID & 2) << 1) - "
+    "1.0);\n"
+    "  gl_Position = vec4(p, 0.0, 1.0);\n"
+    "}\n";
+constexpr const char* kDepthShadeFragment =
+    "#version 300 es\n"
+    "precision highp float;\n"
+    "out vec4 shaderport_color;\n"
+    "void main() {\n"
+    "  shaderport_color = vec4(vec3(0.9 - 0.8 * gl_FragCoord.z), 1.0);\n"
+    "}\n";
+
+// A ported stage's text, or why there is none.
+std::string StageText(const PortResult& result, std::string& errors) {
+  if (!result.read_failed && !result.text.empty()) return result.text;
+  for (const Diagnostic& d : result.diagnostics) {
+    if (d.severity == Severity::kError) errors += d.message + " [" + d.rule_id + "]\n";
+  }
+  if (errors.empty()) errors = "the port produced no shader text";
+  return {};
+}
+
+std::string StemOf(const PortResult* result) {
+  return result != nullptr && result->file != nullptr
+             ? std::filesystem::path(result->file->Name()).filename().string()
+             : std::string();
+}
 
 // The site's ids are 6 letters and digits; anything else (a path, "..") is not
 // used as a file name.
@@ -152,6 +186,30 @@ std::vector<DocumentOutput> PageOutputs(const PortedDocument& document) {
                        BuildProjectPage(PageFromPorted(document.ported[i]))});
   }
   return outputs;
+}
+
+DocumentOutput ProgramPage(const PortResult* vertex, const PortResult* fragment) {
+  PageProject page;
+  PagePass pass;
+  pass.tab_name = StemOf(fragment != nullptr ? fragment : vertex);
+  page.name = vertex != nullptr && fragment != nullptr ? StemOf(vertex) + " + " + StemOf(fragment)
+                                                       : pass.tab_name;
+  pass.kind = ShaderToyPass::kImage;
+  std::string errors;
+  pass.fragment_shader =
+      fragment != nullptr ? StageText(*fragment, errors) : std::string(kDepthShadeFragment);
+  if (vertex != nullptr) {
+    pass.vertex_shader = StageText(*vertex, errors);
+    pass.mesh = true;
+  } else {
+    pass.vertex_shader = FeederVertexShader(pass.fragment_shader);
+    if (pass.vertex_shader.empty()) pass.vertex_shader = kFullScreenVertex;
+  }
+  // The page compiles nothing when a stage has no text: the panel says why.
+  if (!errors.empty()) pass.fragment_shader.clear();
+  pass.port_errors = errors;
+  page.passes.push_back(std::move(pass));
+  return {"", BuildProjectPage(page)};
 }
 
 }  // namespace shaderport::driver::project

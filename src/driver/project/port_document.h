@@ -53,4 +53,11 @@ std::vector<DocumentOutput> PageOutputs(const PortedDocument& document);
 // The folder layout of every project (the code as written, and shadertoy.toml).
 std::vector<DocumentOutput> FolderOutputs(const PortedDocument& document);
 
+// A page for shaders of the user's own harness (WebGL1, WebGL2, a harness dialect
+// such as raymarch-blog), ported: a fragment shader alone (the full-screen triangle,
+// with render's feeder vertex shader for its inputs), a vertex shader alone (on
+// render's sphere, with render's depth-shading fragment shader) or a vertex and
+// fragment pair (on the sphere). Either may be null, not both.
+DocumentOutput ProgramPage(const PortResult* vertex, const PortResult* fragment);
+
 }  // namespace shaderport::driver::project

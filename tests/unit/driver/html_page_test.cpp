@@ -10,7 +10,9 @@
 #include <sstream>
 #include <string>
 
+#include "driver/port/port_file.h"
 #include "driver/project/json_project_reader.h"
+#include "driver/project/port_document.h"
 #include "driver/project/port_project.h"
 
 namespace shaderport::driver::project {
@@ -177,6 +179,43 @@ TEST(HtmlPage, PageFromPortedKeepsTabsInputsAndUserLines) {
   EXPECT_EQ(image.inputs[0].buffer, 0);
   EXPECT_EQ(image.inputs[0].filter, "linear");
   EXPECT_EQ(image.inputs[0].wrap, "clamp");
+}
+
+// The one pass of a program page, read back from its JSON.
+nlohmann::json ProgramPass(const DocumentOutput& output) {
+  const nlohmann::json project = nlohmann::json::parse(EmbeddedJson(output.text));
+  EXPECT_EQ(project["passes"].size(), 1u);
+  return project["passes"][0];
+}
+
+TEST(HtmlPage, ProgramPagesDrawAsRenderDraws) {
+  const std::string ssao = std::string(SHADERPORT_SOURCE_DIR) + "/corpus/ssao/";
+  SourceManager sources;
+  const PortResult vertex = PortFile(ssao + "geometry.vert", PortOptions{}, sources);
+  const PortResult fragment = PortFile(ssao + "position.frag", PortOptions{}, sources);
+  // A pair: both ported texts, on the sphere mesh.
+  const nlohmann::json pair = ProgramPass(ProgramPage(&vertex, &fragment));
+  EXPECT_EQ(pair["vertex"], vertex.text);
+  EXPECT_EQ(pair["code"], fragment.text);
+  EXPECT_TRUE(pair["mesh"].get<bool>());
+  EXPECT_NE(vertex.text.find("in vec3 Vertex"), std::string::npos) << vertex.text;
+  // A vertex shader alone gets render's depth shade.
+  const nlohmann::json alone = ProgramPass(ProgramPage(&vertex, nullptr));
+  EXPECT_NE(alone["code"].get<std::string>().find("gl_FragCoord.z"), std::string::npos);
+  EXPECT_TRUE(alone["mesh"].get<bool>());
+  // A fragment shader with an input gets render's feeder, which writes it.
+  const nlohmann::json fed = ProgramPass(ProgramPage(nullptr, &fragment));
+  EXPECT_FALSE(fed["mesh"].get<bool>());
+  EXPECT_NE(fed["vertex"].get<std::string>().find("vPosition = "), std::string::npos)
+      << fed["vertex"];
+  // A stage the port could not read: the panel says why, nothing is compiled.
+  PortResult unread;
+  unread.read_failed = true;
+  unread.diagnostics.push_back(
+      MakeDiagnostic(Severity::kError, "input/unreadable", {kNoFile, 0, 0}, "cannot read it"));
+  const nlohmann::json failed = ProgramPass(ProgramPage(&unread, &fragment));
+  EXPECT_EQ(failed["code"], "");
+  EXPECT_NE(failed["portErrors"].get<std::string>().find("cannot read it"), std::string::npos);
 }
 
 TEST(HtmlPage, RuntimeIsInlineAndLoadsNothing) {

@@ -45,7 +45,9 @@
     if (m) fixedSize = [Math.max(1, Math.min(4096, +m[1])), Math.max(1, Math.min(4096, +m[2]))];
   }
 
-  const gl = canvas.getContext("webgl2", {alpha: false, antialias: false, depth: false,
+  // A program of the user's own drawn on render's mesh needs a depth buffer.
+  const gl = canvas.getContext("webgl2", {alpha: false, antialias: false,
+    depth: project.passes.some((p) => p.mesh),
     stencil: false, premultipliedAlpha: false, preserveDrawingBuffer: true});
   if (!gl) {
     $("sp-fallback").hidden = false;
@@ -133,6 +135,8 @@
   const kUniformNames = ["iResolution", "iTime", "iTimeDelta", "iFrameRate", "iFrame",
     "iChannelTime", "iChannelResolution", "iMouse", "iDate", "iSampleRate", "unViewport",
     "unCorners"];
+  // Programs of the user's own (pass.vertex set) get render's inputs for the rest.
+  const own = spOwnInputs(gl, gpu, kUniformNames);
   let failed = false;
   for (const pass of passes) {
     if (pass.kind !== "image" && pass.kind !== "buffer" && pass.kind !== "cube" &&
@@ -151,8 +155,20 @@
       showError(pass, "does not compile", mappedLog(pass, log), log);
       continue;
     }
+    let vs = vertexShader;
+    if (pass.vertex) {
+      vs = gl.createShader(gl.VERTEX_SHADER);
+      gl.shaderSource(vs, pass.vertex);
+      gl.compileShader(vs);
+      if (!gl.getShaderParameter(vs, gl.COMPILE_STATUS)) {
+        failed = true;
+        const log = gl.getShaderInfoLog(vs) || "";
+        showError(pass, "the vertex shader does not compile", [log], log);
+        continue;
+      }
+    }
     const program = gl.createProgram();
-    gl.attachShader(program, vertexShader);
+    gl.attachShader(program, vs);
     gl.attachShader(program, fs);
     gl.linkProgram(program);
     if (!gl.getProgramParameter(program, gl.LINK_STATUS)) {
@@ -168,6 +184,10 @@
     for (let c = 0; c < 4; ++c) {
       const loc = gl.getUniformLocation(program, "iChannel" + c);
       if (loc) gl.uniform1i(loc, c);
+    }
+    if (pass.vertex) {
+      pass.own = own.uniforms(program);  // iChannelN too: render binds procedural ones
+      if (pass.mesh) pass.meshVao = own.mesh(program);
     }
   }
   if (failed || !imagePass) {
@@ -360,7 +380,22 @@
     gl.viewport(0, 0, width, height);
     gl.useProgram(imagePass.program);
     setUniforms(imagePass, v, width, height, bindInputs(imagePass));
-    gl.drawArrays(gl.TRIANGLES, 0, 3);
+    if (imagePass.own) {
+      // As render: cleared to transparent black, what the program does not draw stays so.
+      own.set(imagePass.own, v.time, width, height);
+      gl.clearColor(0, 0, 0, 0);
+      gl.clear(gl.COLOR_BUFFER_BIT | (imagePass.mesh ? gl.DEPTH_BUFFER_BIT : 0));
+    }
+    if (imagePass.meshVao) {
+      gl.bindVertexArray(imagePass.meshVao.vao);
+      gl.enable(gl.DEPTH_TEST);
+      gl.depthFunc(gl.LESS);
+      gl.drawElements(gl.TRIANGLES, imagePass.meshVao.count, gl.UNSIGNED_INT, 0);
+      gl.disable(gl.DEPTH_TEST);
+      gl.bindVertexArray(vao);
+    } else {
+      gl.drawArrays(gl.TRIANGLES, 0, 3);
+    }
     // Keypresses and the click flag last one frame, as on the site.
     gpu.endFrame();
     mouse.click = false;

@@ -200,3 +200,149 @@ function spResources(gl, note) {
     },
   };
 }
+
+// A program of the user's own (not a ShaderToy tab) gets what `shaderport render`
+// feeds it (src/render/uniform_values.cpp, render_mesh.cpp): uniforms by name and
+// type, procedural textures for its samplers, and the unit sphere (32 x 16) with
+// each attribute fed the stream its name suggests.
+function spOwnInputs(gl, gpu, skip) {
+  const f32 = Math.fround;
+  function perspective(aspect) {
+    const f = f32(1 / Math.tan(f32(60 * f32(3.14159265) / 180) / 2));
+    const m = new Float32Array(16);
+    m[0] = f / aspect; m[5] = f; m[10] = (100 + 0.1) / (0.1 - 100); m[11] = -1;
+    m[14] = 2 * 100 * 0.1 / (0.1 - 100);
+    return m;
+  }
+  function identity(n) {
+    const m = new Float32Array(n * n);
+    for (let i = 0; i < n; ++i) m[i * n + i] = 1;
+    return m;
+  }
+  const kFloats = {[gl.FLOAT]: 1, [gl.FLOAT_VEC2]: 2, [gl.FLOAT_VEC3]: 3, [gl.FLOAT_VEC4]: 4};
+  const kInts = {[gl.INT]: 1, [gl.INT_VEC2]: 2, [gl.INT_VEC3]: 3, [gl.INT_VEC4]: 4,
+    [gl.BOOL]: 1, [gl.BOOL_VEC2]: 2, [gl.BOOL_VEC3]: 3, [gl.BOOL_VEC4]: 4};
+  const kUints = {[gl.UNSIGNED_INT]: 1, [gl.UNSIGNED_INT_VEC2]: 2, [gl.UNSIGNED_INT_VEC3]: 3,
+    [gl.UNSIGNED_INT_VEC4]: 4};
+  const kMatrices = {[gl.FLOAT_MAT2]: 2, [gl.FLOAT_MAT3]: 3, [gl.FLOAT_MAT4]: 4};
+  const kSamplers = {[gl.SAMPLER_2D]: "2d", [gl.SAMPLER_CUBE]: "cubemap", [gl.SAMPLER_3D]: "volume"};
+
+  // The active uniforms `skip` does not set (ShaderToy's), samplers on units 4 and up.
+  function uniforms(program) {
+    const out = [];
+    let unit = 4;
+    const n = gl.getProgramParameter(program, gl.ACTIVE_UNIFORMS);
+    gl.useProgram(program);
+    for (let i = 0; i < n; ++i) {
+      const info = gl.getActiveUniform(program, i);
+      const loc = gl.getUniformLocation(program, info.name);
+      let name = info.name;
+      if (!loc) continue;  // a uniform block member
+      if (name.length > 3 && name.endsWith("[0]")) name = name.slice(0, -3);
+      if (skip.includes(name)) continue;
+      const u = {loc: loc, type: info.type, size: info.size, lower: name.toLowerCase(), unit: -1};
+      if (info.type in kSamplers) {
+        u.unit = unit++;
+        gl.uniform1i(loc, u.unit);
+      }
+      out.push(u);
+    }
+    return out;
+  }
+
+  function set(list, time, w, h) {
+    for (const u of list) {
+      if (u.unit >= 0) {
+        gl.activeTexture(gl.TEXTURE0 + u.unit);
+        const t = gpu.proceduralTexture(kSamplers[u.type]);
+        gl.bindTexture(t.target, t.tex);
+        gl.bindSampler(u.unit, gpu.samplerFor("mipmap", "repeat"));
+        gl.activeTexture(gl.TEXTURE0);
+      } else if (u.type in kFloats) {
+        const k = kFloats[u.type];
+        let v = [0.5, 0.5, 0.5, 1];
+        if (u.lower.includes("texel")) v = [1 / w, 1 / h, 0, 0];
+        else if (/resolution|viewport|size/.test(u.lower)) v = [w, h, 1, 1];
+        else if (u.lower.includes("time")) v = [time, time, time, time];
+        const data = [];
+        for (let i = 0; i < u.size; ++i) data.push(...v.slice(0, k));
+        gl["uniform" + k + "fv"](u.loc, data);
+      } else if (u.type in kMatrices) {
+        const n = kMatrices[u.type];
+        let m = identity(n);
+        if (n === 4 && u.lower.includes("proj")) m = perspective(f32(w / h));
+        else if (n === 4 && u.lower.includes("view")) m[14] = -3;  // camera 3 units back
+        const data = [];
+        for (let i = 0; i < u.size; ++i) data.push(...m);
+        gl["uniformMatrix" + n + "fv"](u.loc, false, data);
+      } else if (u.type in kInts) {
+        gl["uniform" + kInts[u.type] + "iv"](u.loc, new Array(u.size * kInts[u.type]).fill(1));
+      } else if (u.type in kUints) {
+        gl["uniform" + kUints[u.type] + "uiv"](u.loc, new Array(u.size * kUints[u.type]).fill(1));
+      }
+    }
+  }
+
+  function stream(name) {
+    const lower = name.toLowerCase().split("vertex").join("");  // "vertexColor" is a colour
+    if (lower.includes("norm")) return "normals";
+    if (lower.includes("tangent")) return "tangents";
+    if (/uv|tex|coord/.test(lower)) return "texCoords";
+    if (lower.includes("col")) return "colors";
+    return "positions";
+  }
+  function sphere(slices, stacks) {
+    const m = {positions: [], normals: [], texCoords: [], colors: [], tangents: [], indices: []};
+    const pi = f32(3.14159265);
+    for (let j = 0; j <= stacks; ++j) {
+      const v = f32(j / stacks);
+      const theta = f32(v * pi);
+      for (let i = 0; i <= slices; ++i) {
+        const u = f32(i / slices);
+        const phi = f32(f32(u * 2) * pi);
+        const x = f32(Math.sin(theta) * Math.cos(phi));
+        const y = f32(Math.cos(theta));
+        const z = f32(Math.sin(theta) * Math.sin(phi));
+        m.positions.push(x, y, z, 1);
+        m.normals.push(x, y, z, 0);
+        m.texCoords.push(u, 1 - v, 0, 1);
+        m.colors.push(x * 0.5 + 0.5, y * 0.5 + 0.5, z * 0.5 + 0.5, 1);
+        m.tangents.push(-Math.sin(phi), 0, Math.cos(phi), 1);
+      }
+    }
+    const row = slices + 1;
+    for (let j = 0; j < stacks; ++j) {
+      for (let i = 0; i < slices; ++i) {
+        const a = j * row + i;
+        const b = a + row;
+        m.indices.push(a, b, a + 1, a + 1, b, b + 1);
+      }
+    }
+    return m;
+  }
+  const kComponents = {[gl.FLOAT]: 1, [gl.FLOAT_VEC2]: 2, [gl.FLOAT_VEC3]: 3, [gl.FLOAT_VEC4]: 4};
+  // A vertex array with the program's active attributes fed from the sphere.
+  function mesh(program) {
+    const m = sphere(32, 16);
+    const vao = gl.createVertexArray();
+    gl.bindVertexArray(vao);
+    const n = gl.getProgramParameter(program, gl.ACTIVE_ATTRIBUTES);
+    for (let i = 0; i < n; ++i) {
+      const info = gl.getActiveAttrib(program, i);
+      const loc = gl.getAttribLocation(program, info.name);
+      const k = kComponents[info.type];
+      if (loc < 0 || !k) continue;  // gl_VertexID and friends, int attributes
+      const buffer = gl.createBuffer();
+      gl.bindBuffer(gl.ARRAY_BUFFER, buffer);
+      gl.bufferData(gl.ARRAY_BUFFER, new Float32Array(m[stream(info.name)]), gl.STATIC_DRAW);
+      gl.vertexAttribPointer(loc, k, gl.FLOAT, false, 16, 0);
+      gl.enableVertexAttribArray(loc);
+    }
+    const indices = gl.createBuffer();
+    gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, indices);
+    gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, new Uint32Array(m.indices), gl.STATIC_DRAW);
+    gl.bindVertexArray(null);
+    return {vao: vao, count: m.indices.length};
+  }
+  return {uniforms: uniforms, set: set, mesh: mesh};
+}
