@@ -6,7 +6,7 @@ record is written as its own .json file and run through:
   check   : exit 0 (clean) or 1 (findings); 2/3 or an internal/* finding is a failure
   port    : --out-dir, exit 0/1; every written .frag must compile in glslangValidator
   page    : port --emit html writes one page
-  render  : --frames 2 --size 64x64 draws a picture (exit 0/1 with a PNG), or says why
+  render  : --frames 2 --size 64x64 --timeout 60 draws a picture (exit 0/1 with a PNG), or says why
 Prints a markdown report (counts, then each project that did not go through, with the
 first line of its findings). Nothing of the shaders is written to the report but ids.
 
@@ -37,6 +37,9 @@ def first_error(output):
     return ""
 
 
+args_timeout = 60  # render --timeout: slow is not hung (llvmpipe on a busy 2-core machine)
+
+
 def measure(binary, record, work):
     key = record["id"]
     folder = os.path.join(work, key)
@@ -62,7 +65,8 @@ def measure(binary, record, work):
     code, _ = run([binary, "port", "--emit", "html", path, "-o", page])
     result["page"] = code in (0, 1) and os.path.exists(page)
     png = os.path.join(folder, key + ".png")
-    code, output = run([binary, "render", path, "--frames", "2", "--size", "64x64", "-o", png])
+    code, output = run([binary, "render", path, "--frames", "2", "--size", "64x64", "--timeout",
+                        str(args_timeout), "-o", png], timeout=args_timeout + 60)
     result["render"] = code
     result["rendered"] = os.path.exists(png)
     result["render_error"] = first_error(output)
@@ -76,7 +80,10 @@ def main():
     parser.add_argument("--limit", type=int, default=0)
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--title", default="")
+    parser.add_argument("--render-timeout", type=int, default=60)
     args = parser.parse_args()
+    global args_timeout
+    args_timeout = args.render_timeout
     records = []
     with open(args.corpus) as corpus:
         for line in corpus:
