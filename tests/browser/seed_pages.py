@@ -131,6 +131,40 @@ def page_only(chromium, binary, work, name, sources, extra=()):
     return problems, "%d colours" % len(colours)
 
 
+def broken_program(chromium, binary, work, name, source):
+    """A compile error in a program page is shown on the user's file and line."""
+    text = open(source).read()
+    line = text.count("\n") + 1 + (0 if text.endswith("\n") else 1)
+    path = os.path.join(work, name + ".glsl")
+    with open(path, "w") as f:
+        f.write(text + ("" if text.endswith("\n") else "\n") +
+                "float broken() { return undefined_name; }\n")
+    page, why = port_page(binary, work, name, [path], ["--dialect", "raymarch-blog"])
+    if page is None:
+        return [why], ""
+    dom_text, _ = chromium_dom(chromium, work, page, "#time=1&frames=1&size=64x64")
+    dom = Dom()
+    dom.feed(dom_text)
+    panel = dom.text.get("sp-errors", "")
+    state = dom.attrs.get("sp-state", {}).get("data-state")
+    where = "%s.glsl:%d:" % (name, line)
+    if state != "error" or where not in panel or "undefined_name" not in panel:
+        return ["state %r, the panel does not put the error on %s: %r" % (state, where, panel)], ""
+    return [], "error on " + where
+
+
+def cli_problems(binary, work):
+    """-o takes one page: two fragment shaders and a vertex shader give two."""
+    ssao = os.path.join(CORPUS, "ssao")
+    done = run([binary, "port", "--emit", "html", os.path.join(ssao, "geometry.vert"),
+                os.path.join(ssao, "position.frag"), os.path.join(ssao, "normal.frag"), "-o",
+                os.path.join(work, "two.html")])
+    if done.returncode != 2 or os.path.exists(os.path.join(work, "two.html")):
+        return ["port --emit html of 3 shaders with -o: exit %d, expected 2 and nothing "
+                "written" % done.returncode]
+    return []
+
+
 def jobs(binary, work):
     """name -> (function, arguments) for every check."""
     out = {}
@@ -158,6 +192,7 @@ def jobs(binary, work):
         if done.returncode not in (0, 1):
             raise RuntimeError("port --dialect raymarch-blog %s: %s" % (path, done.stderr))
         out[name] = (compared, (name, [path], frag, ["--dialect", "raymarch-blog"]))
+    out["raymarch-broken"] = (broken_program, ("raymarch-broken", raymarch[0]))
     for path in sorted(glob.glob(os.path.join(CORPUS, "ssao", "*.*"))):
         name = "ssao-" + os.path.basename(path).replace(".", "-")
         out[name] = (page_only, (name, [path])) if name in GPU_DIFFERS else (
@@ -177,7 +212,7 @@ def main():
         return 1
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
-    failed = []
+    failed = cli_problems(binary, work)
     with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
         futures = {name: pool.submit(f, chromium, binary, work, *args)
                    for name, (f, args) in jobs(binary, work).items()}

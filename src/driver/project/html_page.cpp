@@ -114,6 +114,13 @@ std::string ValidText(const std::string& text) {
   return nlohmann::json::parse(quoted).get<std::string>();
 }
 
+nlohmann::json RunsJson(const std::vector<PageLineRun>& runs) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const PageLineRun& run : runs)
+    out.push_back({run.ported_first, run.count, run.origin, run.user_first});
+  return out;
+}
+
 PageInputKind InputKindOf(ChannelSource source) {
   switch (source) {
     case ChannelSource::kNone:
@@ -225,9 +232,7 @@ std::string PageProjectJson(const PageProject& project, const PageOptions& optio
                         {"wrap", input.wrap},
                         {"vflip", input.vflip}});
     }
-    nlohmann::json lines = nlohmann::json::array();
-    for (const PageLineRun& run : pass.lines)
-      lines.push_back({run.ported_first, run.count, run.origin, run.user_first});
+    nlohmann::json lines = RunsJson(pass.lines);
     passes.push_back({{"name", pass.tab_name},
                       {"kind", KindName(pass.kind)},
                       {"output", pass.output_buffer},
@@ -236,6 +241,7 @@ std::string PageProjectJson(const PageProject& project, const PageOptions& optio
                       {"lines", std::move(lines)},
                       {"portErrors", pass.port_errors},
                       {"vertex", pass.vertex_shader},
+                      {"vertexLines", RunsJson(pass.vertex_lines)},
                       {"mesh", pass.mesh}});
   }
   const nlohmann::json page = {{"name", project.name},

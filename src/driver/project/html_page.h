@@ -62,6 +62,7 @@ struct PagePass {
   // sphere mesh with a depth test when `mesh`; uniforms other than ShaderToy's get
   // render's defaults by name and type (docs/html-pages.md).
   std::string vertex_shader;
+  std::vector<PageLineRun> vertex_lines;  // as `lines`, for vertex_shader
   bool mesh = false;
 };
 

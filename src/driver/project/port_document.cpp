@@ -34,6 +34,30 @@ std::string StageText(const PortResult& result, std::string& errors) {
   return {};
 }
 
+// Each ported line's line in the user's file: by its last character the port copied
+// (an edited start such as `attribute` -> `in` keeps the line), else its first; a
+// line with neither (the added `#version`, outputs) is generated.
+std::vector<PageLineRun> PortedLineRuns(const PortResult& result, const std::string& origin) {
+  std::vector<LineOrigin> lines;
+  if (result.file == nullptr) return {};
+  const std::string& text = result.text;
+  for (size_t begin = 0; begin < text.size();) {
+    size_t end = text.find('\n', begin);
+    if (end == std::string::npos) end = text.size();
+    const auto b = static_cast<uint32_t>(begin);
+    const auto e = static_cast<uint32_t>(end);
+    LineOrigin line;
+    if (e > b && result.map.IsCopied(e - 1, e)) {
+      line = {origin, result.file->LocationOf(result.map.ToOriginal(e - 1)).line};
+    } else if (e > b && result.map.IsCopied(b, b + 1)) {
+      line = {origin, result.file->LocationOf(result.map.ToOriginal(b)).line};
+    }
+    lines.push_back(line);
+    begin = end + 1;
+  }
+  return LineRunsFromOrigins(lines);
+}
+
 std::string StemOf(const PortResult* result) {
   return result != nullptr && result->file != nullptr
              ? std::filesystem::path(result->file->Name()).filename().string()
@@ -198,8 +222,10 @@ DocumentOutput ProgramPage(const PortResult* vertex, const PortResult* fragment)
   std::string errors;
   pass.fragment_shader =
       fragment != nullptr ? StageText(*fragment, errors) : std::string(kDepthShadeFragment);
+  if (fragment != nullptr) pass.lines = PortedLineRuns(*fragment, StemOf(fragment));
   if (vertex != nullptr) {
     pass.vertex_shader = StageText(*vertex, errors);
+    pass.vertex_lines = PortedLineRuns(*vertex, StemOf(vertex));
     pass.mesh = true;
   } else {
     pass.vertex_shader = FeederVertexShader(pass.fragment_shader);

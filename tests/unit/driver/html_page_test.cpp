@@ -181,6 +181,26 @@ TEST(HtmlPage, PageFromPortedKeepsTabsInputsAndUserLines) {
   EXPECT_EQ(image.inputs[0].wrap, "clamp");
 }
 
+// The 1-based line of `needle` in `text`, as text.
+std::string LineOf(std::string_view text, std::string_view needle) {
+  const size_t at = text.find(needle);
+  if (at == std::string_view::npos) return "missing";
+  return std::to_string(1 + std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+}
+
+// "origin:line" that the page's runs give the ported line holding `needle`.
+std::string UserLineOf(const nlohmann::json& runs, const std::string& ported,
+                       std::string_view needle) {
+  const uint32_t line = static_cast<uint32_t>(std::stoul(LineOf(ported, needle)));
+  for (const auto& run : runs) {
+    const uint32_t first = run[0], count = run[1];
+    if (line >= first && line < first + count)
+      return run[2].get<std::string>() + ":" +
+             std::to_string(run[3].get<uint32_t>() + line - first);
+  }
+  return "generated";
+}
+
 // The one pass of a program page, read back from its JSON.
 nlohmann::json ProgramPass(const DocumentOutput& output) {
   const nlohmann::json project = nlohmann::json::parse(EmbeddedJson(output.text));
@@ -199,6 +219,12 @@ TEST(HtmlPage, ProgramPagesDrawAsRenderDraws) {
   EXPECT_EQ(pair["code"], fragment.text);
   EXPECT_TRUE(pair["mesh"].get<bool>());
   EXPECT_NE(vertex.text.find("in vec3 Vertex"), std::string::npos) << vertex.text;
+  // Ported lines map back to the user's files (errors land on them).
+  EXPECT_EQ(UserLineOf(pair["lines"], fragment.text, "length(vPosition)"),
+            "position.frag:" + LineOf(fragment.file->Text(), "length(vPosition)"));
+  EXPECT_EQ(UserLineOf(pair["vertexLines"], vertex.text, "in vec3 Normal"),
+            "geometry.vert:" + LineOf(vertex.file->Text(), "attribute vec3 Normal"));
+  EXPECT_EQ(UserLineOf(pair["vertexLines"], vertex.text, "#version 300 es"), "generated");
   // A vertex shader alone gets render's depth shade.
   const nlohmann::json alone = ProgramPass(ProgramPage(&vertex, nullptr));
   EXPECT_NE(alone["code"].get<std::string>().find("gl_FragCoord.z"), std::string::npos);

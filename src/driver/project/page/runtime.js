@@ -163,7 +163,8 @@
       if (!gl.getShaderParameter(vs, gl.COMPILE_STATUS)) {
         failed = true;
         const log = gl.getShaderInfoLog(vs) || "";
-        showError(pass, "the vertex shader does not compile", [log], log);
+        showError(pass, "the vertex shader does not compile",
+                  mappedLog({name: pass.name, lines: pass.vertexLines || []}, log), log);
         continue;
       }
     }
