@@ -313,6 +313,14 @@ void ReadDocument(std::string_view text, uint32_t base, ProjectDocument& out) {
         {base + static_cast<uint32_t>(std::min(at, text.size())),
          "invalid JSON: " + (detail != std::string::npos ? message.substr(detail) : message)});
     return;
+  } catch (const json::exception& error) {
+    // Also thrown while parsing: a number too large for a double (out_of_range 406).
+    const std::string message = error.what();
+    const size_t detail = message.find("] ");
+    out.problems.push_back(
+        {base,
+         "invalid JSON: " + (detail != std::string::npos ? message.substr(detail + 2) : message)});
+    return;
   }
   Reader(text, base, out).ReadTop(top);
 }

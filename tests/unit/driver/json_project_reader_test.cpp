@@ -90,6 +90,10 @@ TEST(JsonProjectReader, ReportsWhatIsWrongAndWhere) {
       R"({"renderpass": [{"type": "image", "code": "a"}, {"type": "buffer", "name": "Mine", "code": "a"}]})");
   ASSERT_EQ(no_output.problems.size(), 1u);
   EXPECT_TRUE(ReadShaderToyJson(R"({"name": "package.json"})").projects.empty());
+  // Found by fuzz_project_json: the JSON library throws out_of_range for this number.
+  const ProjectDocument overflow = ReadShaderToyJson(R"({"renderpass": [], "x": 1e99999})");
+  ASSERT_EQ(overflow.problems.size(), 1u);
+  EXPECT_NE(overflow.problems[0].message.find("number overflow"), std::string::npos);
   const ProjectDocument no_image =
       ReadShaderToyJson(R"({"renderpass": [{"type": "common", "code": "float k;"}]})");
   ASSERT_EQ(no_image.problems.size(), 1u);
