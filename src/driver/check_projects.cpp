@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "driver/project/folder_project.h"
+#include "driver/project/load_document.h"
 #include "driver/project/project_sources.h"
 #include "driver/read_input.h"
 
@@ -46,39 +47,20 @@ void AddProjectJobs(const FileJob& base, SourceManager& sources,
                     std::deque<project::ProjectDocument>& documents, std::vector<FileJob>& jobs,
                     std::vector<FileReport>& problems) {
   const std::string name = base.path.string();
-  InputText input = base.contents != nullptr ? *base.contents : ReadInputFile(base.path);
-  if (!input.text) {
+  project::LoadedDocument loaded = project::LoadDocument(
+      base.path, base.contents != nullptr ? *base.contents : ReadInputFile(base.path), sources);
+  if (!loaded.problems.empty()) {
     FileReport report;
-    report.file = &sources.Add(name, "");
-    report.diagnostics.push_back(MakeDiagnostic(Severity::kError, std::move(input.rule_id),
-                                                {report.file->Id(), 0, 0},
-                                                std::move(input.message)));
-    problems.push_back(std::move(report));
-    return;
-  }
-  const bool lines = base.path.extension() == ".jsonl";
-  project::ProjectDocument& document =
-      documents.emplace_back(lines ? project::ReadShaderToyJsonLines(*input.text)
-                                   : project::ReadShaderToyJson(*input.text));
-  const std::string& text = *input.text;
-  if (!document.problems.empty() || document.projects.empty()) {
-    FileReport report;
-    report.file = &sources.Add(name, text);
+    report.file = loaded.document;
     report.dialect = "shadertoy";
-    for (const project::ProjectProblem& problem : document.problems) {
-      report.diagnostics.push_back(
-          MakeDiagnostic(Severity::kError, "input/invalid-project",
-                         {report.file->Id(), problem.offset, problem.offset}, problem.message));
-    }
-    if (document.projects.empty() && document.problems.empty()) {
-      report.diagnostics.push_back(MakeDiagnostic(Severity::kError, "input/invalid-project",
-                                                  {report.file->Id(), 0, 0},
-                                                  "the file holds no ShaderToy project"));
-    }
+    report.diagnostics = std::move(loaded.problems);
     problems.push_back(std::move(report));
   }
+  // The projects that were read are checked even beside a problem elsewhere.
+  project::ProjectDocument& document = documents.emplace_back(std::move(*loaded.read));
+  const std::string_view text = loaded.document->Text();
   const bool several = document.projects.size() > 1;
-  const auto container = std::make_shared<const SourceFile>(kNoFile, name, text);
+  const auto container = std::make_shared<const SourceFile>(kNoFile, name, std::string(text));
   for (size_t i = 0; i < document.projects.size(); ++i) {
     const project::ProjectSources registered =
         project::AddProjectSources(name, container, document.projects[i], i, several, sources);

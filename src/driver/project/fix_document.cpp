@@ -3,7 +3,7 @@
 #include <memory>
 
 #include "driver/project/json_code_rewrite.h"
-#include "driver/project/json_project_reader.h"
+#include "driver/project/load_document.h"
 #include "driver/project/port_project.h"
 #include "driver/project/project_sources.h"
 
@@ -13,32 +13,16 @@ FixedDocument FixDocument(const std::filesystem::path& path, InputText input,
                           const PortOptions& options, SourceManager& sources) {
   FixedDocument out;
   const std::string name = path.string();
-  if (!input.text) {
-    out.document = &sources.Add(name, "");
-    out.read_failed = true;
-    out.problems.push_back(MakeDiagnostic(Severity::kError, std::move(input.rule_id),
-                                          {out.document->Id(), 0, 0}, std::move(input.message)));
-    return out;
-  }
-  out.document = &sources.Add(name, std::move(*input.text));
-  const std::string_view text = out.document->Text();
-  const ProjectDocument read =
-      path.extension() == ".jsonl" ? ReadShaderToyJsonLines(text) : ReadShaderToyJson(text);
-  for (const ProjectProblem& problem : read.problems) {
-    out.problems.push_back(MakeDiagnostic(Severity::kError, "input/invalid-project",
-                                          {out.document->Id(), problem.offset, problem.offset},
-                                          problem.message));
-  }
+  LoadedDocument loaded = LoadDocument(path, std::move(input), sources);
+  out.document = loaded.document;
   // A document with problems is left as it is: rewriting part of it would hide them.
-  if (!read.problems.empty() || read.projects.empty()) {
-    if (read.projects.empty() && read.problems.empty()) {
-      out.problems.push_back(MakeDiagnostic(Severity::kError, "input/invalid-project",
-                                            {out.document->Id(), 0, 0},
-                                            "the file holds no ShaderToy project"));
-    }
+  if (!loaded.Usable()) {
+    out.problems = std::move(loaded.problems);
     out.read_failed = true;
     return out;
   }
+  const std::string_view text = out.document->Text();
+  const ProjectDocument& read = *loaded.read;
   const auto container = std::make_shared<const SourceFile>(kNoFile, name, std::string(text));
   std::vector<CodeReplacement> replacements;
   const bool several = read.projects.size() > 1;

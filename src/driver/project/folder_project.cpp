@@ -29,23 +29,6 @@ constexpr std::array<TabFile, 8> kTabs = {{
     {"image", ShaderToyPass::kImage, -1},
 }};
 
-const char* TabName(const TabFile& tab) {
-  switch (tab.kind) {
-    case ShaderToyPass::kCommon:
-      return "Common";
-    case ShaderToyPass::kCubemap:
-      return "Cube A";
-    case ShaderToyPass::kSound:
-      return "Sound";
-    case ShaderToyPass::kImage:
-      return "Image";
-    case ShaderToyPass::kBuffer:
-      break;
-  }
-  static const char* const kBuffers[] = {"Buffer A", "Buffer B", "Buffer C", "Buffer D"};
-  return kBuffers[tab.buffer];
-}
-
 const TabFile* FindTab(std::string_view stem) {
   for (const TabFile& tab : kTabs)
     if (stem == tab.stem) return &tab;
@@ -218,7 +201,7 @@ ProjectDocument ReadFolderProject(const fs::path& directory) {
     }
     ProjectPass pass;
     pass.kind = tab.kind;
-    pass.name = TabName(tab);
+    pass.name = TabName(tab.kind, tab.buffer);
     pass.output_buffer = tab.buffer;
     pass.code = std::move(*input.text);
     pass.file = file.string();

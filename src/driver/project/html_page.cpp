@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "driver/html_report/html_report.h"
 #include "driver/project/port_project.h"
 
 namespace shaderport::driver::project {
@@ -69,32 +70,6 @@ std::string ScriptSafeJson(const nlohmann::json& value) {
       i += 2;
     } else {
       out += c;
-    }
-  }
-  return out;
-}
-
-std::string EscapeHtml(std::string_view text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&#39;";
-        break;
-      default:
-        out += c;
     }
   }
   return out;
@@ -254,7 +229,7 @@ std::string PageProjectJson(const PageProject& project, const PageOptions& optio
 
 std::string BuildProjectPage(const PageProject& project, const PageOptions& options) {
   const std::string title =
-      EscapeHtml(ValidText(project.name.empty() ? "ShaderToy project" : project.name));
+      HtmlEscape(ValidText(project.name.empty() ? "ShaderToy project" : project.name));
   std::string page;
   page += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
   page += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";

@@ -66,22 +66,6 @@ std::optional<ShaderToyPass> PassKindFromType(std::string_view type) {
   return std::nullopt;
 }
 
-std::string DefaultTabName(ShaderToyPass kind) {
-  switch (kind) {
-    case ShaderToyPass::kImage:
-      return "Image";
-    case ShaderToyPass::kBuffer:
-      return "Buffer A";
-    case ShaderToyPass::kCommon:
-      return "Common";
-    case ShaderToyPass::kCubemap:
-      return "Cube A";
-    case ShaderToyPass::kSound:
-      return "Sound";
-  }
-  return "Image";
-}
-
 ChannelBinding ReadBinding(const json& input) {
   ChannelBinding binding;
   binding.channel = input.value("channel", -1);
@@ -217,7 +201,7 @@ class Reader {
     ProjectPass read;
     read.kind = *kind;
     read.name = StringMember(pass, "name");
-    if (read.name.empty()) read.name = DefaultTabName(*kind);
+    if (read.name.empty()) read.name = TabName(*kind);
     DecodedString code = DecodeWithOffsets(text_, literal->second);
     read.code = std::move(code.text);
     read.origin.literal_begin = base_ + literal->second.begin;

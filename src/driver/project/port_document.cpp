@@ -2,6 +2,7 @@
 
 #include "driver/project/folder_project.h"
 #include "driver/project/html_page.h"
+#include "driver/project/load_document.h"
 #include "driver/render_check/varying_feeder.h"
 
 namespace shaderport::driver::project {
@@ -100,31 +101,15 @@ PortedDocument PortDocument(const std::filesystem::path& path, InputText input,
                             const PortOptions& options, SourceManager& sources, bool port) {
   PortedDocument out;
   const std::string name = path.string();
-  if (!input.text) {
-    out.document = &sources.Add(name, "");
-    out.read_failed = true;
-    out.problems.push_back(MakeDiagnostic(Severity::kError, std::move(input.rule_id),
-                                          {out.document->Id(), 0, 0}, std::move(input.message)));
-    return out;
-  }
-  out.document = &sources.Add(name, std::move(*input.text));
-  const std::string_view text = out.document->Text();
-  out.read = std::make_unique<ProjectDocument>(
-      path.extension() == ".jsonl" ? ReadShaderToyJsonLines(text) : ReadShaderToyJson(text));
-  for (const ProjectProblem& problem : out.read->problems) {
-    out.problems.push_back(MakeDiagnostic(Severity::kError, "input/invalid-project",
-                                          {out.document->Id(), problem.offset, problem.offset},
-                                          problem.message));
-  }
-  if (out.read->projects.empty() && out.read->problems.empty()) {
-    out.problems.push_back(MakeDiagnostic(Severity::kError, "input/invalid-project",
-                                          {out.document->Id(), 0, 0},
-                                          "the file holds no ShaderToy project"));
-  }
+  LoadedDocument loaded = LoadDocument(path, std::move(input), sources);
+  out.document = loaded.document;
+  out.read = std::move(loaded.read);
+  out.problems = std::move(loaded.problems);
   if (!out.problems.empty()) {
     out.read_failed = true;
     return out;
   }
+  const std::string_view text = out.document->Text();
   if (!port) return out;
   const auto container = std::make_shared<const SourceFile>(kNoFile, name, std::string(text));
   const bool several = out.read->projects.size() > 1;

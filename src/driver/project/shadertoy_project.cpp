@@ -37,6 +37,22 @@ std::string BufferTabName(int index) {
   return std::string("Buffer ") + static_cast<char>('A' + index);
 }
 
+std::string TabName(ShaderToyPass kind, int buffer) {
+  switch (kind) {
+    case ShaderToyPass::kImage:
+      return "Image";
+    case ShaderToyPass::kBuffer:
+      return BufferTabName(buffer >= 0 && buffer < 4 ? buffer : 0);
+    case ShaderToyPass::kCommon:
+      return "Common";
+    case ShaderToyPass::kCubemap:
+      return "Cube A";
+    case ShaderToyPass::kSound:
+      return "Sound";
+  }
+  return "Image";
+}
+
 std::string FolderFileName(const ProjectPass& pass) {
   switch (pass.kind) {
     case ShaderToyPass::kCommon:
