@@ -4,29 +4,13 @@
 #include <array>
 #include <memory>
 
+#include "render/builtin_shaders.h"
 #include "render/gl_program.h"
 #include "render/loop_cap.h"
 #include "render/render_mesh.h"
 #include "render/uniform_values.h"
 
 namespace shaderport::render {
-
-// gl_VertexID 0, 1, 2 -> (-1,-1), (3,-1), (-1,3): one triangle covers the viewport.
-const char* const kFullScreenVertexShader =
-    "#version 300 es\n"
-    "void main() {\n"
-    "  vec2 p = vec2(float((gl_VertexID & 1) << 2) - 1.0, float((gl_VertexID & 2) << 1) - 1.0);\n"
-    "  gl_Position = vec4(p, 0.0, 1.0);\n"
-    "}\n";
-
-// Shades by depth, so that a vertex shader's geometry is visible.
-const char* const kFlatFragmentShader =
-    "#version 300 es\n"
-    "precision highp float;\n"
-    "out vec4 shaderport_color;\n"
-    "void main() {\n"
-    "  shaderport_color = vec4(vec3(0.9 - 0.8 * gl_FragCoord.z), 1.0);\n"
-    "}\n";
 
 namespace {
 

@@ -4,26 +4,10 @@
 #include "driver/project/html_page.h"
 #include "driver/project/load_document.h"
 #include "driver/render_check/varying_feeder.h"
+#include "render/builtin_shaders.h"
 
 namespace shaderport::driver::project {
 namespace {
-
-// What render draws a program with when the user gives no shader of that stage
-// (src/render/gl_renderer.cpp): the full-screen triangle, a depth shade.
-constexpr const char* kFullScreenVertex =
-    "#version 300 es\n"
-    "void main() {\n"
-    "  vec2 p = vec2(float((gl_VertexID & 1) << 2) - 1.0, float((gl_VertexID & 2) << 1) - "
-    "1.0);\n"
-    "  gl_Position = vec4(p, 0.0, 1.0);\n"
-    "}\n";
-constexpr const char* kDepthShadeFragment =
-    "#version 300 es\n"
-    "precision highp float;\n"
-    "out vec4 shaderport_color;\n"
-    "void main() {\n"
-    "  shaderport_color = vec4(vec3(0.9 - 0.8 * gl_FragCoord.z), 1.0);\n"
-    "}\n";
 
 // A ported stage's text, or why there is none.
 std::string StageText(const PortResult& result, std::string& errors) {
@@ -206,7 +190,7 @@ DocumentOutput ProgramPage(const PortResult* vertex, const PortResult* fragment)
   pass.kind = ShaderToyPass::kImage;
   std::string errors;
   pass.fragment_shader =
-      fragment != nullptr ? StageText(*fragment, errors) : std::string(kDepthShadeFragment);
+      fragment != nullptr ? StageText(*fragment, errors) : std::string(render::kFlatFragmentShader);
   if (fragment != nullptr) pass.lines = PortedLineRuns(*fragment, StemOf(fragment));
   if (vertex != nullptr) {
     pass.vertex_shader = StageText(*vertex, errors);
@@ -214,7 +198,7 @@ DocumentOutput ProgramPage(const PortResult* vertex, const PortResult* fragment)
     pass.mesh = true;
   } else {
     pass.vertex_shader = FeederVertexShader(pass.fragment_shader);
-    if (pass.vertex_shader.empty()) pass.vertex_shader = kFullScreenVertex;
+    if (pass.vertex_shader.empty()) pass.vertex_shader = render::kFullScreenVertexShader;
   }
   // The page compiles nothing when a stage has no text: the panel says why.
   if (!errors.empty()) pass.fragment_shader.clear();
