@@ -127,7 +127,16 @@ std::string UnifiedDiff(std::string_view before, std::string_view after, const s
   if (before == after) return {};
   const auto a = SplitLines(before);
   const auto b = SplitLines(after);
-  const std::vector<Step> steps = Script(a, b);
+  std::vector<Step> steps = Script(a, b);
+  // diff(1) and git print a change's removed lines before the lines that replace them.
+  for (size_t i = 0; i < steps.size();) {
+    size_t j = i;
+    while (j < steps.size() && steps[j].op != Op::kEqual) ++j;
+    std::stable_partition(steps.begin() + static_cast<std::ptrdiff_t>(i),
+                          steps.begin() + static_cast<std::ptrdiff_t>(j),
+                          [](const Step& step) { return step.op == Op::kDelete; });
+    i = j == i ? i + 1 : j;
+  }
   constexpr size_t kContext = 3;
   std::string out = "--- a/" + name + "\n+++ b/" + name + "\n";
   size_t k = 0;

@@ -173,3 +173,19 @@ TEST(PortCli, NarrowingDropsOnlyTheFixThatBreaksTheOutput) {
 
 }  // namespace
 }  // namespace shaderport::testing
+
+namespace shaderport::testing {
+namespace {
+
+// A replaced line reads as diff(1) and git print it: the old line, then the new one.
+TEST(FixCli, DiffPrintsRemovedLinesBeforeTheirReplacements) {
+  const fs::path dir = TempDir("diff-order");
+  Write(dir / "a.frag",
+        "#version 300 es\nprecision mediump float;\nout vec4 o;\n"
+        "void main() {\n  float x = 1;\n  o = vec4(x);\n}\n");
+  const CommandResult diff = RunShaderport("fix --diff a.frag", dir);
+  EXPECT_NE(diff.out.find("\n-  float x = 1;\n+  float x = 1.0;\n"), std::string::npos) << diff.out;
+}
+
+}  // namespace
+}  // namespace shaderport::testing
