@@ -331,8 +331,8 @@ class DialectParser {
     if (!has_main) return Missing(table, "main", "[[entry_points]] '" + entry.function + "'");
     for (const std::string* body : {&entry.main_body, &entry.buffer_main_body}) {
       if (auto bad = BadPlaceholder(*body)) {
-        Error(table.source(), "unknown placeholder '{" + *bad + "}' in main of '" +
-                                  entry.function + "' (use {entry}, {out} or {fresh:NAME})");
+        Error(table.source(), "unknown placeholder '{" + *bad + "}' in main of '" + entry.function +
+                                  "' (use {entry}, {out} or {fresh:NAME})");
       }
     }
     if (entry.function == "main") {

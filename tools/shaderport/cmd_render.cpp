@@ -100,8 +100,8 @@ int RunRender(const RenderArgs& args) {
   const std::filesystem::path path(args.path);
   std::error_code directory_error;
   const bool project =
-      driver::IsProjectDocument(path) ||
-      (std::filesystem::is_directory(path, directory_error) && driver::project::IsProjectFolder(path));
+      driver::IsProjectDocument(path) || (std::filesystem::is_directory(path, directory_error) &&
+                                          driver::project::IsProjectFolder(path));
   driver::RenderFileResult result = project ? driver::RenderProject(path, sources, options)
                                             : driver::RenderFile(args.path, sources, options);
   int code = kExitOk;
