@@ -20,6 +20,7 @@
 #include "driver/port/output_files.h"
 #include "driver/port/port_file.h"
 #include "driver/port/port_report.h"
+#include "driver/project/folder_project.h"
 #include "driver/read_input.h"
 #include "port_arguments.h"
 #include "port_projects.h"
@@ -91,7 +92,8 @@ int RunPort(const PortArgs& args) {
   // ShaderToy projects (and any input of --emit html) give several files or a page.
   const bool any_project =
       std::any_of(inputs->begin(), inputs->end(), [](const driver::InputFile& input) {
-        return driver::IsProjectDocument(input.path) || !InputProjectFolder(input.path).empty();
+        return driver::IsProjectDocument(input.path) ||
+               !driver::project::ProjectFolderOf(input.path).empty();
       });
   if (emit_html || emit_folder || any_project) {
     if (*emit_kind != toolchain::EmitKind::kEssl)

@@ -17,8 +17,6 @@
 namespace shaderport::cli {
 namespace fs = std::filesystem;
 
-fs::path InputProjectFolder(const fs::path& file) { return driver::project::ProjectFolderOf(file); }
-
 namespace {
 
 struct ProgramInput {
@@ -74,7 +72,7 @@ int PortProjectInputs(const std::vector<driver::InputFile>& inputs,
   std::vector<ProgramInput> programs;  // --emit html of shaders that are not ShaderToy's
   for (const driver::InputFile& input : inputs) {
     // A tab file of a project folder stands for the whole folder, ported once.
-    const fs::path folder = InputProjectFolder(input.path);
+    const fs::path folder = driver::project::ProjectFolderOf(input.path);
     fs::path relative = input.relative;
     if (!folder.empty()) {
       if (!folders_done.insert(folder).second) continue;

@@ -22,10 +22,6 @@ struct ProjectPortTargets {
   ProjectEmit emit = ProjectEmit::kShaders;
 };
 
-// The project folder `file` is a tab file of ("" when none): its directory holds
-// shadertoy.toml.
-std::filesystem::path InputProjectFolder(const std::filesystem::path& file);
-
 // Ports `inputs` (each a .json/.jsonl document, or with `html` a ShaderToy pass),
 // writes what they give and prints the findings; returns the exit code.
 int PortProjectInputs(const std::vector<driver::InputFile>& inputs,

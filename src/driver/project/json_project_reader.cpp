@@ -33,15 +33,6 @@ bool IsCubeBufferId(const json& id) {
          (id.is_string() && id.get<std::string>() == "4dX3Rr");
 }
 
-// "/media/previz/buffer02.png" -> 2.
-std::optional<int> BufferIndexFromSource(std::string_view src) {
-  const size_t at = src.find("buffer0");
-  if (at == std::string_view::npos || at + 7 >= src.size()) return std::nullopt;
-  const char digit = src[at + 7];
-  if (digit < '0' || digit > '3') return std::nullopt;
-  return digit - '0';
-}
-
 std::string StringMember(const json& object, const char* name, const char* other = nullptr) {
   auto it = object.find(name);
   if ((it == object.end() || !it->is_string()) && other != nullptr) it = object.find(other);
@@ -310,11 +301,6 @@ void ReadDocument(std::string_view text, uint32_t base, ProjectDocument& out) {
 }
 
 }  // namespace
-
-bool LooksLikeJson(std::string_view text) {
-  const size_t first = text.find_first_not_of(" \t\r\n");
-  return first != std::string_view::npos && (text[first] == '{' || text[first] == '[');
-}
 
 ProjectDocument ReadShaderToyJson(std::string_view text) {
   ProjectDocument out;

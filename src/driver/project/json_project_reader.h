@@ -22,9 +22,6 @@ struct ProjectDocument {
   std::vector<ProjectProblem> problems;  // each an error of the user's file
 };
 
-// True when `text` starts (after blanks) like a JSON document: `{` or `[`.
-bool LooksLikeJson(std::string_view text);
-
 // One JSON document: an object (export or record) or an array of them.
 ProjectDocument ReadShaderToyJson(std::string_view text);
 

@@ -37,10 +37,4 @@ ProjectSources AddProjectSources(const std::string& document,
   return out;
 }
 
-uint32_t DocumentOffset(const ProjectPass& pass, uint32_t offset) {
-  const auto& offsets = pass.origin.document_offsets;
-  if (offsets.empty()) return offset;
-  return offset < offsets.size() ? offsets[offset] : offsets.back();
-}
-
 }  // namespace shaderport::driver::project

@@ -35,8 +35,4 @@ ProjectSources AddProjectSources(const std::string& document,
                                  const ShaderToyProject& project, size_t project_index,
                                  bool several_projects, SourceManager& sources);
 
-// The document offset of byte `offset` of a pass's code (its own offset for a folder
-// pass, whose code is a file of its own).
-uint32_t DocumentOffset(const ProjectPass& pass, uint32_t offset);
-
 }  // namespace shaderport::driver::project

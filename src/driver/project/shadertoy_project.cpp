@@ -33,6 +33,14 @@ std::optional<int> BufferIndexFromName(std::string_view tab_name) {
   return letter - 'A';
 }
 
+std::optional<int> BufferIndexFromSource(std::string_view src) {
+  const size_t at = src.find("buffer0");
+  if (at == std::string_view::npos || at + 7 >= src.size()) return std::nullopt;
+  const char digit = src[at + 7];
+  if (digit < '0' || digit > '3') return std::nullopt;
+  return digit - '0';
+}
+
 std::string BufferTabName(int index) {
   return std::string("Buffer ") + static_cast<char>('A' + index);
 }

@@ -90,8 +90,10 @@ struct ShaderToyProject {
 
 // The site's tab names and the folder layout's file names.
 std::optional<int> BufferIndexFromName(std::string_view tab_name);  // "Buffer C" -> 2
-std::string BufferTabName(int index);                               // 2 -> "Buffer C"
-std::string TabName(ShaderToyPass kind, int buffer = 0);            // the site's tab name of a kind
-std::string FolderFileName(const ProjectPass& pass);  // "buffer-c.glsl", "image.glsl", ...
+// "/media/previz/buffer02.png" (how the site names a buffer input) -> 2.
+std::optional<int> BufferIndexFromSource(std::string_view src);
+std::string BufferTabName(int index);                     // 2 -> "Buffer C"
+std::string TabName(ShaderToyPass kind, int buffer = 0);  // the site's tab name of a kind
+std::string FolderFileName(const ProjectPass& pass);      // "buffer-c.glsl", "image.glsl", ...
 
 }  // namespace shaderport::driver::project

@@ -19,21 +19,6 @@ Diagnostic Note(SourceRange range, std::string message, Severity severity = Seve
                         range, std::move(message));
 }
 
-// "Buffer C" -> 2; -1 otherwise.
-int BufferIndexFromName(const std::string& name) {
-  if (name.size() != 8 || !name.starts_with("Buffer ")) return -1;
-  const char letter = name[7];
-  return letter >= 'A' && letter <= 'D' ? letter - 'A' : -1;
-}
-
-// "/media/previz/buffer01.png" -> 1; -1 otherwise.
-int BufferIndexFromSource(const std::string& src) {
-  const size_t at = src.find("buffer0");
-  if (at == std::string::npos || at + 7 >= src.size()) return -1;
-  const char digit = src[at + 7];
-  return digit >= '0' && digit <= '3' ? digit - '0' : -1;
-}
-
 struct PassInputs {
   validate::ChannelTypes types{};
   std::array<int, 4> buffers = {-1, -1, -1, -1};
@@ -96,7 +81,8 @@ PassInputs InputsOf(const nlohmann::json& pass) {
     const std::string ctype = input.value("ctype", "");
     inputs.types[c] = validate::ChannelTypeFromCtype(ctype);
     inputs.fed[c] = true;
-    if (ctype == "buffer") inputs.buffers[c] = BufferIndexFromSource(input.value("src", ""));
+    if (ctype == "buffer")
+      inputs.buffers[c] = project::BufferIndexFromSource(input.value("src", "")).value_or(-1);
     render::PassChannel& bound = inputs.channels[c];
     bound = render::PassChannel{};
     bound.kind = ChannelKindOf(ctype, inputs.buffers[c]);
@@ -156,7 +142,7 @@ RenderFileResult RenderShaderToyJson(std::string_view name, std::string_view jso
   std::vector<std::shared_ptr<ComposedText>> buffer_texts;
   RenderFileOptions pass_options = options;
   for (const nlohmann::json* pass : buffers) {
-    const int index = BufferIndexFromName(pass->value("name", ""));
+    const int index = project::BufferIndexFromName(pass->value("name", "")).value_or(-1);
     if (index < 0) continue;
     const PassInputs inputs = InputsOf(*pass);
     auto [composed, code] = compose(*pass, validate::PassType::kBuffer, inputs);
@@ -190,20 +176,6 @@ RenderFileResult RenderShaderToyJson(std::string_view name, std::string_view jso
   };
   RenderPrepared(prepared, pass_options, result);
   return result;
-}
-
-RenderFileResult RenderShaderToyJsonFile(const std::filesystem::path& path, SourceManager& sources,
-                                         const RenderFileOptions& options) {
-  InputText input = ReadInputFile(path);
-  if (!input.text) {
-    RenderFileResult result;
-    const SourceFile& empty = sources.Add(path.string(), "");
-    result.file = &empty;
-    result.diagnostics.push_back(Note(empty.WholeRange(), input.message, Severity::kError));
-    result.diagnostics.back().rule_id = input.rule_id;
-    return result;
-  }
-  return RenderShaderToyJson(path.string(), *input.text, sources, options);
 }
 
 RenderFileResult RenderProject(const std::filesystem::path& path, SourceManager& sources,

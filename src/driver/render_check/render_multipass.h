@@ -15,9 +15,6 @@ namespace shaderport::driver {
 RenderFileResult RenderShaderToyJson(std::string_view name, std::string_view json_text,
                                      SourceManager& sources, const RenderFileOptions& options);
 
-RenderFileResult RenderShaderToyJsonFile(const std::filesystem::path& path, SourceManager& sources,
-                                         const RenderFileOptions& options);
-
 // A ShaderToy project in any form shaderport reads (docs/projects.md): the site's
 // API export or a corpus record (.json), a .jsonl file holding one project, or a
 // project folder (a directory with shadertoy.toml).
