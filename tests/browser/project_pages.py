@@ -317,7 +317,7 @@ class Interaction:
         m = re.search(r"iFrame (\d+)", clock)
         return int(m.group(1)) if m else -1
 
-    def wait_frames(self, n, timeout=30):
+    def wait_frames(self, n, timeout=120):  # a loaded CI machine draws slowly
         start = self.frame()
         deadline = time.time() + timeout
         while self.frame() < start + n:
