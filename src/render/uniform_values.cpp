@@ -243,6 +243,8 @@ void SetUniforms(const GlFunctions& gl, GLuint program, const RenderRequest& req
   const float time = request.inputs.time + delta * static_cast<float>(frame_index);
   for (const UniformInfo& u : uniforms) {
     if (IsSampler(u.type)) continue;
+    // Uniforms the render's own transforms declare (an opaque zero) keep GL's 0.
+    if (u.name.starts_with("shaderport_")) continue;
     if (SetShaderToyUniform(gl, u, request, frame_index, channel_res)) continue;
     switch (u.type) {
       case GL_FLOAT:

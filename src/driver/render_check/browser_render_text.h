@@ -15,6 +15,9 @@ struct BrowserRenderTextOptions {
   // Also compute as desktop GPUs do where llvmpipe differs (32-bit mediump, smoothstep
   // with equal edges). Off for the SPIR-V leg, whose output keeps the user's precision.
   bool desktop_gpu_arithmetic = true;
+  // Built-in math and float division as Chromium computes them without a GPU
+  // (SwiftShader), bit for bit. Renders only: never in text a user receives.
+  bool cpu_browser_math = false;
   bool add_render_probe = false;  // loop counts and output writes (main fragment pass)
   bool vertex_stage = false;
 };

@@ -45,6 +45,7 @@ void RenderPrepared(const PreparedShader& shader, const RenderFileOptions& optio
   // clamped indices), with a probe that tells when llvmpipe's loop cap was hit.
   BrowserRenderTextOptions semantics;
   semantics.webgl_semantics = options.webgl_semantics;
+  semantics.cpu_browser_math = true;
   for (render::BufferPass& pass : request.buffer_passes) {
     pass.fragment_source = BrowserRenderText(pass.fragment_source, semantics);
   }

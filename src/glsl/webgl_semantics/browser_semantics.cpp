@@ -88,6 +88,8 @@ BrowserSemanticsResult ApplyBrowserSemantics(std::span<const SourceFile* const> 
   EditCollector edits(preprocessed);
   SemanticsContext context{parsed.tree, model, options, ParentsOf(parsed.tree), edits, result};
   MainPrologue prologue;
+  // First: its helpers and uniform must precede the smoothstep helper at the same place.
+  if (options.cpu_browser_math) ComputeMathAsCpuBrowser(context, preprocessed);
   if (options.zero_initialize) ZeroInitializeVariables(context, prologue);
   if (options.clamp_indices) ClampIndirectIndices(context);
   if (options.gpu_smoothstep_edges) RewriteSmoothstepEdges(context, preprocessed);

@@ -11,6 +11,9 @@
 //  - mediump and lowp are computed at 32 bits (Mesa lowers mediump to 16);
 //  - smoothstep(a, b, x) with a == b is the step GPUs draw (llvmpipe's fast math
 //    folds it into garbage; GLSL leaves it undefined);
+// and, on request, where llvmpipe computes differently from Chromium without a GPU:
+//  - sin, cos, exp, pow, dot, mix, ... computed as SwiftShader computes them, and
+//    float divisions kept as divisions (cpu_browser_math.cpp);
 // plus, on request, a probe written to a second fragment output, so that a render
 // can tell when llvmpipe's silent loop cap was reached and which pixels never
 // assigned the colour output.
@@ -40,6 +43,9 @@ struct BrowserSemanticsOptions {
   bool gpu_smoothstep_edges = true;
   // mediump and lowp computed at 32 bits, as desktop browsers do (Mesa uses 16).
   bool promote_precision = true;
+  // Built-in math and division as Chromium computes them on the CPU (SwiftShader),
+  // so that hash noise draws the same bits. For renders, never for output text.
+  bool cpu_browser_math = false;
   bool add_render_probe = false;  // fragment shaders only
   bool vertex_stage = false;
 };
@@ -54,6 +60,8 @@ struct BrowserSemanticsResult {
   uint32_t clamped = 0;               // indices clamped
   uint32_t smoothsteps = 0;           // smoothstep names renamed to the GPU-faithful helper
   uint32_t promoted = 0;              // mediump / lowp keywords made highp
+  uint32_t math_calls = 0;            // built-in calls renamed to the CPU-browser helpers
+  uint32_t divisions = 0;             // float divisions kept as divisions
   uint32_t counted_loops = 0;         // loops instrumented
   uint32_t skipped = 0;               // places inside macros that could not be edited safely
 };

@@ -10,50 +10,6 @@
 namespace shaderport::glsl {
 namespace {
 
-constexpr int kMaxConstantDepth = 64;
-
-// Constant expressions: literals, const variables and operators/constructors on them.
-bool IsConstant(const Expr* expr, const SemanticModel& model, int depth = 0) {
-  if (expr == nullptr || depth > kMaxConstantDepth) return false;
-  switch (expr->kind) {
-    case NodeKind::kLiteralExpr:
-      return true;
-    case NodeKind::kIdentifierExpr: {
-      const uint32_t symbol = model.SymbolAt(expr->id);
-      return symbol != kNoSymbol && model.symbols[symbol].is_const;
-    }
-    case NodeKind::kParenExpr:
-      return IsConstant(expr->As<ParenExpr>()->inner, model, depth + 1);
-    case NodeKind::kUnaryExpr: {
-      const auto* unary = expr->As<UnaryExpr>();
-      return unary->op != UnaryOp::kPreIncrement && unary->op != UnaryOp::kPreDecrement &&
-             unary->op != UnaryOp::kPostIncrement && unary->op != UnaryOp::kPostDecrement &&
-             IsConstant(unary->operand, model, depth + 1);
-    }
-    case NodeKind::kBinaryExpr: {
-      const auto* binary = expr->As<BinaryExpr>();
-      return binary->op != BinaryOp::kComma && IsConstant(binary->lhs, model, depth + 1) &&
-             IsConstant(binary->rhs, model, depth + 1);
-    }
-    case NodeKind::kConditionalExpr: {
-      const auto* conditional = expr->As<ConditionalExpr>();
-      return IsConstant(conditional->condition, model, depth + 1) &&
-             IsConstant(conditional->if_true, model, depth + 1) &&
-             IsConstant(conditional->if_false, model, depth + 1);
-    }
-    case NodeKind::kCallExpr: {
-      const auto* call = expr->As<CallExpr>();
-      if (call->call_kind != CallKind::kConstructor) return false;
-      for (const Expr* argument : call->arguments) {
-        if (!IsConstant(argument, model, depth + 1)) return false;
-      }
-      return true;
-    }
-    default:
-      return false;
-  }
-}
-
 // Number of elements the index selects from; 0 when unknown or not clampable.
 int32_t IndexedSize(const Type& type) {
   if (type.IsArray()) return type.array_size > 0 ? type.array_size : 0;
@@ -68,7 +24,7 @@ void ClampIndirectIndices(SemanticsContext& c) {
   VisitPreorder(c.tree, [&](const Node& node, uint32_t) {
     const auto* index = node.As<IndexExpr>();
     if (index == nullptr || index->base == nullptr || index->index == nullptr) return true;
-    if (IsConstant(index->index, c.model)) return true;
+    if (IsConstantExpression(index->index, c.model)) return true;
     const int32_t size = IndexedSize(c.model.TypeOf(index->base->id));
     const Type& index_type = c.model.TypeOf(index->index->id);
     if (size <= 0 || !index_type.IsIntegral() || !index_type.IsScalar()) return true;

@@ -56,6 +56,12 @@ struct SemanticsContext {
   }
 };
 
+// A constant expression as a browser's compiler folds it: literals, const variables,
+// operators, constructors and built-in calls (not texture or derivative ones) on them.
+bool IsConstantExpression(const Expr* expr, const SemanticModel& model);
+// True when `node` is inside the body of a function (not in a global initializer).
+bool InsideFunctionBody(const SemanticsContext& context, const Node& node);
+
 // The definition of main(), if any.
 const FunctionDeclaration* FindMainDefinition(const SyntaxTree& tree);
 // The first function definition: where global helper declarations are inserted.
@@ -71,5 +77,6 @@ void ClampIndirectIndices(SemanticsContext& context);
 void AddRenderProbe(SemanticsContext& context, MainPrologue& prologue);
 void RewriteSmoothstepEdges(SemanticsContext& context, const PreprocessResult& preprocessed);
 void PromotePrecision(SemanticsContext& context, const PreprocessResult& preprocessed);
+void ComputeMathAsCpuBrowser(SemanticsContext& context, const PreprocessResult& preprocessed);
 
 }  // namespace shaderport::glsl

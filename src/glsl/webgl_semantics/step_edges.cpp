@@ -11,6 +11,7 @@
 
 #include "glsl/sema/language.h"
 #include "glsl/syntax/visit.h"
+#include "glsl/webgl_semantics/cpu_math_library.h"
 #include "glsl/webgl_semantics/semantics_context.h"
 
 namespace shaderport::glsl {
@@ -18,38 +19,35 @@ namespace {
 
 constexpr std::string_view kName = "shaderport_smoothstep";
 
-// `@` stands for the vector type of each overload.
+// `@` stands for the vector type of each overload, `~` for what keeps the division
+// a division (see cpu_browser_math.cpp) when that transform runs.
 constexpr std::string_view kScalarHelper =
     "float shaderport_smoothstep(float a, float b, float x) { if (a == b) return x > a ? 1.0 : "
-    "0.0; float t = clamp((x - a) / (b - a), 0.0, 1.0); return t * t * (3.0 - 2.0 * t); } ";
+    "0.0; float t = clamp((x - a) / ((b - a)~), 0.0, 1.0); return t * t * (3.0 - 2.0 * t); } ";
 constexpr std::string_view kVectorHelpers =
-    "@ shaderport_smoothstep(@ a, @ b, @ x) { @ t = clamp((x - a) / (b - a), 0.0, 1.0); t = t * "
+    "@ shaderport_smoothstep(@ a, @ b, @ x) { @ t = clamp((x - a) / ((b - a)~), 0.0, 1.0); t = t * "
     "t * (3.0 - 2.0 * t); return mix(t, @(greaterThan(x, a)), equal(a, b)); } "
     "@ shaderport_smoothstep(float a, float b, @ x) { return shaderport_smoothstep(@(a), @(b), "
     "x); } ";
 
-std::string Helpers() {
-  std::string text(kScalarHelper);
-  for (const std::string_view vector : {"vec2", "vec3", "vec4"}) {
-    for (const char c : kVectorHelpers) {
+std::string Helpers(bool opaque_divisor) {
+  const std::string divisor_tail =
+      opaque_divisor ? " - " + std::string(kOpaqueZeroUniform) : std::string();
+  std::string text;
+  auto append = [&](std::string_view helper, std::string_view vector) {
+    for (const char c : helper) {
       if (c == '@') {
         text.append(vector);
+      } else if (c == '~') {
+        text.append(divisor_tail);
       } else {
         text.push_back(c);
       }
     }
-  }
+  };
+  append(kScalarHelper, "float");
+  for (const std::string_view vector : {"vec2", "vec3", "vec4"}) append(kVectorHelpers, vector);
   return text;
-}
-
-bool InsideFunctionBody(const SemanticsContext& c, const Node& node) {
-  for (const Node* at = c.Parent(node); at != nullptr; at = c.Parent(*at)) {
-    if (at->kind == NodeKind::kCompoundStatement && c.Parent(*at) != nullptr &&
-        c.Parent(*at)->kind == NodeKind::kFunctionDeclaration) {
-      return true;
-    }
-  }
-  return false;
 }
 
 }  // namespace
@@ -90,7 +88,8 @@ void RewriteSmoothstepEdges(SemanticsContext& c, const PreprocessResult& preproc
     c.result.skipped += static_cast<uint32_t>(names.size());
     return;
   }
-  c.edits.Insert(declare_at->file, declare_at->begin, Helpers());
+  const bool opaque_divisor = c.options.cpu_browser_math && c.result.math_calls + c.result.divisions > 0;
+  c.edits.Insert(declare_at->file, declare_at->begin, Helpers(opaque_divisor));
   for (const SourceRange& name : names) c.edits.Replace(name, std::string(kName));
   c.result.smoothsteps = static_cast<uint32_t>(names.size());
 }

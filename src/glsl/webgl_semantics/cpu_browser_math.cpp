@@ -1,0 +1,151 @@
+// Chromium without a GPU (headless, CI machines, blocklisted drivers) draws WebGL
+// with SwiftShader, whose sin, cos, exp, log, pow, atan, dot, mix ... are its own
+// polynomials and operation orders; llvmpipe's differ in the last bits, and hash
+// noise (`fract(sin(x) * 43758.5)`) turns a last bit into a different picture. So
+// calls of those built-ins become calls of helpers written as SwiftShader computes
+// them (cpu_math_library.cpp). A float division by a constant becomes a
+// multiplication by its reciprocal, as Chromium computes it (measured: `x / 3.3`
+// gives x * float(1 / 3.3) there, even when 3.3 reaches the division through a
+// variable or a parameter); Mesa divides.
+// Left alone, as the browser's compiler folds them with exact math: calls and
+// divisions whose operands are all constant, and anything outside a function body.
+// A name spelled in a macro body is renamed only when every use of it may be.
+#include <map>
+#include <set>
+#include <utility>
+
+#include "glsl/sema/language.h"
+#include "glsl/syntax/visit.h"
+#include "glsl/webgl_semantics/cpu_math_library.h"
+#include "glsl/webgl_semantics/semantics_context.h"
+
+namespace shaderport::glsl {
+namespace {
+
+struct SpelledName {
+  SourceRange range;
+  std::string builtin;
+  bool renamable = true;
+};
+
+bool IsBoolSelect(const SemanticModel& model, const CallExpr& call) {
+  if (call.callee.text != "mix" || call.arguments.size() != 3) return false;
+  return model.TypeOf(call.arguments[2]->id).base == BaseType::kBool;
+}
+
+bool IsZeroLiteral(const Expr* expr) {
+  const auto* literal = expr->As<LiteralExpr>();
+  return literal != nullptr && literal->literal_kind == LiteralKind::kFloat &&
+         literal->float_value == 0.0;
+}
+
+struct Division {
+  SourceRange op;
+  SourceRange divisor;
+};
+
+class MathRewriter {
+ public:
+  MathRewriter(SemanticsContext& c, const PreprocessResult& preprocessed)
+      : c_(c), pp_(preprocessed) {}
+
+  void Collect() {
+    VisitPreorder(c_.tree, [&](const Node& node, uint32_t) {
+      if (const auto* call = node.As<CallExpr>()) CollectCall(*call);
+      if (const auto* binary = node.As<BinaryExpr>()) {
+        if (binary->op == BinaryOp::kDiv && !IsConstantExpression(binary, c_.model)) {
+          CollectDivision(*binary, binary->op_range, binary->rhs);
+        }
+      }
+      if (const auto* assignment = node.As<AssignmentExpr>()) {
+        if (assignment->op == AssignOp::kDiv) {
+          CollectDivision(*assignment, assignment->op_range, assignment->rhs);
+        }
+      }
+      return true;
+    });
+  }
+
+  void Apply() {
+    const Node* first_function = FirstFunctionDefinition(c_.tree);
+    const auto declare_at = first_function ? c_.edits.Span(*first_function) : std::nullopt;
+    std::set<std::string> used;
+    for (const auto& [at, name] : names_) {
+      if (!name.renamable || !declare_at) {
+        ++c_.result.skipped;
+        continue;
+      }
+      used.insert(name.builtin);
+      c_.edits.Replace(name.range, CpuMathHelperName(name.builtin));
+      ++c_.result.math_calls;
+    }
+    if (!declare_at) {
+      c_.result.skipped += static_cast<uint32_t>(divisors_.size());
+      return;
+    }
+    if (used.empty() && divisors_.empty()) return;
+    // The uniform is declared even without divisions: the smoothstep helper uses it.
+    c_.edits.Insert(declare_at->file, declare_at->begin, CpuMathDefinitions(used, true));
+    for (const Division& division : divisors_) {
+      const bool compound = division.op.Size() == 2;  // `/=`
+      c_.edits.Replace(division.op, compound ? "*=" : "*");
+      c_.edits.Insert(division.divisor.file, division.divisor.begin, "(1.0 / (");
+      c_.edits.Insert(division.divisor.file, division.divisor.end, "))");
+      ++c_.result.divisions;
+    }
+  }
+
+ private:
+  void CollectCall(const CallExpr& call) {
+    if (call.call_kind != CallKind::kFunction || !c_.model.builtin_calls.contains(call.id) ||
+        !HasCpuMathDefinition(call.callee.text) || IsBoolSelect(c_.model, call) ||
+        !call.HasTokens()) {
+      return;
+    }
+    const PpToken& token = pp_.tokens[call.first_token];
+    const bool spelled = token.text == call.callee.text && token.spelling.Size() == token.text.size();
+    if (!spelled) {
+      ++c_.result.skipped;  // pasted with ## or otherwise not one written token
+      return;
+    }
+    auto [entry, added] = names_.try_emplace({token.spelling.file, token.spelling.begin});
+    if (added) entry->second = {token.spelling, std::string(call.callee.text), true};
+    // A folded constant stays exact in the browser; a global initializer must stay
+    // a constant expression.
+    if (IsConstantExpression(&call, c_.model) || !InsideFunctionBody(c_, call)) {
+      entry->second.renamable = false;
+    }
+  }
+
+  void CollectDivision(const Expr& division, const SourceRange& op, const Expr* divisor) {
+    if (divisor == nullptr || !c_.model.TypeOf(division.id).IsFloating() ||
+        !IsConstantExpression(divisor, c_.model) || IsZeroLiteral(divisor) ||
+        c_.model.TypeOf(divisor->id).IsMatrix() || !InsideFunctionBody(c_, division)) {
+      return;  // a matrix divisor: `*` would be the matrix product
+    }
+    const auto whole = c_.edits.Span(division);
+    const auto span = c_.edits.Span(*divisor);
+    if (!whole || !span || op.file != span->file || op.begin < whole->begin ||
+        op.end > span->begin) {
+      ++c_.result.skipped;  // spelled in a macro body
+      return;
+    }
+    divisors_.push_back({op, *span});
+  }
+
+  SemanticsContext& c_;
+  const PreprocessResult& pp_;
+  std::map<std::pair<FileId, uint32_t>, SpelledName> names_;
+  std::vector<Division> divisors_;
+};
+
+}  // namespace
+
+void ComputeMathAsCpuBrowser(SemanticsContext& c, const PreprocessResult& preprocessed) {
+  if (c.model.version < kEssl300) return;  // the helpers need ES 3.00's bit operations
+  MathRewriter rewriter(c, preprocessed);
+  rewriter.Collect();
+  rewriter.Apply();
+}
+
+}  // namespace shaderport::glsl

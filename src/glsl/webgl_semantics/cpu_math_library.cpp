@@ -1,0 +1,290 @@
+// Each definition follows SwiftShader's code (src/Pipeline/ShaderCore.cpp and
+// SpirvShaderGLSLstd450.cpp) operation by operation; constants are the float values
+// of its literals. llvmpipe then computes the same bits as Chromium: measured on
+// 2,048 arguments per function (tools/browser/probes/math_bits.py), every helper
+// here matches Chromium 156 bit for bit, where llvmpipe's own built-ins differ in
+// the last bits (sin and cos by about 800 ulp).
+#include "glsl/webgl_semantics/cpu_math_library.h"
+
+#include <array>
+#include <cctype>
+#include <vector>
+
+namespace shaderport::glsl {
+namespace {
+
+// How the helper's float definition extends to vectors.
+enum class Shape : uint8_t {
+  kUnary,      // genType f(genType): componentwise
+  kBinary,     // genType f(genType, genType): componentwise
+  kMix,        // genType f(genType, genType, genType) and (genType, genType, float)
+  kReduction,  // float f(genType[, genType]): written for each size below
+  kGeometric,  // genType f(genType, ...): written for each size below
+  kInternal,   // float only, called by other helpers
+};
+
+struct Helper {
+  std::string_view builtin;  // GLSL name, or an internal name
+  Shape shape;
+  std::vector<std::string_view> calls;  // other helpers used
+  bool uses_zero = false;               // divides through the opaque zero
+  // float definition; for kReduction/kGeometric: `@` is the type, `#` the body part
+  // that repeats per component (see ForSize).
+  std::string_view text;
+  std::string_view float_text = {};  // kReduction: the float overload (no swizzles on floats)
+};
+
+// `S(name)` below is "shaderport_name", `Z` the opaque zero: subtracted from a
+// constant that the caller's constants must not be folded into (Mesa turns
+// `(x * 0.5) * 1.44` into `x * 0.72`; SwiftShader multiplies twice). One line each.
+const std::array<Helper, 27>& Helpers() {
+  static const std::array<Helper, 27> helpers = {{
+      // Sin5: A x^5 + B x^3 + C x on [-1/4, 1/4] (argument in turns).
+      {"sin5", Shape::kInternal, {}, false,
+       "float S(sin5)(float x) { float x2 = x * x; return ((74.43889 * x2 + -41.16937) * x2 + "
+       "6.2823086) * x; }"},
+      {"sin", Shape::kUnary, {"sin5"}, true,
+       "float S(sin)(float x) { float t = x * (-0.15915494 - Z) + 0.25; return S(sin5)(0.25 - "
+       "abs(t - roundEven(t))); }"},
+      {"cos", Shape::kUnary, {"sin5"}, true,
+       "float S(cos)(float x) { float t = x * (0.15915494 - Z); return S(sin5)(0.25 - abs(t - "
+       "roundEven(t))); }"},
+      {"tan", Shape::kUnary, {"sin", "cos"}, false,
+       "float S(tan)(float x) { return S(sin)(x) / S(cos)(x); }"},
+      // Chromium builds SwiftShader with its legacy exp2/log2 (SWIFTSHADER_LEGACY_PRECISION).
+      {"exp2", Shape::kUnary, {}, false,
+       "float S(exp2)(float x) { float x0 = max(min(x, 128.0), -126.99999); int i = "
+       "int(roundEven(x0 - 0.5)); float f = x0 - float(i); float p = intBitsToFloat(989206789); "
+       "p = p * f + intBitsToFloat(1007896582); p = p * f + intBitsToFloat(1030007331); p = p * f "
+       "+ intBitsToFloat(1047915220); p = p * f + intBitsToFloat(1060205179); p = p * f + 1.0; "
+       "return intBitsToFloat((i + 127) << 23) * p; }"},
+      {"log2", Shape::kUnary, {}, false,
+       "float S(log2)(float x) { int b = floatBitsToInt(x); float e = uintBitsToFloat(uint(b & "
+       "2139095040) >> 8u | 1065353216u); e = (e - 1.4960938) * 256.0; float m = "
+       "intBitsToFloat(b & 8388607 | 1065353216); float p = (0.095428176 * m + 0.47779095) * m + "
+       "0.19782813; float q = ((0.016618466 * m + 0.20350508) * m + 0.273829) * m + 0.04049669; "
+       "e += (m - 1.0) * (p / q); return b == 2139095040 ? x : e; }"},
+      {"exp", Shape::kUnary, {"exp2"}, true,
+       "float S(exp)(float x) { return S(exp2)((1.442695 - Z) * x); }"},
+      {"log", Shape::kUnary, {"log2"}, true,
+       "float S(log)(float x) { return (0.6931472 - Z) * S(log2)(x); }"},
+      {"pow", Shape::kBinary, {"exp2", "log2"}, false,
+       "float S(pow)(float x, float y) { return S(exp2)(S(log2)(x) * y); }"},
+      {"sinh", Shape::kUnary, {"exp"}, false,
+       "float S(sinh)(float x) { return (S(exp)(x) - S(exp)(-x)) * 0.5; }"},
+      {"cosh", Shape::kUnary, {"exp"}, false,
+       "float S(cosh)(float x) { return (S(exp)(x) + S(exp)(-x)) * 0.5; }"},
+      {"tanh", Shape::kUnary, {"exp"}, false,
+       "float S(tanh)(float x) { float a = S(exp)(x); float b = S(exp)(-x); return (a - b) / "
+       "(a + b); }"},
+      {"asinh", Shape::kUnary, {"log"}, false,
+       "float S(asinh)(float x) { return S(log)(x + sqrt(x * x + 1.0)); }"},
+      {"acosh", Shape::kUnary, {"log"}, false,
+       "float S(acosh)(float x) { return S(log)(x + sqrt(x + 1.0) * sqrt(x - 1.0)); }"},
+      {"atanh", Shape::kUnary, {"log"}, false,
+       "float S(atanh)(float x) { return S(log)((1.0 + x) / (1.0 - x)) * 0.5; }"},
+      // acos uses a 4-term polynomial even at highp; asin (libm's asinf) is left alone.
+      {"acos", Shape::kUnary, {}, false,
+       "float S(acos)(float x) { float a = abs(x); float r = 1.5707964 - sqrt(1.0 - a) * "
+       "(1.5707288 + a * (-0.2121144 + a * (0.074261 + a * -0.0187293))); return 1.5707964 - "
+       "intBitsToFloat(floatBitsToInt(r) ^ (floatBitsToInt(x) & int(0x80000000u))); }"},
+      {"atan01", Shape::kInternal, {}, false,
+       "float S(atan01)(float x) { float x2 = x * x; return x + x * (x2 * (-0.33333147 + x2 * "
+       "(0.19993551 + x2 * (-0.142089 + x2 * (0.10656264 + x2 * (-0.07528964 + x2 * "
+       "(0.042909615 + x2 * (-0.016165737 + x2 * 0.0028662258)))))))); }"},
+      // atan(y_over_x) and atan(y, x): the same name, told apart by arity.
+      {"atan", Shape::kUnary, {"atan01"}, false,
+       "float S(atan)(float x) { float a = abs(x); bool o = !(a < 1.0); float t = "
+       "S(atan01)(o ? 1.0 / a : a); float r = o ? 1.5707964 - t : t; return "
+       "intBitsToFloat(floatBitsToInt(r) ^ (floatBitsToInt(x) & int(0x80000000u))); }"
+       " float S(atan)(float y, float x) { bool s = y < 0.0; float theta = s ? -3.1415927 : "
+       "0.0; float x0 = intBitsToFloat((floatBitsToInt(y) & int(0x80000000u)) ^ "
+       "floatBitsToInt(x)); float y0 = abs(y); bool q = x0 < 0.0; theta += q ? 1.5707964 : 0.0; "
+       "float x1 = q ? y0 : x0; float y1 = q ? -x0 : y0; bool o = !(y1 < x1); float x2 = o ? y1 "
+       ": x1; float y2 = o ? x1 : y1; bool inf_y = isinf(y2); float t = S(atan01)(y2 / x2); "
+       "theta += (x2 != 0.0 && !inf_y) ? (o ? 1.5707964 - t : t) : (inf_y ? 0.7853982 : 0.0); "
+       "return (s && q && o && !inf_y) ? -t : theta; }"},
+      {"mix", Shape::kMix, {}, false,
+       "float S(mix)(float x, float y, float a) { return a * (y - x) + x; }"},
+      // dot: x0 * y0, then MulAdd(xi, yi, d) for each further component.
+      {"dot", Shape::kReduction, {}, false,
+       "float S(dot)(@ x, @ y) { float d = x.x * y.x;# d = x.# * y.# + d; return d; }",
+       "float S(dot)(float x, float y) { return x * y; }"},
+      {"length", Shape::kReduction, {"dot"}, false,
+       "float S(length)(@ x) { return sqrt(S(dot)(x, x)); }",
+       "float S(length)(float x) { return sqrt(x * x); }"},
+      {"distance", Shape::kReduction, {}, false,
+       "float S(distance)(@ p, @ q) { @ v = p - q; float d = v.x * v.x;# d += v.# * v.#; "
+       "return sqrt(d); }",
+       "float S(distance)(float p, float q) { float v = p - q; return sqrt(v * v); }"},
+      // 1 / sqrt(d), not inversesqrt(d): SwiftShader divides.
+      {"normalize", Shape::kGeometric, {"dot"}, true,
+       "@ S(normalize)(@ x) { float r = 1.0 / (sqrt(S(dot)(x, x)) - Z); return r * "
+       "x; }"},
+      {"reflect", Shape::kGeometric, {"dot"}, false,
+       "@ S(reflect)(@ i, @ n) { float d = S(dot)(i, n); return i - 2.0 * d * n; }"},
+      {"refract", Shape::kGeometric, {"dot"}, false,
+       "@ S(refract)(@ i, @ n, float eta) { float d = S(dot)(i, n); float k = 1.0 - eta * eta * "
+       "(1.0 - d * d); float t = eta * d + sqrt(k); return k < 0.0 ? @(0.0) : eta * i - t * n; "
+       "}"},
+      {"faceforward", Shape::kGeometric, {"dot"}, false,
+       "@ S(faceforward)(@ n, @ i, @ r) { return S(dot)(i, r) < 0.0 ? n : -n; }"},
+      {"cross", Shape::kInternal, {}, false,
+       "vec3 S(cross)(vec3 a, vec3 b) { return vec3(a.y * b.z - b.y * a.z, a.z * b.x - b.z * "
+       "a.x, a.x * b.y - b.x * a.y); }"},
+  }};
+  return helpers;
+}
+
+const Helper* Find(std::string_view name) {
+  for (const Helper& helper : Helpers()) {
+    if (helper.builtin == name) return &helper;
+  }
+  return nullptr;
+}
+
+// `S(name)` -> `shaderport_name`, `Z` -> the opaque zero.
+std::string Spell(std::string_view text) {
+  std::string out;
+  for (size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == 'Z' && (i + 1 == text.size() || text[i + 1] == ')' || text[i + 1] == ' ')) {
+      out.append(kOpaqueZeroUniform);
+      continue;
+    }
+    if (text.compare(i, 2, "S(") == 0 && (i == 0 || (!std::isalnum(static_cast<unsigned char>(
+                                                         text[i - 1])) &&
+                                                     text[i - 1] != '_'))) {
+      const size_t close = text.find(')', i);
+      out += "shaderport_";
+      out.append(text.substr(i + 2, close - i - 2));
+      i = close;
+      continue;
+    }
+    out.push_back(text[i]);
+  }
+  return out;
+}
+
+constexpr std::array<std::string_view, 3> kVectors = {"vec2", "vec3", "vec4"};
+constexpr std::array<char, 4> kComponents = {'x', 'y', 'z', 'w'};
+
+// kReduction/kGeometric: `@` is the type; the part between the two `#`-free ends
+// repeats: "head# body with # ...; tail" -> the body once per component after the
+// first, `#` replaced by the component.
+std::string ForSize(std::string_view text, std::string_view type, int size) {
+  std::string typed;
+  for (const char c : text) {
+    if (c == '@') {
+      typed.append(type);
+    } else {
+      typed.push_back(c);
+    }
+  }
+  const size_t first = typed.find('#');
+  if (first == std::string::npos) return typed;
+  const size_t end = typed.find(';', typed.rfind('#'));
+  const std::string head = typed.substr(0, first);
+  const std::string body = typed.substr(first + 1, end + 1 - first - 1);
+  std::string out = head;
+  for (int i = 1; i < size; ++i) {
+    for (const char c : body) {
+      if (c == '#') {
+        out.push_back(kComponents[static_cast<size_t>(i)]);
+      } else {
+        out.push_back(c);
+      }
+    }
+  }
+  out += typed.substr(end + 1);
+  return out;
+}
+
+// Componentwise vector overloads of a float helper with `arity` float parameters.
+std::string Componentwise(std::string_view name, int arity, bool scalar_last) {
+  std::string out;
+  const std::string helper = "shaderport_" + std::string(name);
+  for (size_t v = 0; v < kVectors.size(); ++v) {
+    const std::string_view type = kVectors[v];
+    const int size = static_cast<int>(v) + 2;
+    for (int variant = 0; variant < (scalar_last ? 2 : 1); ++variant) {
+      const bool last_is_float = variant == 1;
+      out += " " + std::string(type) + " " + helper + "(";
+      for (int p = 0; p < arity; ++p) {
+        const bool is_float = last_is_float && p == arity - 1;
+        out += (p > 0 ? ", " : "") + std::string(is_float ? "float" : type) + " a" +
+               std::to_string(p);
+      }
+      out += ") { return " + std::string(type) + "(";
+      for (int c = 0; c < size; ++c) {
+        out += (c > 0 ? ", " : "") + helper + "(";
+        for (int p = 0; p < arity; ++p) {
+          const bool is_float = last_is_float && p == arity - 1;
+          out += (p > 0 ? ", " : "") + ("a" + std::to_string(p)) +
+                 (is_float ? "" : std::string(".") + kComponents[static_cast<size_t>(c)]);
+        }
+        out += ")";
+      }
+      out += "); }";
+    }
+  }
+  return out;
+}
+
+std::string Definition(const Helper& helper) {
+  switch (helper.shape) {
+    case Shape::kInternal:
+      return Spell(helper.text);
+    case Shape::kUnary: {
+      std::string out = Spell(helper.text) + Componentwise(helper.builtin, 1, false);
+      if (helper.builtin == "atan") out += Componentwise(helper.builtin, 2, false);
+      return out;
+    }
+    case Shape::kBinary:
+      return Spell(helper.text) + Componentwise(helper.builtin, 2, false);
+    case Shape::kMix:
+      return Spell(helper.text) + Componentwise(helper.builtin, 3, true);
+    case Shape::kReduction:
+    case Shape::kGeometric: {
+      std::string out =
+          Spell(helper.float_text.empty() ? ForSize(helper.text, "float", 1) : helper.float_text);
+      for (size_t v = 0; v < kVectors.size(); ++v) {
+        out += " " + Spell(ForSize(helper.text, kVectors[v], static_cast<int>(v) + 2));
+      }
+      return out;
+    }
+  }
+  return {};
+}
+
+void AddWithCalls(std::string_view name, std::vector<const Helper*>& ordered,
+                  std::set<std::string_view>& seen) {
+  const Helper* helper = Find(name);
+  if (helper == nullptr || !seen.insert(helper->builtin).second) return;
+  for (const std::string_view call : helper->calls) AddWithCalls(call, ordered, seen);
+  ordered.push_back(helper);  // after what it calls
+}
+
+}  // namespace
+
+bool HasCpuMathDefinition(std::string_view builtin) {
+  const Helper* helper = Find(builtin);
+  return helper != nullptr && (helper->shape != Shape::kInternal || builtin == "cross");
+}
+
+std::string CpuMathHelperName(std::string_view builtin) {
+  return "shaderport_" + std::string(builtin);
+}
+
+std::string CpuMathDefinitions(const std::set<std::string>& builtins, bool declare_zero) {
+  std::vector<const Helper*> ordered;
+  std::set<std::string_view> seen;
+  for (const std::string& name : builtins) AddWithCalls(name, ordered, seen);
+  bool zero = declare_zero;
+  for (const Helper* helper : ordered) zero = zero || helper->uses_zero;
+  std::string text;
+  if (zero) text = "uniform highp float " + std::string(kOpaqueZeroUniform) + "; ";
+  for (const Helper* helper : ordered) text += Definition(*helper) + " ";
+  return text;
+}
+
+}  // namespace shaderport::glsl
