@@ -67,6 +67,7 @@ class MathRewriter {
   }
 
   void Apply() {
+    AddDivisions();
     const Node* first_function = FirstFunctionDefinition(c_.tree);
     const auto declare_at = first_function ? c_.edits.Span(*first_function) : std::nullopt;
     std::set<std::string> used;
@@ -79,13 +80,13 @@ class MathRewriter {
       c_.edits.Replace(name.range, CpuMathHelperName(name.builtin));
       ++c_.result.math_calls;
     }
-    if (!declare_at) {
-      c_.result.skipped += static_cast<uint32_t>(divisors_.size());
-      return;
+    if (!used.empty()) {
+      c_.edits.Insert(declare_at->file, declare_at->begin, CpuMathDefinitions(used, false));
     }
-    if (used.empty() && divisors_.empty()) return;
-    // The uniform is declared even without divisions: the smoothstep helper uses it.
-    c_.edits.Insert(declare_at->file, declare_at->begin, CpuMathDefinitions(used, true));
+  }
+
+ private:
+  void AddDivisions() {
     for (const Division& division : divisors_) {
       const bool compound = division.op.Size() == 2;  // `/=`
       c_.edits.Replace(division.op, compound ? "*=" : "*");
@@ -95,7 +96,6 @@ class MathRewriter {
     }
   }
 
- private:
   void CollectCall(const CallExpr& call) {
     if (call.call_kind != CallKind::kFunction || !c_.model.builtin_calls.contains(call.id) ||
         !HasCpuMathDefinition(call.callee.text) || IsBoolSelect(c_.model, call) ||

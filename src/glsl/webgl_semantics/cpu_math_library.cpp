@@ -275,6 +275,54 @@ std::string CpuMathHelperName(std::string_view builtin) {
   return "shaderport_" + std::string(builtin);
 }
 
+std::string MacroProofHelperText(std::string_view text) {
+  static const std::set<std::string_view> kKept = {
+      "float", "vec2",  "vec3",  "vec4",           "int",            "uint",
+      "bool",  "bvec2", "bvec3", "bvec4",          "return",         "if",
+      "uniform", "highp", "true", "false",         "abs",            "roundEven",
+      "floor", "sqrt",  "min",   "max",            "clamp",          "mix",
+      "equal", "greaterThan", "intBitsToFloat",    "floatBitsToInt", "uintBitsToFloat",
+      "isinf"};
+  constexpr std::string_view kPrefix = "shaderport_";
+  std::string out;
+  for (size_t i = 0; i < text.size();) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (std::isdigit(c)) {  // a number with its suffix and exponent
+      while (i < text.size() && (std::isalnum(static_cast<unsigned char>(text[i])) ||
+                                 text[i] == '.' ||
+                                 ((text[i] == '-' || text[i] == '+') &&
+                                  (text[i - 1] == 'e' || text[i - 1] == 'E')))) {
+        out.push_back(text[i++]);
+      }
+      continue;
+    }
+    if (!std::isalpha(c) && c != '_') {
+      out.push_back(text[i++]);
+      continue;
+    }
+    size_t end = i;
+    while (end < text.size() &&
+           (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '_')) {
+      ++end;
+    }
+    const std::string_view word = text.substr(i, end - i);
+    const size_t component = std::string_view("xyzw").find(word.front());
+    if (!out.empty() && out.back() == '.' && word.size() == 1 &&
+        component != std::string_view::npos) {
+      // A swizzle: `.z` would meet a user's `#define z ...`.
+      out.back() = '[';
+      out.push_back(static_cast<char>('0' + component));
+      out.push_back(']');
+    } else if (word.starts_with(kPrefix) || kKept.contains(word)) {
+      out.append(word);
+    } else {
+      out.append(kPrefix).append(word);
+    }
+    i = end;
+  }
+  return out;
+}
+
 std::string CpuMathDefinitions(const std::set<std::string>& builtins, bool declare_zero) {
   std::vector<const Helper*> ordered;
   std::set<std::string_view> seen;
@@ -284,7 +332,7 @@ std::string CpuMathDefinitions(const std::set<std::string>& builtins, bool decla
   std::string text;
   if (zero) text = "uniform highp float " + std::string(kOpaqueZeroUniform) + "; ";
   for (const Helper* helper : ordered) text += Definition(*helper) + " ";
-  return text;
+  return MacroProofHelperText(text);
 }
 
 }  // namespace shaderport::glsl

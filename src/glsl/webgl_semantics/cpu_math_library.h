@@ -21,6 +21,11 @@ bool HasCpuMathDefinition(std::string_view builtin);
 // The helper for built-in `builtin`: "shaderport_" + name.
 std::string CpuMathHelperName(std::string_view builtin);
 
+// `text` (GLSL inserted among the user's code, which may `#define x ...`) with every
+// identifier other than GLSL keywords and the built-ins helpers use prefixed with
+// "shaderport_", and swizzles `.x` .. `.w` written as `[0]` .. `[3]`.
+std::string MacroProofHelperText(std::string_view text);
+
 // Definitions (one line, no newline) of the helpers for `builtins` and of every
 // helper they call, each for float and vec2..vec4 where GLSL has such overloads,
 // preceded by the opaque-zero uniform when `declare_zero` is set.

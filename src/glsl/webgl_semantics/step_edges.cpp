@@ -6,7 +6,7 @@
 // The name is also renamed inside macro bodies (`#define S(x, w) smoothstep(-w, w, x)`):
 // there it can only mean the built-in. Nothing is renamed when a call is outside a
 // function body (a constant initializer may call the built-in, not a function).
-#include <set>
+#include <map>
 #include <utility>
 
 #include "glsl/sema/language.h"
@@ -18,44 +18,53 @@ namespace shaderport::glsl {
 namespace {
 
 constexpr std::string_view kName = "shaderport_smoothstep";
+// With constant edges when math follows Chromium (cpu_browser_math.cpp): there the
+// division by the constant b - a is a multiplication by its reciprocal.
+constexpr std::string_view kConstantEdgesName = "shaderport_smoothstep_k";
 
-// `@` stands for the vector type of each overload, `~` for what keeps the division
-// a division (see cpu_browser_math.cpp) when that transform runs.
+// `@` stands for the type of each overload, `$` for the helper's name and `/~` for
+// the division by b - a.
 constexpr std::string_view kScalarHelper =
-    "float shaderport_smoothstep(float a, float b, float x) { if (a == b) return x > a ? 1.0 : "
-    "0.0; float t = clamp((x - a) / ((b - a)~), 0.0, 1.0); return t * t * (3.0 - 2.0 * t); } ";
+    "float $(float a, float b, float x) { if (a == b) return x > a ? 1.0 : 0.0; float t = "
+    "clamp((x - a) /~, 0.0, 1.0); return t * t * (3.0 - 2.0 * t); } ";
 constexpr std::string_view kVectorHelpers =
-    "@ shaderport_smoothstep(@ a, @ b, @ x) { @ t = clamp((x - a) / ((b - a)~), 0.0, 1.0); t = t * "
-    "t * (3.0 - 2.0 * t); return mix(t, @(greaterThan(x, a)), equal(a, b)); } "
-    "@ shaderport_smoothstep(float a, float b, @ x) { return shaderport_smoothstep(@(a), @(b), "
-    "x); } ";
+    "@ $(@ a, @ b, @ x) { @ t = clamp((x - a) /~, 0.0, 1.0); t = t * t * (3.0 - 2.0 * t); "
+    "return mix(t, @(greaterThan(x, a)), equal(a, b)); } "
+    "@ $(float a, float b, @ x) { return $(@(a), @(b), x); } ";
 
-std::string Helpers(bool opaque_divisor) {
-  const std::string divisor_tail =
-      opaque_divisor ? " - " + std::string(kOpaqueZeroUniform) : std::string();
+std::string Helpers(std::string_view name, std::string_view divide) {
   std::string text;
-  auto append = [&](std::string_view helper, std::string_view vector) {
-    for (const char c : helper) {
-      if (c == '@') {
-        text.append(vector);
-      } else if (c == '~') {
-        text.append(divisor_tail);
+  auto append = [&](std::string_view helper, std::string_view type) {
+    for (size_t i = 0; i < helper.size(); ++i) {
+      if (helper[i] == '@') {
+        text.append(type);
+      } else if (helper[i] == '$') {
+        text.append(name);
+      } else if (helper.compare(i, 2, "/~") == 0) {
+        text.append(divide);
+        ++i;
       } else {
-        text.push_back(c);
+        text.push_back(helper[i]);
       }
     }
   };
   append(kScalarHelper, "float");
   for (const std::string_view vector : {"vec2", "vec3", "vec4"}) append(kVectorHelpers, vector);
-  return text;
+  return MacroProofHelperText(text);
+}
+
+bool ConstantEdges(const SemanticsContext& c, const CallExpr& call) {
+  return call.arguments.size() == 3 && IsConstantExpression(call.arguments[0], c.model) &&
+         IsConstantExpression(call.arguments[1], c.model);
 }
 
 }  // namespace
 
 void RewriteSmoothstepEdges(SemanticsContext& c, const PreprocessResult& preprocessed) {
   if (c.model.version < kEssl300) return;
-  std::set<std::pair<FileId, uint32_t>> renamed;  // a macro body's token, once
-  std::vector<SourceRange> names;
+  // By spelled token (a macro body's token once): where, and whether every call
+  // through it has constant edges.
+  std::map<std::pair<FileId, uint32_t>, std::pair<SourceRange, bool>> names;
   bool safe = true;
   VisitPreorder(c.tree, [&](const Node& node, uint32_t) {
     const auto* call = node.As<CallExpr>();
@@ -72,9 +81,9 @@ void RewriteSmoothstepEdges(SemanticsContext& c, const PreprocessResult& preproc
       safe = false;  // pasted with ## or otherwise not spelled as one token
       return true;
     }
-    if (renamed.insert({token.spelling.file, token.spelling.begin}).second) {
-      names.push_back(token.spelling);
-    }
+    auto [entry, added] = names.try_emplace({token.spelling.file, token.spelling.begin},
+                                            token.spelling, true);
+    entry->second.second = entry->second.second && ConstantEdges(c, *call);
     return true;
   });
   if (!safe) {
@@ -88,9 +97,15 @@ void RewriteSmoothstepEdges(SemanticsContext& c, const PreprocessResult& preproc
     c.result.skipped += static_cast<uint32_t>(names.size());
     return;
   }
-  const bool opaque_divisor = c.options.cpu_browser_math && c.result.math_calls + c.result.divisions > 0;
-  c.edits.Insert(declare_at->file, declare_at->begin, Helpers(opaque_divisor));
-  for (const SourceRange& name : names) c.edits.Replace(name, std::string(kName));
+  bool any_constant = false;
+  for (const auto& [at, name] : names) {
+    const bool constant = c.options.cpu_browser_math && name.second;
+    any_constant = any_constant || constant;
+    c.edits.Replace(name.first, std::string(constant ? kConstantEdgesName : kName));
+  }
+  std::string helpers = Helpers(kName, "/ (b - a)");
+  if (any_constant) helpers += Helpers(kConstantEdgesName, "* (1.0 / (b - a))");
+  c.edits.Insert(declare_at->file, declare_at->begin, helpers);
   c.result.smoothsteps = static_cast<uint32_t>(names.size());
 }
 

@@ -4,33 +4,14 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
-
-#include "sema/glslang_oracle.h"
 #include "source/source_manager.h"
+#include "webgl_semantics/apply_semantics.h"
 
 namespace shaderport::glsl {
 namespace {
 
-constexpr std::string_view kHead = "#version 300 es\nprecision highp float;\nout vec4 o;\n";
-
-BrowserSemanticsResult Apply(std::string_view body, BrowserSemanticsOptions options = {}) {
-  SourceManager sources;
-  const SourceFile& file = sources.Add("t.frag", std::string(kHead) + std::string(body));
-  const SourceFile* parts[] = {&file};
-  BrowserSemanticsResult result = ApplyBrowserSemantics(parts, options);
-  const std::string& text = result.texts.front();
-  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'),
-            std::count(file.Text().begin(), file.Text().end(), '\n'));
-  const auto compiled = testing::CompileWithGlslang(
-      text, options.vertex_stage ? ShaderStage::kVertex : ShaderStage::kFragment);
-  EXPECT_TRUE(compiled.ok) << text << "\n" << compiled.log;
-  return result;
-}
-
-std::string Body(const BrowserSemanticsResult& result) {
-  return result.texts.front().substr(kHead.size());
-}
+using testing_support::Apply;
+using testing_support::Body;
 
 TEST(BrowserSemantics, ZeroInitializesLocalsOfEveryType) {
   const auto result = Apply(
@@ -193,7 +174,8 @@ TEST(BrowserSemantics, SmoothstepIsRenamedInCallsAndMacroBodies) {
   EXPECT_NE(text.find("float v = shaderport_smoothstep(0.1, 0.1, gl_FragCoord.x)"),
             std::string::npos);
   EXPECT_NE(text.find("o = vec4(shaderport_smoothstep(vec3(0.2)"), std::string::npos);
-  EXPECT_NE(text.find("float shaderport_smoothstep(float a, float b, float x) { if (a == b)"),
+  EXPECT_NE(text.find("float shaderport_smoothstep(float shaderport_a, float shaderport_b, float "
+                      "shaderport_x) { if (shaderport_a == shaderport_b)"),
             std::string::npos);
 }
 

@@ -22,6 +22,7 @@ TEST(BrowserSemanticsSweep, CorpusStillCompilesAfterTheTransforms) {
   BrowserSemanticsOptions options;
   options.zero_out_parameters = true;
   options.add_render_probe = true;
+  options.cpu_browser_math = true;
   std::string line;
   while (std::getline(in, line)) {
     const auto record = nlohmann::json::parse(line);

@@ -1,0 +1,160 @@
+// Math as Chromium computes it without a GPU: which calls and divisions are
+// rewritten, which are left to the browser's constant folding, and that every
+// output compiles with its helpers (the bits themselves are checked against
+// Chromium by tools/browser/probes/math_bits.py).
+#include <gtest/gtest.h>
+
+#include "glsl/webgl_semantics/cpu_math_library.h"
+#include "webgl_semantics/apply_semantics.h"
+
+namespace shaderport::glsl {
+namespace {
+
+using testing_support::Apply;
+using testing_support::Body;
+
+BrowserSemanticsOptions MathOnly() {
+  BrowserSemanticsOptions options;
+  options.zero_initialize = false;
+  options.clamp_indices = false;
+  options.gpu_smoothstep_edges = false;
+  options.promote_precision = false;
+  options.cpu_browser_math = true;
+  return options;
+}
+
+bool Contains(const std::string& text, std::string_view part) {
+  return text.find(part) != std::string::npos;
+}
+
+TEST(CpuBrowserMath, BuiltinCallsBecomeHelpersOfEveryOverload) {
+  const auto result = Apply(
+      "void main() { vec3 p = gl_FragCoord.xyz; float a = sin(p.x) + pow(p.y, 2.2) + "
+      "atan(p.y, p.x) + atan(p.z) + dot(p, p) + length(p.xy);\n"
+      "o = vec4(mix(p, cos(p), 0.5), exp(a) + log2(a)); }\n",
+      MathOnly());
+  EXPECT_EQ(result.math_calls, 10U);
+  const std::string body = Body(result);
+  EXPECT_TRUE(Contains(body, "float a = shaderport_sin(p.x) + shaderport_pow(p.y, 2.2) + "
+                             "shaderport_atan(p.y, p.x) + shaderport_atan(p.z) + "
+                             "shaderport_dot(p, p) + shaderport_length(p.xy);\n"))
+      << body;
+  EXPECT_TRUE(Contains(body, "o = vec4(shaderport_mix(p, shaderport_cos(p), 0.5), "
+                             "shaderport_exp(a) + shaderport_log2(a)); }"));
+  EXPECT_TRUE(Contains(body, "uniform highp float shaderport_zero;"));
+  EXPECT_TRUE(Contains(body, "vec3 shaderport_mix(vec3 shaderport_a0, vec3 shaderport_a1, "
+                             "float shaderport_a2)"));
+  EXPECT_TRUE(Contains(body, "float shaderport_dot(vec3 shaderport_x, vec3 shaderport_y) { float "
+                             "shaderport_d = shaderport_x[0] * shaderport_y[0]; shaderport_d = "
+                             "shaderport_x[1] * shaderport_y[1] + shaderport_d; shaderport_d = "
+                             "shaderport_x[2] * shaderport_y[2] + shaderport_d; return "
+                             "shaderport_d; }"))
+      << body;
+}
+
+TEST(CpuBrowserMath, ConstantCallsAndGlobalInitializersKeepTheBuiltIn) {
+  const auto result = Apply(
+      "const float k = sin(0.5);\n"
+      "void main() { const float c = cos(k); float v = sin(1.0) + c; o = vec4(v); }\n",
+      MathOnly());
+  EXPECT_EQ(result.math_calls, 0U);
+  EXPECT_FALSE(Contains(result.texts.front(), "shaderport_"));
+}
+
+TEST(CpuBrowserMath, BooleanMixIsASelectionAndStays) {
+  const auto result = Apply(
+      "void main() { vec2 p = gl_FragCoord.xy; o = vec4(mix(p, -p, lessThan(p, vec2(3.0))), "
+      "mix(p.x, p.y, 0.25), 1.0); }\n",
+      MathOnly());
+  EXPECT_EQ(result.math_calls, 1U);
+  EXPECT_TRUE(Contains(Body(result), "vec4(mix(p, -p, lessThan(p, vec2(3.0))), "
+                                     "shaderport_mix(p.x, p.y, 0.25), 1.0)"));
+}
+
+TEST(CpuBrowserMath, DivisionByAConstantMultipliesByItsReciprocal) {
+  const auto result = Apply(
+      "const float K = 3.3;\n"
+      "void main() { vec2 p = gl_FragCoord.xy / 3.3; p /= K; float q = p.x / p.y;\n"
+      "mat2 m = mat2(p, p) / mat2(1.5); o = vec4(p / vec2(1.7, K), q / 0.0, m[0].x); }\n",
+      MathOnly());
+  EXPECT_EQ(result.divisions, 3U);
+  EXPECT_EQ(Body(result),
+            "const float K = 3.3;\n"
+            "void main() { vec2 p = gl_FragCoord.xy * (1.0 / (3.3)); p *= (1.0 / (K)); float q = "
+            "p.x / p.y;\n"
+            "mat2 m = mat2(p, p) / mat2(1.5); o = vec4(p * (1.0 / (vec2(1.7, K))), q / 0.0, "
+            "m[0].x); }\n");
+}
+
+TEST(CpuBrowserMath, MacroBodiesAreRenamedOnlyWhenEveryUseMayBe) {
+  const auto result = Apply(
+      "#define R(a) mat2(cos(a), sin(a), -sin(a), cos(a))\n"
+      "#define H(x) fract(sin(x) * 43758.5)\n"
+      "void main() { vec2 p = R(gl_FragCoord.x) * gl_FragCoord.xy; float h = H(p.x) + H(1.0);\n"
+      "o = vec4(p, h, 1.0); }\n",
+      MathOnly());
+  const std::string& text = result.texts.front();
+  EXPECT_TRUE(Contains(text, "#define R(a) mat2(shaderport_cos(a), shaderport_sin(a), "
+                             "-shaderport_sin(a), shaderport_cos(a))\n"));
+  EXPECT_TRUE(Contains(text, "#define H(x) fract(sin(x) * 43758.5)\n"));  // H(1.0) folds
+  EXPECT_EQ(result.math_calls, 4U);
+}
+
+TEST(CpuBrowserMath, HelpersAreImmuneToTheUsersMacros) {
+  // Helpers are inserted after these definitions: a parameter `a` or a swizzle `.z`
+  // in them would be replaced.
+  BrowserSemanticsOptions options = MathOnly();
+  options.gpu_smoothstep_edges = true;
+  const auto result = Apply(
+      "#define a 1.0\n#define z w\n#define t +\n#define d (\n#define e )\n"
+      "void main() { vec3 p = gl_FragCoord.xyz; o = vec4(normalize(p) * length(p) + "
+      "smoothstep(0.0, p.y, p.x) + atan(p.x, p.y), 1.0); }\n",
+      options);
+  EXPECT_EQ(result.math_calls, 3U);
+  EXPECT_EQ(result.smoothsteps, 1U);
+}
+
+TEST(CpuBrowserMath, SmoothstepWithConstantEdgesMultipliesByTheReciprocal) {
+  BrowserSemanticsOptions options = MathOnly();
+  options.gpu_smoothstep_edges = true;
+  const auto result = Apply(
+      "void main() { float v = gl_FragCoord.x; o = vec4(smoothstep(0.1, 0.7, v), "
+      "smoothstep(0.0, v, 0.5), 0.0, 1.0); }\n",
+      options);
+  const std::string body = Body(result);
+  EXPECT_TRUE(Contains(body, "o = vec4(shaderport_smoothstep_k(0.1, 0.7, v), "
+                             "shaderport_smoothstep(0.0, v, 0.5)"))
+      << body;
+  EXPECT_TRUE(Contains(body, "* (1.0 / (shaderport_b - shaderport_a))"));
+}
+
+TEST(CpuBrowserMath, OffByDefaultAndForGlslEs100) {
+  BrowserSemanticsOptions options = MathOnly();
+  options.cpu_browser_math = false;
+  const auto off = Apply("void main() { o = vec4(sin(gl_FragCoord.x) / 3.0); }\n", options);
+  EXPECT_FALSE(Contains(off.texts.front(), "shaderport_"));
+
+  SourceManager sources;
+  const SourceFile& file = sources.Add(
+      "t.frag",
+      "precision highp float;\nvoid main() { gl_FragColor = vec4(sin(gl_FragCoord.x)); }\n");
+  const SourceFile* parts[] = {&file};
+  const auto es100 = ApplyBrowserSemantics(parts, MathOnly());
+  EXPECT_EQ(es100.texts.front(), file.Text());
+}
+
+TEST(CpuBrowserMath, LibraryDefinesWhatItsHelpersCall) {
+  const std::string text = CpuMathDefinitions({"tan", "pow", "normalize"}, false);
+  for (const std::string_view helper :
+       {"shaderport_sin5(", "shaderport_sin(", "shaderport_cos(", "shaderport_exp2(",
+        "shaderport_log2(", "shaderport_dot(", "uniform highp float shaderport_zero;"}) {
+    EXPECT_TRUE(Contains(text, helper)) << helper;
+  }
+  // Each helper is defined after the ones it calls.
+  EXPECT_LT(text.find("float shaderport_sin5("), text.find("float shaderport_sin("));
+  EXPECT_LT(text.find("float shaderport_exp2("), text.find("float shaderport_pow("));
+  EXPECT_EQ(text.find('\n'), std::string::npos);
+}
+
+}  // namespace
+}  // namespace shaderport::glsl
