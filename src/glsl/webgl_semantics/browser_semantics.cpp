@@ -1,5 +1,7 @@
 #include "glsl/webgl_semantics/browser_semantics.h"
 
+#include <optional>
+
 #include "glsl/syntax/parser.h"
 #include "glsl/syntax/visit.h"
 #include "glsl/webgl_semantics/semantics_context.h"
@@ -87,8 +89,13 @@ BrowserSemanticsResult ApplyBrowserSemantics(std::span<const SourceFile* const> 
 
   EditCollector edits(preprocessed);
   SemanticsContext context{parsed.tree, model, options, ParentsOf(parsed.tree), edits, result};
+  std::optional<DriverFolding> folding;
+  if (options.cpu_browser_math) {
+    folding.emplace(parsed.tree, model, context.parent);
+    context.folding = &*folding;
+  }
   MainPrologue prologue;
-  // First: its helpers and uniform must precede the smoothstep helper at the same place.
+  // First, so that its helpers precede the smoothstep helper at the same place.
   if (options.cpu_browser_math) ComputeMathAsCpuBrowser(context, preprocessed);
   if (options.zero_initialize) ZeroInitializeVariables(context, prologue);
   if (options.clamp_indices) ClampIndirectIndices(context);

@@ -7,8 +7,9 @@
 // multiplication by its reciprocal, as Chromium computes it (measured: `x / 3.3`
 // gives x * float(1 / 3.3) there, even when 3.3 reaches the division through a
 // variable or a parameter); Mesa divides.
-// Left alone, as the browser's compiler folds them with exact math: calls and
-// divisions whose operands are all constant, and anything outside a function body.
+// Left alone, as the browser folds them with exact math: calls and divisions whose
+// operands reach the driver as constants (driver_folding.h), and anything outside
+// a function body.
 // A name spelled in a macro body is renamed only when every use of it may be.
 #include <map>
 #include <set>
@@ -53,7 +54,7 @@ class MathRewriter {
     VisitPreorder(c_.tree, [&](const Node& node, uint32_t) {
       if (const auto* call = node.As<CallExpr>()) CollectCall(*call);
       if (const auto* binary = node.As<BinaryExpr>()) {
-        if (binary->op == BinaryOp::kDiv && !IsConstantExpression(binary, c_.model)) {
+        if (binary->op == BinaryOp::kDiv && !c_.folding->IsFolded(binary)) {
           CollectDivision(*binary, binary->op_range, binary->rhs);
         }
       }
@@ -112,14 +113,14 @@ class MathRewriter {
     if (added) entry->second = {token.spelling, std::string(call.callee.text), true};
     // A folded constant stays exact in the browser; a global initializer must stay
     // a constant expression.
-    if (IsConstantExpression(&call, c_.model) || !InsideFunctionBody(c_, call)) {
+    if (c_.folding->IsFolded(&call) || !InsideFunctionBody(c_, call)) {
       entry->second.renamable = false;
     }
   }
 
   void CollectDivision(const Expr& division, const SourceRange& op, const Expr* divisor) {
     if (divisor == nullptr || !c_.model.TypeOf(division.id).IsFloating() ||
-        !IsConstantExpression(divisor, c_.model) || IsZeroLiteral(divisor) ||
+        !c_.folding->IsFolded(divisor) || IsZeroLiteral(divisor) ||
         c_.model.TypeOf(divisor->id).IsMatrix() || !InsideFunctionBody(c_, division)) {
       return;  // a matrix divisor: `*` would be the matrix product
     }

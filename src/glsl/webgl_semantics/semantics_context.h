@@ -12,6 +12,7 @@
 #include "glsl/sema/semantic_model.h"
 #include "glsl/syntax/ast.h"
 #include "glsl/webgl_semantics/browser_semantics.h"
+#include "glsl/webgl_semantics/driver_folding.h"
 #include "source/edit.h"
 
 namespace shaderport::glsl {
@@ -49,6 +50,7 @@ struct SemanticsContext {
   std::vector<uint32_t> parent;  // by node id; kNoNode for the root
   EditCollector& edits;
   BrowserSemanticsResult& result;
+  const DriverFolding* folding = nullptr;  // set when math follows Chromium
 
   const Node* Parent(const Node& node) const {
     const uint32_t p = parent[node.id];

@@ -54,8 +54,8 @@ std::string Helpers(std::string_view name, std::string_view divide) {
 }
 
 bool ConstantEdges(const SemanticsContext& c, const CallExpr& call) {
-  return call.arguments.size() == 3 && IsConstantExpression(call.arguments[0], c.model) &&
-         IsConstantExpression(call.arguments[1], c.model);
+  return c.folding != nullptr && call.arguments.size() == 3 &&
+         c.folding->IsFolded(call.arguments[0]) && c.folding->IsFolded(call.arguments[1]);
 }
 
 }  // namespace

@@ -61,6 +61,23 @@ TEST(CpuBrowserMath, ConstantCallsAndGlobalInitializersKeepTheBuiltIn) {
   EXPECT_FALSE(Contains(result.texts.front(), "shaderport_"));
 }
 
+TEST(CpuBrowserMath, ValuesTheDriverPropagatesAsConstantsKeepTheBuiltIn) {
+  // a and k reach the driver as constants (never written; every call passes one);
+  // b is written, and r gets a varying argument.
+  const auto result = Apply(
+      "float h(float k) { return sin(k); }\n"
+      "float r(float k) { return cos(k); }\n"
+      "void main() { float a = 0.3; float b = 0.5; b += gl_FragCoord.x;\n"
+      "o = vec4(sin(a), sin(b), h(2.0) + h(a), r(gl_FragCoord.y) + r(1.0) + gl_FragCoord.x / a); "
+      "}\n",
+      MathOnly());
+  const std::string body = Body(result);
+  EXPECT_TRUE(Contains(body, "float h(float k) { return sin(k); }\n")) << body;
+  EXPECT_TRUE(Contains(body, "float r(float k) { return shaderport_cos(k); }\n")) << body;
+  EXPECT_TRUE(Contains(body, "o = vec4(sin(a), shaderport_sin(b), h(2.0) + h(a), "
+                             "r(gl_FragCoord.y) + r(1.0) + gl_FragCoord.x * (1.0 / (a))); }\n"));
+}
+
 TEST(CpuBrowserMath, BooleanMixIsASelectionAndStays) {
   const auto result = Apply(
       "void main() { vec2 p = gl_FragCoord.xy; o = vec4(mix(p, -p, lessThan(p, vec2(3.0))), "
