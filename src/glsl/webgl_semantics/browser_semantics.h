@@ -61,7 +61,8 @@ struct BrowserSemanticsResult {
   uint32_t smoothsteps = 0;           // smoothstep names renamed to the GPU-faithful helper
   uint32_t promoted = 0;              // mediump / lowp keywords made highp
   uint32_t math_calls = 0;            // built-in calls renamed to the CPU-browser helpers
-  uint32_t divisions = 0;             // float divisions kept as divisions
+  uint32_t divisions = 0;             // divisions by constants made multiplications
+  uint32_t conversions = 0;           // uint to float conversions done in two roundings
   uint32_t counted_loops = 0;         // loops instrumented
   uint32_t skipped = 0;               // places inside macros that could not be edited safely
 };

@@ -52,7 +52,10 @@ class MathRewriter {
 
   void Collect() {
     VisitPreorder(c_.tree, [&](const Node& node, uint32_t) {
-      if (const auto* call = node.As<CallExpr>()) CollectCall(*call);
+      if (const auto* call = node.As<CallExpr>()) {
+        CollectCall(*call);
+        CollectUintConversions(*call);
+      }
       if (const auto* binary = node.As<BinaryExpr>()) {
         if (binary->op == BinaryOp::kDiv && !c_.folding->IsFolded(binary)) {
           CollectDivision(*binary, binary->op_range, binary->rhs);
@@ -80,6 +83,14 @@ class MathRewriter {
       used.insert(name.builtin);
       c_.edits.Replace(name.range, CpuMathHelperName(name.builtin));
       ++c_.result.math_calls;
+    }
+    if (!conversions_.empty() && declare_at) {
+      used.insert("u2f");
+      for (const SourceRange& argument : conversions_) {
+        c_.edits.Insert(argument.file, argument.begin, "shaderport_u2f(");
+        c_.edits.Insert(argument.file, argument.end, ")");
+        ++c_.result.conversions;
+      }
     }
     if (!used.empty()) {
       c_.edits.Insert(declare_at->file, declare_at->begin, CpuMathDefinitions(used, false));
@@ -118,6 +129,26 @@ class MathRewriter {
     }
   }
 
+  // float(u), vec3(uvec3): SwiftShader converts a uint in two roundings.
+  void CollectUintConversions(const CallExpr& call) {
+    if (call.call_kind != CallKind::kConstructor || !c_.model.TypeOf(call.id).IsFloating() ||
+        !InsideFunctionBody(c_, call)) {
+      return;
+    }
+    for (const Expr* argument : call.arguments) {
+      const Type& type = c_.model.TypeOf(argument->id);
+      if (type.IsArray() || type.base != BaseType::kUint || c_.folding->IsFolded(argument)) {
+        continue;
+      }
+      const auto span = c_.edits.Span(*argument);
+      if (!span) {
+        ++c_.result.skipped;
+        continue;
+      }
+      conversions_.push_back(*span);
+    }
+  }
+
   void CollectDivision(const Expr& division, const SourceRange& op, const Expr* divisor) {
     if (divisor == nullptr || !c_.model.TypeOf(division.id).IsFloating() ||
         !c_.folding->IsFolded(divisor) || IsZeroLiteral(divisor) ||
@@ -138,6 +169,7 @@ class MathRewriter {
   const PreprocessResult& pp_;
   std::map<std::pair<FileId, uint32_t>, SpelledName> names_;
   std::vector<Division> divisors_;
+  std::vector<SourceRange> conversions_;  // uint arguments of float constructors
 };
 
 }  // namespace

@@ -21,6 +21,7 @@ enum class Shape : uint8_t {
   kReduction,  // float f(genType[, genType]): written for each size below
   kGeometric,  // genType f(genType, ...): written for each size below
   kInternal,   // float only, called by other helpers
+  kFromUint,   // float f(uint) and vecN f(uvecN): componentwise
 };
 
 struct Helper {
@@ -37,8 +38,8 @@ struct Helper {
 // `S(name)` below is "shaderport_name", `Z` the opaque zero: subtracted from a
 // constant that the caller's constants must not be folded into (Mesa turns
 // `(x * 0.5) * 1.44` into `x * 0.72`; SwiftShader multiplies twice). One line each.
-const std::array<Helper, 27>& Helpers() {
-  static const std::array<Helper, 27> helpers = {{
+const std::array<Helper, 28>& Helpers() {
+  static const std::array<Helper, 28> helpers = {{
       // Sin5: A x^5 + B x^3 + C x on [-1/4, 1/4] (argument in turns).
       {"sin5", Shape::kInternal, {}, false,
        "float S(sin5)(float x) { float x2 = x * x; return ((74.43889 * x2 + -41.16937) * x2 + "
@@ -129,6 +130,10 @@ const std::array<Helper, 27>& Helpers() {
        "}"},
       {"faceforward", Shape::kGeometric, {"dot"}, false,
        "@ S(faceforward)(@ n, @ i, @ r) { return S(dot)(i, r) < 0.0 ? n : -n; }"},
+      // float(uint): the low 31 bits converted, then 2^31 added (two roundings).
+      {"u2f", Shape::kFromUint, {}, false,
+       "float S(u2f)(uint x) { return float(int(x & 2147483647u)) + ((x >> 31u) != 0u ? "
+       "2147483648.0 : 0.0); }"},
       {"cross", Shape::kInternal, {}, false,
        "vec3 S(cross)(vec3 a, vec3 b) { return vec3(a.y * b.z - b.y * a.z, a.z * b.x - b.z * "
        "a.x, a.x * b.y - b.x * a.y); }"},
@@ -234,6 +239,18 @@ std::string Definition(const Helper& helper) {
   switch (helper.shape) {
     case Shape::kInternal:
       return Spell(helper.text);
+    case Shape::kFromUint: {
+      std::string out = Spell(helper.text);
+      for (size_t v = 0; v < kVectors.size(); ++v) {
+        const std::string type(kVectors[v]);
+        out += " " + type + " shaderport_u2f(u" + type + " a) { return " + type + "(";
+        for (size_t c = 0; c <= v + 1; ++c) {
+          out += std::string(c > 0 ? ", " : "") + "shaderport_u2f(a." + kComponents[c] + ")";
+        }
+        out += "); }";
+      }
+      return out;
+    }
     case Shape::kUnary: {
       std::string out = Spell(helper.text) + Componentwise(helper.builtin, 1, false);
       if (helper.builtin == "atan") out += Componentwise(helper.builtin, 2, false);
@@ -282,7 +299,7 @@ std::string MacroProofHelperText(std::string_view text) {
       "uniform", "highp", "true", "false",         "abs",            "roundEven",
       "floor", "sqrt",  "min",   "max",            "clamp",          "mix",
       "equal", "greaterThan", "intBitsToFloat",    "floatBitsToInt", "uintBitsToFloat",
-      "isinf"};
+      "isinf", "uvec2", "uvec3", "uvec4"};
   constexpr std::string_view kPrefix = "shaderport_";
   std::string out;
   for (size_t i = 0; i < text.size();) {

@@ -103,6 +103,17 @@ TEST(CpuBrowserMath, DivisionByAConstantMultipliesByItsReciprocal) {
             "m[0].x); }\n");
 }
 
+TEST(CpuBrowserMath, UintToFloatConversionsRoundTwice) {
+  const auto result = Apply(
+      "void main() { uvec3 h = uvec3(gl_FragCoord.xyz) * 1664525u; uint k = 7u;\n"
+      "o = vec4(vec3(h) / 4294967295.0, float(h.x ^ h.y) + float(k) + float(3u)); }\n",
+      MathOnly());
+  EXPECT_EQ(result.conversions, 2U);  // k and 3u reach the driver as constants
+  EXPECT_TRUE(Contains(Body(result), "o = vec4(vec3(shaderport_u2f(h)) * (1.0 / (4294967295.0)), "
+                                     "float(shaderport_u2f(h.x ^ h.y)) + float(k) + float(3u)); }"))
+      << Body(result);
+}
+
 TEST(CpuBrowserMath, MacroBodiesAreRenamedOnlyWhenEveryUseMayBe) {
   const auto result = Apply(
       "#define R(a) mat2(cos(a), sin(a), -sin(a), cos(a))\n"
