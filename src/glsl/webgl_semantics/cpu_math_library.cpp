@@ -28,7 +28,6 @@ struct Helper {
   std::string_view builtin;  // GLSL name, or an internal name
   Shape shape;
   std::vector<std::string_view> calls;  // other helpers used
-  bool uses_zero = false;               // divides through the opaque zero
   // float definition; for kReduction/kGeometric: `@` is the type, `#` the body part
   // that repeats per component (see ForSize).
   std::string_view text;
@@ -41,60 +40,60 @@ struct Helper {
 const std::array<Helper, 28>& Helpers() {
   static const std::array<Helper, 28> helpers = {{
       // Sin5: A x^5 + B x^3 + C x on [-1/4, 1/4] (argument in turns).
-      {"sin5", Shape::kInternal, {}, false,
+      {"sin5", Shape::kInternal, {},
        "float S(sin5)(float x) { float x2 = x * x; return ((74.43889 * x2 + -41.16937) * x2 + "
        "6.2823086) * x; }"},
-      {"sin", Shape::kUnary, {"sin5"}, true,
+      {"sin", Shape::kUnary, {"sin5"},
        "float S(sin)(float x) { float t = x * (-0.15915494 - Z) + 0.25; return S(sin5)(0.25 - "
        "abs(t - roundEven(t))); }"},
-      {"cos", Shape::kUnary, {"sin5"}, true,
+      {"cos", Shape::kUnary, {"sin5"},
        "float S(cos)(float x) { float t = x * (0.15915494 - Z); return S(sin5)(0.25 - abs(t - "
        "roundEven(t))); }"},
-      {"tan", Shape::kUnary, {"sin", "cos"}, false,
+      {"tan", Shape::kUnary, {"sin", "cos"},
        "float S(tan)(float x) { return S(sin)(x) / S(cos)(x); }"},
       // Chromium builds SwiftShader with its legacy exp2/log2 (SWIFTSHADER_LEGACY_PRECISION).
-      {"exp2", Shape::kUnary, {}, false,
+      {"exp2", Shape::kUnary, {},
        "float S(exp2)(float x) { float x0 = max(min(x, 128.0), -126.99999); int i = "
        "int(roundEven(x0 - 0.5)); float f = x0 - float(i); float p = intBitsToFloat(989206789); "
        "p = p * f + intBitsToFloat(1007896582); p = p * f + intBitsToFloat(1030007331); p = p * f "
        "+ intBitsToFloat(1047915220); p = p * f + intBitsToFloat(1060205179); p = p * f + 1.0; "
        "return intBitsToFloat((i + 127) << 23) * p; }"},
-      {"log2", Shape::kUnary, {}, false,
+      {"log2", Shape::kUnary, {},
        "float S(log2)(float x) { int b = floatBitsToInt(x); float e = uintBitsToFloat(uint(b & "
        "2139095040) >> 8u | 1065353216u); e = (e - 1.4960938) * 256.0; float m = "
        "intBitsToFloat(b & 8388607 | 1065353216); float p = (0.095428176 * m + 0.47779095) * m + "
        "0.19782813; float q = ((0.016618466 * m + 0.20350508) * m + 0.273829) * m + 0.04049669; "
        "e += (m - 1.0) * (p / q); return b == 2139095040 ? x : e; }"},
-      {"exp", Shape::kUnary, {"exp2"}, true,
+      {"exp", Shape::kUnary, {"exp2"},
        "float S(exp)(float x) { return S(exp2)((1.442695 - Z) * x); }"},
-      {"log", Shape::kUnary, {"log2"}, true,
+      {"log", Shape::kUnary, {"log2"},
        "float S(log)(float x) { return (0.6931472 - Z) * S(log2)(x); }"},
-      {"pow", Shape::kBinary, {"exp2", "log2"}, false,
+      {"pow", Shape::kBinary, {"exp2", "log2"},
        "float S(pow)(float x, float y) { return S(exp2)(S(log2)(x) * y); }"},
-      {"sinh", Shape::kUnary, {"exp"}, false,
+      {"sinh", Shape::kUnary, {"exp"},
        "float S(sinh)(float x) { return (S(exp)(x) - S(exp)(-x)) * 0.5; }"},
-      {"cosh", Shape::kUnary, {"exp"}, false,
+      {"cosh", Shape::kUnary, {"exp"},
        "float S(cosh)(float x) { return (S(exp)(x) + S(exp)(-x)) * 0.5; }"},
-      {"tanh", Shape::kUnary, {"exp"}, false,
+      {"tanh", Shape::kUnary, {"exp"},
        "float S(tanh)(float x) { float a = S(exp)(x); float b = S(exp)(-x); return (a - b) / "
        "(a + b); }"},
-      {"asinh", Shape::kUnary, {"log"}, false,
+      {"asinh", Shape::kUnary, {"log"},
        "float S(asinh)(float x) { return S(log)(x + sqrt(x * x + 1.0)); }"},
-      {"acosh", Shape::kUnary, {"log"}, false,
+      {"acosh", Shape::kUnary, {"log"},
        "float S(acosh)(float x) { return S(log)(x + sqrt(x + 1.0) * sqrt(x - 1.0)); }"},
-      {"atanh", Shape::kUnary, {"log"}, false,
+      {"atanh", Shape::kUnary, {"log"},
        "float S(atanh)(float x) { return S(log)((1.0 + x) / (1.0 - x)) * 0.5; }"},
       // acos uses a 4-term polynomial even at highp; asin (libm's asinf) is left alone.
-      {"acos", Shape::kUnary, {}, false,
+      {"acos", Shape::kUnary, {},
        "float S(acos)(float x) { float a = abs(x); float r = 1.5707964 - sqrt(1.0 - a) * "
        "(1.5707288 + a * (-0.2121144 + a * (0.074261 + a * -0.0187293))); return 1.5707964 - "
        "intBitsToFloat(floatBitsToInt(r) ^ (floatBitsToInt(x) & int(0x80000000u))); }"},
-      {"atan01", Shape::kInternal, {}, false,
+      {"atan01", Shape::kInternal, {},
        "float S(atan01)(float x) { float x2 = x * x; return x + x * (x2 * (-0.33333147 + x2 * "
        "(0.19993551 + x2 * (-0.142089 + x2 * (0.10656264 + x2 * (-0.07528964 + x2 * "
        "(0.042909615 + x2 * (-0.016165737 + x2 * 0.0028662258)))))))); }"},
       // atan(y_over_x) and atan(y, x): the same name, told apart by arity.
-      {"atan", Shape::kUnary, {"atan01"}, false,
+      {"atan", Shape::kUnary, {"atan01"},
        "float S(atan)(float x) { float a = abs(x); bool o = !(a < 1.0); float t = "
        "S(atan01)(o ? 1.0 / a : a); float r = o ? 1.5707964 - t : t; return "
        "intBitsToFloat(floatBitsToInt(r) ^ (floatBitsToInt(x) & int(0x80000000u))); }"
@@ -105,36 +104,36 @@ const std::array<Helper, 28>& Helpers() {
        ": x1; float y2 = o ? x1 : y1; bool inf_y = isinf(y2); float t = S(atan01)(y2 / x2); "
        "theta += (x2 != 0.0 && !inf_y) ? (o ? 1.5707964 - t : t) : (inf_y ? 0.7853982 : 0.0); "
        "return (s && q && o && !inf_y) ? -t : theta; }"},
-      {"mix", Shape::kMix, {}, false,
+      {"mix", Shape::kMix, {},
        "float S(mix)(float x, float y, float a) { return a * (y - x) + x; }"},
       // dot: x0 * y0, then MulAdd(xi, yi, d) for each further component.
-      {"dot", Shape::kReduction, {}, false,
+      {"dot", Shape::kReduction, {},
        "float S(dot)(@ x, @ y) { float d = x.x * y.x;# d = x.# * y.# + d; return d; }",
        "float S(dot)(float x, float y) { return x * y; }"},
-      {"length", Shape::kReduction, {"dot"}, false,
+      {"length", Shape::kReduction, {"dot"},
        "float S(length)(@ x) { return sqrt(S(dot)(x, x)); }",
        "float S(length)(float x) { return sqrt(x * x); }"},
-      {"distance", Shape::kReduction, {}, false,
+      {"distance", Shape::kReduction, {},
        "float S(distance)(@ p, @ q) { @ v = p - q; float d = v.x * v.x;# d += v.# * v.#; "
        "return sqrt(d); }",
        "float S(distance)(float p, float q) { float v = p - q; return sqrt(v * v); }"},
       // 1 / sqrt(d), not inversesqrt(d): SwiftShader divides.
-      {"normalize", Shape::kGeometric, {"dot"}, true,
+      {"normalize", Shape::kGeometric, {"dot"},
        "@ S(normalize)(@ x) { float r = 1.0 / (sqrt(S(dot)(x, x)) - Z); return r * "
        "x; }"},
-      {"reflect", Shape::kGeometric, {"dot"}, false,
+      {"reflect", Shape::kGeometric, {"dot"},
        "@ S(reflect)(@ i, @ n) { float d = S(dot)(i, n); return i - 2.0 * d * n; }"},
-      {"refract", Shape::kGeometric, {"dot"}, false,
+      {"refract", Shape::kGeometric, {"dot"},
        "@ S(refract)(@ i, @ n, float eta) { float d = S(dot)(i, n); float k = 1.0 - eta * eta * "
        "(1.0 - d * d); float t = eta * d + sqrt(k); return k < 0.0 ? @(0.0) : eta * i - t * n; "
        "}"},
-      {"faceforward", Shape::kGeometric, {"dot"}, false,
+      {"faceforward", Shape::kGeometric, {"dot"},
        "@ S(faceforward)(@ n, @ i, @ r) { return S(dot)(i, r) < 0.0 ? n : -n; }"},
       // float(uint): the low 31 bits converted, then 2^31 added (two roundings).
-      {"u2f", Shape::kFromUint, {}, false,
+      {"u2f", Shape::kFromUint, {},
        "float S(u2f)(uint x) { return float(int(x & 2147483647u)) + ((x >> 31u) != 0u ? "
        "2147483648.0 : 0.0); }"},
-      {"cross", Shape::kInternal, {}, false,
+      {"cross", Shape::kInternal, {},
        "vec3 S(cross)(vec3 a, vec3 b) { return vec3(a.y * b.z - b.y * a.z, a.z * b.x - b.z * "
        "a.x, a.x * b.y - b.x * a.y); }"},
   }};
@@ -235,6 +234,49 @@ std::string Componentwise(std::string_view name, int arity, bool scalar_last) {
   return out;
 }
 
+// Each parameter of each function in `text` starts with `p = p - zero;` and each
+// `return x;` becomes `return (x) - zero;`: in Chromium the helper's arithmetic runs
+// inside SwiftShader, out of reach of the SPIR-V optimiser, so Mesa must not mix the
+// caller's arithmetic into it either (it turns `(v * 0.61) * 78.233` into
+// `v * 47.72`, `v * a + v * b` into `v * (a + b)`, `(p * x) * k` into `(p * k) * x`).
+std::string WithOpaqueParameters(std::string_view text) {
+  constexpr std::string_view kReturn = "return ";
+  const std::string minus_zero = " - " + std::string(kOpaqueZeroUniform);
+  std::string out;
+  int depth = 0;
+  for (size_t i = 0; i < text.size();) {
+    if (depth > 0 && text.compare(i, kReturn.size(), kReturn) == 0) {
+      const size_t end = text.find(';', i);
+      out += "return (";
+      out.append(text.substr(i + kReturn.size(), end - i - kReturn.size()));
+      out += ")" + minus_zero;
+      i = end;
+      continue;
+    }
+    if (depth == 0 && text[i] == '(') {
+      const size_t close = text.find(')', i);
+      const size_t brace = text.find('{', close);
+      const std::string_view parameters = text.substr(i + 1, close - i - 1);
+      out.append(text.substr(i, brace + 1 - i));
+      for (size_t begin = 0; begin < parameters.size();) {
+        size_t end = parameters.find(',', begin);
+        if (end == std::string_view::npos) end = parameters.size();
+        const std::string_view parameter = parameters.substr(begin, end - begin);
+        const std::string name(parameter.substr(parameter.rfind(' ') + 1));
+        out += " " + name + " = " + name + minus_zero + ";";
+        begin = end + 1;
+      }
+      i = brace + 1;
+      depth = 1;
+      continue;
+    }
+    if (text[i] == '{') ++depth;
+    if (text[i] == '}') --depth;
+    out.push_back(text[i++]);
+  }
+  return out;
+}
+
 std::string Definition(const Helper& helper) {
   switch (helper.shape) {
     case Shape::kInternal:
@@ -252,20 +294,22 @@ std::string Definition(const Helper& helper) {
       return out;
     }
     case Shape::kUnary: {
-      std::string out = Spell(helper.text) + Componentwise(helper.builtin, 1, false);
+      std::string out =
+          WithOpaqueParameters(Spell(helper.text)) + Componentwise(helper.builtin, 1, false);
       if (helper.builtin == "atan") out += Componentwise(helper.builtin, 2, false);
       return out;
     }
     case Shape::kBinary:
-      return Spell(helper.text) + Componentwise(helper.builtin, 2, false);
+      return WithOpaqueParameters(Spell(helper.text)) + Componentwise(helper.builtin, 2, false);
     case Shape::kMix:
-      return Spell(helper.text) + Componentwise(helper.builtin, 3, true);
+      return WithOpaqueParameters(Spell(helper.text)) + Componentwise(helper.builtin, 3, true);
     case Shape::kReduction:
     case Shape::kGeometric: {
-      std::string out =
-          Spell(helper.float_text.empty() ? ForSize(helper.text, "float", 1) : helper.float_text);
+      std::string out = WithOpaqueParameters(
+          Spell(helper.float_text.empty() ? ForSize(helper.text, "float", 1) : helper.float_text));
       for (size_t v = 0; v < kVectors.size(); ++v) {
-        out += " " + Spell(ForSize(helper.text, kVectors[v], static_cast<int>(v) + 2));
+        out += " " + WithOpaqueParameters(
+                         Spell(ForSize(helper.text, kVectors[v], static_cast<int>(v) + 2)));
       }
       return out;
     }
@@ -345,7 +389,9 @@ std::string CpuMathDefinitions(const std::set<std::string>& builtins, bool decla
   std::set<std::string_view> seen;
   for (const std::string& name : builtins) AddWithCalls(name, ordered, seen);
   bool zero = declare_zero;
-  for (const Helper* helper : ordered) zero = zero || helper->uses_zero;
+  for (const Helper* helper : ordered) {
+    zero = zero || helper->shape != Shape::kFromUint;
+  }
   std::string text;
   if (zero) text = "uniform highp float " + std::string(kOpaqueZeroUniform) + "; ";
   for (const Helper* helper : ordered) text += Definition(*helper) + " ";

@@ -111,5 +111,36 @@ TEST(BrowserParity, RenderMatchesChromiumOrSaysWhyNot) {
   EXPECT_GE(differ_natively, shaders / 2);
 }
 
+// tests/render-parity/math: each probe draws the bits of one built-in (or a
+// division, a conversion) for 2,048 arguments; render must give Chromium's bits
+// exactly, where llvmpipe's own math gives other bits.
+TEST(BrowserParity, MathHasChromiumsBits) {
+  int probes = 0, differ_natively = 0;
+  for (const auto& entry : fs::directory_iterator(kDir / "math")) {
+    const std::string name = entry.path().stem().string();
+    SCOPED_TRACE(name);
+    ++probes;
+    render::ImageRgba8 reference;
+    std::string error;
+    ASSERT_TRUE(render::ReadPng((kDir / "math-chromium" / (name + ".png")).string(), reference,
+                                error))
+        << error;
+    SourceManager sources;
+    const RenderFileResult result = Render(entry.path(), true, sources);
+    ASSERT_TRUE(result.image.has_value());
+    ASSERT_EQ(result.image->pixels.size(), reference.pixels.size());
+    size_t different = 0;
+    for (size_t i = 0; i < reference.pixels.size(); ++i) {
+      different += result.image->pixels[i] != reference.pixels[i] ? 1 : 0;
+    }
+    EXPECT_EQ(different, 0U) << "bytes that differ from Chromium's";
+    SourceManager native_sources;
+    const RenderFileResult native = Render(entry.path(), false, native_sources);
+    if (native.image && native.image->pixels != reference.pixels) ++differ_natively;
+  }
+  EXPECT_GE(probes, 12);
+  EXPECT_GE(differ_natively, probes - 1);  // each probe shows a real difference
+}
+
 }  // namespace
 }  // namespace shaderport::driver
