@@ -168,8 +168,8 @@ void AddRenderCommand(CLI::App& app, int& exit_code) {
                       "Seconds before the render is killed (default 10)");
   command->add_flag("--hermetic", args->hermetic, "Do not use or fill Mesa's shader cache");
   command->add_flag("--native", args->native,
-                    "Draw as a native driver would: without the browser's zero initialisation "
-                    "and index clamping");
+                    "Draw as a native driver would: without the browser's zero initialisation, "
+                    "index clamping and math");
   command->add_option("--fail-on", args->fail_on,
                       "Lowest severity that fails the run: error (default), warning or note");
   command->callback([args, &exit_code] { exit_code = RunRender(*args); });
