@@ -12,6 +12,7 @@
 // a function body.
 // A name spelled in a macro body is renamed only when every use of it may be.
 #include <map>
+#include <optional>
 #include <set>
 #include <utility>
 
@@ -45,6 +46,11 @@ struct Division {
   SourceRange divisor;
 };
 
+struct DivisionSite {
+  Division division;
+  bool rewritable = true;  // every division spelled there qualifies
+};
+
 class MathRewriter {
  public:
   MathRewriter(SemanticsContext& c, const PreprocessResult& preprocessed)
@@ -57,13 +63,13 @@ class MathRewriter {
         CollectUintConversions(*call);
       }
       if (const auto* binary = node.As<BinaryExpr>()) {
-        if (binary->op == BinaryOp::kDiv && !c_.folding->IsFolded(binary)) {
-          CollectDivision(*binary, binary->op_range, binary->rhs);
+        if (binary->op == BinaryOp::kDiv) {
+          CollectDivision(*binary, binary->lhs, binary->rhs);
         }
       }
       if (const auto* assignment = node.As<AssignmentExpr>()) {
         if (assignment->op == AssignOp::kDiv) {
-          CollectDivision(*assignment, assignment->op_range, assignment->rhs);
+          CollectDivision(*assignment, assignment->lhs, assignment->rhs);
         }
       }
       return true;
@@ -99,7 +105,9 @@ class MathRewriter {
 
  private:
   void AddDivisions() {
-    for (const Division& division : divisors_) {
+    for (const auto& [at, site] : divisions_) {
+      if (!site.rewritable) continue;
+      const Division& division = site.division;
       const bool compound = division.op.Size() == 2;  // `/=`
       c_.edits.Replace(division.op, compound ? "*=" : "*");
       c_.edits.Insert(division.divisor.file, division.divisor.begin, "(1.0 / (");
@@ -149,26 +157,55 @@ class MathRewriter {
     }
   }
 
-  void CollectDivision(const Expr& division, const SourceRange& op, const Expr* divisor) {
-    if (divisor == nullptr || !c_.model.TypeOf(division.id).IsFloating() ||
-        !c_.folding->IsFolded(divisor) || IsZeroLiteral(divisor) ||
-        c_.model.TypeOf(divisor->id).IsMatrix() || !InsideFunctionBody(c_, division)) {
-      return;  // a matrix divisor: `*` would be the matrix product
-    }
-    const auto whole = c_.edits.Span(division);
-    const auto span = c_.edits.Span(*divisor);
-    if (!whole || !span || op.file != span->file || op.begin < whole->begin ||
-        op.end > span->begin) {
-      ++c_.result.skipped;  // spelled in a macro body
+  void CollectDivision(const Expr& division, const Expr* dividend, const Expr* divisor) {
+    if (dividend == nullptr || divisor == nullptr || !dividend->HasTokens() ||
+        !c_.model.TypeOf(division.id).IsFloating() || !InsideFunctionBody(c_, division)) {
       return;
     }
-    divisors_.push_back({op, *span});
+    const uint32_t op_token = dividend->last_token + 1;
+    if (op_token >= pp_.tokens.size()) return;
+    const PpToken& op = pp_.tokens[op_token];
+    auto [entry, added] = divisions_.try_emplace({op.spelling.file, op.spelling.begin});
+    if (added) entry->second.division.op = op.spelling;
+    // Folded whole, the division is exact in the browser too. A matrix divisor: `*`
+    // would be the matrix product.
+    const bool wanted = !c_.folding->IsFolded(&division) && c_.folding->IsFolded(divisor) &&
+                        !IsZeroLiteral(divisor) &&
+                        !c_.model.TypeOf(divisor->id).IsMatrix();
+    const auto span = DivisorSpan(op, *divisor);
+    if (!wanted || !span || (!added && span->begin != entry->second.division.divisor.begin)) {
+      entry->second.rewritable = false;
+      return;
+    }
+    entry->second.division.divisor = *span;
+  }
+
+  // Where the divisor is written: in the file next to a written `/`, or, when the `/`
+  // is spelled in a macro body, as tokens of that same body (an edit there changes
+  // every expansion, so every one must qualify).
+  std::optional<SourceRange> DivisorSpan(const PpToken& op, const Expr& divisor) const {
+    if (op.macro_use == kNoMacroUse) {
+      const auto span = c_.edits.Span(divisor);
+      if (!span || span->file != op.spelling.file || span->begin < op.spelling.end) return {};
+      return span;
+    }
+    if (!op.in_macro_body || !divisor.HasTokens()) return {};
+    uint32_t at = op.spelling.end;
+    for (uint32_t t = divisor.first_token; t <= divisor.last_token; ++t) {
+      const PpToken& token = pp_.tokens[t];
+      if (!token.in_macro_body || token.spelling.file != op.spelling.file ||
+          token.spelling.begin < at || token.spelling.Size() != token.text.size()) {
+        return {};
+      }
+      at = token.spelling.end;
+    }
+    return SourceRange{op.spelling.file, pp_.tokens[divisor.first_token].spelling.begin, at};
   }
 
   SemanticsContext& c_;
   const PreprocessResult& pp_;
   std::map<std::pair<FileId, uint32_t>, SpelledName> names_;
-  std::vector<Division> divisors_;
+  std::map<std::pair<FileId, uint32_t>, DivisionSite> divisions_;  // by the spelled `/`
   std::vector<SourceRange> conversions_;  // uint arguments of float constructors
 };
 

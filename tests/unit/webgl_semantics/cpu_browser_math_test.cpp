@@ -118,6 +118,21 @@ TEST(CpuBrowserMath, UintToFloatConversionsRoundTwice) {
       << Body(result);
 }
 
+TEST(CpuBrowserMath, DivisionsSpelledInMacroBodies) {
+  // H's divisor is written in its body: rewritten there. G divides by an argument,
+  // which is a constant in one use only, and F's division is folded whole in one
+  // use (the browser divides exactly there): both left alone.
+  const auto result = Apply(
+      "#define H(k) (k * k / 7.0)\n#define G(a, b) (a / b)\n#define F(k) (k / 7.0)\n"
+      "void main() { float v = gl_FragCoord.x; o = vec4(H(v), G(v, 3.0), G(v, v), F(v) + "
+      "F(2.0)); }\n",
+      MathOnly());
+  EXPECT_EQ(result.divisions, 1U);
+  EXPECT_TRUE(Contains(result.texts.front(), "#define H(k) (k * k * (1.0 / (7.0)))\n"
+                                             "#define G(a, b) (a / b)\n"
+                                             "#define F(k) (k / 7.0)\n"));
+}
+
 TEST(CpuBrowserMath, MacroBodiesAreRenamedOnlyWhenEveryUseMayBe) {
   const auto result = Apply(
       "#define R(a) mat2(cos(a), sin(a), -sin(a), cos(a))\n"
