@@ -55,6 +55,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   glsl::BrowserSemanticsOptions options;
   options.zero_out_parameters = true;
   options.add_render_probe = true;
+  options.cpu_browser_math = true;  // as render applies them
   const glsl::BrowserSemanticsResult result = glsl::ApplyBrowserSemantics(parts, options);
   Check(result.texts.size() == 1 && result.maps.size() == 1, "one text and map per part");
   const std::string& edited = result.texts.front();

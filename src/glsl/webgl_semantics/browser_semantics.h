@@ -14,6 +14,8 @@
 // and, on request, where llvmpipe computes differently from Chromium without a GPU:
 //  - sin, cos, exp, pow, dot, mix, ... computed as SwiftShader computes them, and
 //    float divisions kept as divisions (cpu_browser_math.cpp);
+//  - lines inside skipped #if groups are emptied (Mesa rejects a misspelled
+//    directive there; browsers skip it);
 // plus, on request, a probe written to a second fragment output, so that a render
 // can tell when llvmpipe's silent loop cap was reached and which pixels never
 // assigned the colour output.
@@ -46,6 +48,9 @@ struct BrowserSemanticsOptions {
   // Built-in math and division as Chromium computes them on the CPU (SwiftShader),
   // so that hash noise draws the same bits. For renders, never for output text.
   bool cpu_browser_math = false;
+  // Lines of skipped #if groups emptied (conditional directives kept): browsers
+  // ignore them, Mesa rejects a bad directive there.
+  bool empty_inactive_lines = true;
   bool add_render_probe = false;  // fragment shaders only
   bool vertex_stage = false;
 };

@@ -5,6 +5,7 @@
 
 #include <map>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -80,5 +81,7 @@ void AddRenderProbe(SemanticsContext& context, MainPrologue& prologue);
 void RewriteSmoothstepEdges(SemanticsContext& context, const PreprocessResult& preprocessed);
 void PromotePrecision(SemanticsContext& context, const PreprocessResult& preprocessed);
 void ComputeMathAsCpuBrowser(SemanticsContext& context, const PreprocessResult& preprocessed);
+void EmptyInactiveLines(std::span<const SourceFile* const> parts,
+                        const PreprocessResult& preprocessed, EditCollector& edits);
 
 }  // namespace shaderport::glsl

@@ -203,6 +203,17 @@ TEST(BrowserSemantics, MediumAndLowPrecisionBecomeHigh) {
             "void main() { highp float t = 1000.0; P vec2 v = vec2(t); o = vec4(v, 0.0, 1.0); }\n");
 }
 
+TEST(BrowserSemantics, SkippedGroupsKeepOnlyTheirConditionalDirectives) {
+  BrowserSemanticsOptions options;
+  options.zero_initialize = false;
+  const auto result = Apply(
+      "#if 0\nthis is not GLSL\n#elseif 1\n  #if 1\n#endif\n#else\nvoid main() { o = vec4(1); }\n"
+      "#endif\n",
+      options);
+  EXPECT_EQ(Body(result),
+            "#if 0\n\n\n  #if 1\n#endif\n#else\nvoid main() { o = vec4(1); }\n#endif\n");
+}
+
 TEST(BrowserSemantics, BrokenCodeIsLeftAsItIs) {
   SourceManager sources;
   const SourceFile& file = sources.Add("t.frag", "#version 300 es\nvoid main() { vec4 c; +; }\n");
