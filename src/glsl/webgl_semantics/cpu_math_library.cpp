@@ -37,8 +37,8 @@ struct Helper {
 // `S(name)` below is "shaderport_name", `Z` the opaque zero: subtracted from a
 // constant that the caller's constants must not be folded into (Mesa turns
 // `(x * 0.5) * 1.44` into `x * 0.72`; SwiftShader multiplies twice). One line each.
-const std::array<Helper, 28>& Helpers() {
-  static const std::array<Helper, 28> helpers = {{
+const std::array<Helper, 29>& Helpers() {
+  static const std::array<Helper, 29> helpers = {{
       // Sin5: A x^5 + B x^3 + C x on [-1/4, 1/4] (argument in turns).
       {"sin5", Shape::kInternal, {},
        "float S(sin5)(float x) { float x2 = x * x; return ((74.43889 * x2 + -41.16937) * x2 + "
@@ -83,7 +83,21 @@ const std::array<Helper, 28>& Helpers() {
        "float S(acosh)(float x) { return S(log)(x + sqrt(x + 1.0) * sqrt(x - 1.0)); }"},
       {"atanh", Shape::kUnary, {"log"},
        "float S(atanh)(float x) { return S(log)((1.0 + x) / (1.0 - x)) * 0.5; }"},
-      // acos uses a 4-term polynomial even at highp; asin (libm's asinf) is left alone.
+      // asin is the C library's asinf (glibc's float version: a polynomial in x^2, and
+      // for |x| >= 0.5 one in (1 - |x|) / 2 with a split square root).
+      {"asin", Shape::kUnary, {},
+       "float S(asin)(float x) { int hx = floatBitsToInt(x); int ix = hx & 2147483647; if (ix "
+       "== 1065353216) return x * (1.5707964 - Z) + x * (-4.371139e-08 - Z); if (ix > "
+       "1065353216) return intBitsToFloat(-4194304); if (ix < 1056964608) { if (ix < 838860800) "
+       "return x; float t = x * x; float w = t * (0.16666752 + t * (0.074952975 + t * "
+       "(0.045470376 + t * (0.024179514 + t * 0.042166308)))); return x + x * w; } float t = "
+       "(1.0 - abs(x)) * 0.5; float p = t * (0.16666752 + t * (0.074952975 + t * (0.045470376 + "
+       "t * (0.024179514 + t * 0.042166308)))); float s = sqrt(t); float r; if (ix >= "
+       "1064933786) { r = (1.5707964 - Z) - (2.0 * (s + s * p) - (-4.371139e-08 - Z)); } else { "
+       "float w = intBitsToFloat(floatBitsToInt(s) & -4096); float c = (t - w * w) / (s + w); "
+       "float q = 2.0 * s * p - ((-4.371139e-08 - Z) - 2.0 * c); r = (0.7853982 - Z) - (q - "
+       "((0.7853982 - Z) - 2.0 * w)); } return hx > 0 ? r : -r; }"},
+      // acos uses a 4-term polynomial even at highp.
       {"acos", Shape::kUnary, {},
        "float S(acos)(float x) { float a = abs(x); float r = 1.5707964 - sqrt(1.0 - a) * "
        "(1.5707288 + a * (-0.2121144 + a * (0.074261 + a * -0.0187293))); return 1.5707964 - "
@@ -339,7 +353,7 @@ std::string CpuMathHelperName(std::string_view builtin) {
 std::string MacroProofHelperText(std::string_view text) {
   static const std::set<std::string_view> kKept = {
       "float", "vec2",  "vec3",  "vec4",           "int",            "uint",
-      "bool",  "bvec2", "bvec3", "bvec4",          "return",         "if",
+      "bool",  "bvec2", "bvec3", "bvec4",          "return",         "if", "else",
       "uniform", "highp", "true", "false",         "abs",            "roundEven",
       "floor", "sqrt",  "min",   "max",            "clamp",          "mix",
       "equal", "greaterThan", "intBitsToFloat",    "floatBitsToInt", "uintBitsToFloat",
