@@ -139,8 +139,9 @@ RenderOutcome RenderInThisProcess(const RenderRequest& request, BackendKind back
       request.fragment_source.empty() ? kFlatFragmentShader : request.fragment_source;
   std::vector<GLuint> buffer_programs;
   for (size_t p = 0; p < request.buffer_passes.size(); ++p) {
-    const GLuint built = BuildProgram(gl, FullScreenVertexFor(request.buffer_passes[p].fragment_source),
-                                      request.buffer_passes[p].fragment_source, outcome);
+    const GLuint built =
+        BuildProgram(gl, FullScreenVertexFor(request.buffer_passes[p].fragment_source),
+                     request.buffer_passes[p].fragment_source, outcome);
     if (built == 0) {
       outcome.failed_pass = static_cast<int>(p);
       return outcome;

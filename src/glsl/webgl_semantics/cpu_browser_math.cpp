@@ -119,11 +119,13 @@ class MathRewriter {
   void CollectCall(const CallExpr& call) {
     if (call.call_kind != CallKind::kFunction || !c_.model.builtin_calls.contains(call.id) ||
         !HasCpuMathDefinition(call.callee.text) || IsBoolSelect(c_.model, call) ||
+        c_.model.TypeOf(call.id).base != BaseType::kFloat ||  // min, max, clamp on ints
         !call.HasTokens()) {
       return;
     }
     const PpToken& token = pp_.tokens[call.first_token];
-    const bool spelled = token.text == call.callee.text && token.spelling.Size() == token.text.size();
+    const bool spelled =
+        token.text == call.callee.text && token.spelling.Size() == token.text.size();
     if (!spelled) {
       ++c_.result.skipped;  // pasted with ## or otherwise not one written token
       return;
@@ -165,13 +167,13 @@ class MathRewriter {
     const uint32_t op_token = dividend->last_token + 1;
     if (op_token >= pp_.tokens.size()) return;
     const PpToken& op = pp_.tokens[op_token];
+    if (op.text != "/" && op.text != "/=") return;
     auto [entry, added] = divisions_.try_emplace({op.spelling.file, op.spelling.begin});
     if (added) entry->second.division.op = op.spelling;
     // Folded whole, the division is exact in the browser too. A matrix divisor: `*`
     // would be the matrix product.
     const bool wanted = !c_.folding->IsFolded(&division) && c_.folding->IsFolded(divisor) &&
-                        !IsZeroLiteral(divisor) &&
-                        !c_.model.TypeOf(divisor->id).IsMatrix();
+                        !IsZeroLiteral(divisor) && !c_.model.TypeOf(divisor->id).IsMatrix();
     const auto span = DivisorSpan(op, *divisor);
     if (!wanted || !span || (!added && span->begin != entry->second.division.divisor.begin)) {
       entry->second.rewritable = false;

@@ -40,52 +40,84 @@ struct Helper {
 const std::array<Helper, 29>& Helpers() {
   static const std::array<Helper, 29> helpers = {{
       // Sin5: A x^5 + B x^3 + C x on [-1/4, 1/4] (argument in turns).
-      {"sin5", Shape::kInternal, {},
+      {"sin5",
+       Shape::kInternal,
+       {},
        "float S(sin5)(float x) { float x2 = x * x; return ((74.43889 * x2 + -41.16937) * x2 + "
        "6.2823086) * x; }"},
-      {"sin", Shape::kUnary, {"sin5"},
+      {"sin",
+       Shape::kUnary,
+       {"sin5"},
        "float S(sin)(float x) { float t = x * (-0.15915494 - Z) + 0.25; return S(sin5)(0.25 - "
        "abs(t - roundEven(t))); }"},
-      {"cos", Shape::kUnary, {"sin5"},
+      {"cos",
+       Shape::kUnary,
+       {"sin5"},
        "float S(cos)(float x) { float t = x * (0.15915494 - Z); return S(sin5)(0.25 - abs(t - "
        "roundEven(t))); }"},
-      {"tan", Shape::kUnary, {"sin", "cos"},
+      {"tan",
+       Shape::kUnary,
+       {"sin", "cos"},
        "float S(tan)(float x) { return S(sin)(x) / S(cos)(x); }"},
       // Chromium builds SwiftShader with its legacy exp2/log2 (SWIFTSHADER_LEGACY_PRECISION).
-      {"exp2", Shape::kUnary, {},
+      {"exp2",
+       Shape::kUnary,
+       {},
        "float S(exp2)(float x) { float x0 = max(min(x, 128.0), -126.99999); int i = "
        "int(roundEven(x0 - 0.5)); float f = x0 - float(i); float p = intBitsToFloat(989206789); "
        "p = p * f + intBitsToFloat(1007896582); p = p * f + intBitsToFloat(1030007331); p = p * f "
        "+ intBitsToFloat(1047915220); p = p * f + intBitsToFloat(1060205179); p = p * f + 1.0; "
        "return intBitsToFloat((i + 127) << 23) * p; }"},
-      {"log2", Shape::kUnary, {},
+      {"log2",
+       Shape::kUnary,
+       {},
        "float S(log2)(float x) { int b = floatBitsToInt(x); float e = uintBitsToFloat(uint(b & "
        "2139095040) >> 8u | 1065353216u); e = (e - 1.4960938) * 256.0; float m = "
        "intBitsToFloat(b & 8388607 | 1065353216); float p = (0.095428176 * m + 0.47779095) * m + "
        "0.19782813; float q = ((0.016618466 * m + 0.20350508) * m + 0.273829) * m + 0.04049669; "
        "e += (m - 1.0) * (p / q); return b == 2139095040 ? x : e; }"},
-      {"exp", Shape::kUnary, {"exp2"},
+      {"exp",
+       Shape::kUnary,
+       {"exp2"},
        "float S(exp)(float x) { return S(exp2)((1.442695 - Z) * x); }"},
-      {"log", Shape::kUnary, {"log2"},
+      {"log",
+       Shape::kUnary,
+       {"log2"},
        "float S(log)(float x) { return (0.6931472 - Z) * S(log2)(x); }"},
-      {"pow", Shape::kBinary, {"exp2", "log2"},
+      {"pow",
+       Shape::kBinary,
+       {"exp2", "log2"},
        "float S(pow)(float x, float y) { return S(exp2)(S(log2)(x) * y); }"},
-      {"sinh", Shape::kUnary, {"exp"},
+      {"sinh",
+       Shape::kUnary,
+       {"exp"},
        "float S(sinh)(float x) { return (S(exp)(x) - S(exp)(-x)) * 0.5; }"},
-      {"cosh", Shape::kUnary, {"exp"},
+      {"cosh",
+       Shape::kUnary,
+       {"exp"},
        "float S(cosh)(float x) { return (S(exp)(x) + S(exp)(-x)) * 0.5; }"},
-      {"tanh", Shape::kUnary, {"exp"},
+      {"tanh",
+       Shape::kUnary,
+       {"exp"},
        "float S(tanh)(float x) { float a = S(exp)(x); float b = S(exp)(-x); return (a - b) / "
        "(a + b); }"},
-      {"asinh", Shape::kUnary, {"log"},
+      {"asinh",
+       Shape::kUnary,
+       {"log"},
        "float S(asinh)(float x) { return S(log)(x + sqrt(x * x + 1.0)); }"},
-      {"acosh", Shape::kUnary, {"log"},
+      {"acosh",
+       Shape::kUnary,
+       {"log"},
        "float S(acosh)(float x) { return S(log)(x + sqrt(x + 1.0) * sqrt(x - 1.0)); }"},
-      {"atanh", Shape::kUnary, {"log"},
+      {"atanh",
+       Shape::kUnary,
+       {"log"},
        "float S(atanh)(float x) { return S(log)((1.0 + x) / (1.0 - x)) * 0.5; }"},
       // asin is the C library's asinf (glibc's float version: a polynomial in x^2, and
       // for |x| >= 0.5 one in (1 - |x|) / 2 with a split square root).
-      {"asin", Shape::kUnary, {},
+      {"asin",
+       Shape::kUnary,
+       {},
        "float S(asin)(float x) { int hx = floatBitsToInt(x); int ix = hx & 2147483647; if (ix "
        "== 1065353216) return x * (1.5707964 - Z) + x * (-4.371139e-08 - Z); if (ix > "
        "1065353216) return intBitsToFloat(-4194304); if (ix < 1056964608) { if (ix < 838860800) "
@@ -98,16 +130,22 @@ const std::array<Helper, 29>& Helpers() {
        "float q = 2.0 * s * p - ((-4.371139e-08 - Z) - 2.0 * c); r = (0.7853982 - Z) - (q - "
        "((0.7853982 - Z) - 2.0 * w)); } return hx > 0 ? r : -r; }"},
       // acos uses a 4-term polynomial even at highp.
-      {"acos", Shape::kUnary, {},
+      {"acos",
+       Shape::kUnary,
+       {},
        "float S(acos)(float x) { float a = abs(x); float r = 1.5707964 - sqrt(1.0 - a) * "
        "(1.5707288 + a * (-0.2121144 + a * (0.074261 + a * -0.0187293))); return 1.5707964 - "
        "intBitsToFloat(floatBitsToInt(r) ^ (floatBitsToInt(x) & int(0x80000000u))); }"},
-      {"atan01", Shape::kInternal, {},
+      {"atan01",
+       Shape::kInternal,
+       {},
        "float S(atan01)(float x) { float x2 = x * x; return x + x * (x2 * (-0.33333147 + x2 * "
        "(0.19993551 + x2 * (-0.142089 + x2 * (0.10656264 + x2 * (-0.07528964 + x2 * "
        "(0.042909615 + x2 * (-0.016165737 + x2 * 0.0028662258)))))))); }"},
       // atan(y_over_x) and atan(y, x): the same name, told apart by arity.
-      {"atan", Shape::kUnary, {"atan01"},
+      {"atan",
+       Shape::kUnary,
+       {"atan01"},
        "float S(atan)(float x) { float a = abs(x); bool o = !(a < 1.0); float t = "
        "S(atan01)(o ? 1.0 / a : a); float r = o ? 1.5707964 - t : t; return "
        "intBitsToFloat(floatBitsToInt(r) ^ (floatBitsToInt(x) & int(0x80000000u))); }"
@@ -118,36 +156,56 @@ const std::array<Helper, 29>& Helpers() {
        ": x1; float y2 = o ? x1 : y1; bool inf_y = isinf(y2); float t = S(atan01)(y2 / x2); "
        "theta += (x2 != 0.0 && !inf_y) ? (o ? 1.5707964 - t : t) : (inf_y ? 0.7853982 : 0.0); "
        "return (s && q && o && !inf_y) ? -t : theta; }"},
-      {"mix", Shape::kMix, {},
+      {"mix",
+       Shape::kMix,
+       {},
        "float S(mix)(float x, float y, float a) { return a * (y - x) + x; }"},
       // dot: x0 * y0, then MulAdd(xi, yi, d) for each further component.
-      {"dot", Shape::kReduction, {},
+      {"dot",
+       Shape::kReduction,
+       {},
        "float S(dot)(@ x, @ y) { float d = x.x * y.x;# d = x.# * y.# + d; return d; }",
        "float S(dot)(float x, float y) { return x * y; }"},
-      {"length", Shape::kReduction, {"dot"},
+      {"length",
+       Shape::kReduction,
+       {"dot"},
        "float S(length)(@ x) { return sqrt(S(dot)(x, x)); }",
        "float S(length)(float x) { return sqrt(x * x); }"},
-      {"distance", Shape::kReduction, {},
+      {"distance",
+       Shape::kReduction,
+       {},
        "float S(distance)(@ p, @ q) { @ v = p - q; float d = v.x * v.x;# d += v.# * v.#; "
        "return sqrt(d); }",
        "float S(distance)(float p, float q) { float v = p - q; return sqrt(v * v); }"},
       // 1 / sqrt(d), not inversesqrt(d): SwiftShader divides.
-      {"normalize", Shape::kGeometric, {"dot"},
+      {"normalize",
+       Shape::kGeometric,
+       {"dot"},
        "@ S(normalize)(@ x) { float r = 1.0 / (sqrt(S(dot)(x, x)) - Z); return r * "
        "x; }"},
-      {"reflect", Shape::kGeometric, {"dot"},
+      {"reflect",
+       Shape::kGeometric,
+       {"dot"},
        "@ S(reflect)(@ i, @ n) { float d = S(dot)(i, n); return i - 2.0 * d * n; }"},
-      {"refract", Shape::kGeometric, {"dot"},
+      {"refract",
+       Shape::kGeometric,
+       {"dot"},
        "@ S(refract)(@ i, @ n, float eta) { float d = S(dot)(i, n); float k = 1.0 - eta * eta * "
        "(1.0 - d * d); float t = eta * d + sqrt(k); return k < 0.0 ? @(0.0) : eta * i - t * n; "
        "}"},
-      {"faceforward", Shape::kGeometric, {"dot"},
+      {"faceforward",
+       Shape::kGeometric,
+       {"dot"},
        "@ S(faceforward)(@ n, @ i, @ r) { return S(dot)(i, r) < 0.0 ? n : -n; }"},
       // float(uint): the low 31 bits converted, then 2^31 added (two roundings).
-      {"u2f", Shape::kFromUint, {},
+      {"u2f",
+       Shape::kFromUint,
+       {},
        "float S(u2f)(uint x) { return float(int(x & 2147483647u)) + ((x >> 31u) != 0u ? "
        "2147483648.0 : 0.0); }"},
-      {"cross", Shape::kInternal, {},
+      {"cross",
+       Shape::kInternal,
+       {},
        "vec3 S(cross)(vec3 a, vec3 b) { return vec3(a.y * b.z - b.y * a.z, a.z * b.x - b.z * "
        "a.x, a.x * b.y - b.x * a.y); }"},
   }};
@@ -169,9 +227,9 @@ std::string Spell(std::string_view text) {
       out.append(kOpaqueZeroUniform);
       continue;
     }
-    if (text.compare(i, 2, "S(") == 0 && (i == 0 || (!std::isalnum(static_cast<unsigned char>(
-                                                         text[i - 1])) &&
-                                                     text[i - 1] != '_'))) {
+    if (text.compare(i, 2, "S(") == 0 &&
+        (i == 0 ||
+         (!std::isalnum(static_cast<unsigned char>(text[i - 1])) && text[i - 1] != '_'))) {
       const size_t close = text.find(')', i);
       out += "shaderport_";
       out.append(text.substr(i + 2, close - i - 2));
@@ -217,26 +275,28 @@ std::string ForSize(std::string_view text, std::string_view type, int size) {
   return out;
 }
 
-// Componentwise vector overloads of a float helper with `arity` float parameters.
-std::string Componentwise(std::string_view name, int arity, bool scalar_last) {
+// Componentwise vector overloads of a float helper with `arity` float parameters;
+// with `float_tail` > 0 also the overload whose last `float_tail` parameters are
+// floats (mix(vec3, vec3, float), clamp(vec3, float, float)).
+std::string Componentwise(std::string_view name, int arity, int float_tail) {
   std::string out;
   const std::string helper = "shaderport_" + std::string(name);
   for (size_t v = 0; v < kVectors.size(); ++v) {
     const std::string_view type = kVectors[v];
     const int size = static_cast<int>(v) + 2;
-    for (int variant = 0; variant < (scalar_last ? 2 : 1); ++variant) {
-      const bool last_is_float = variant == 1;
+    for (int variant = 0; variant < (float_tail > 0 ? 2 : 1); ++variant) {
+      const int first_float = variant == 1 ? arity - float_tail : arity;
       out += " " + std::string(type) + " " + helper + "(";
       for (int p = 0; p < arity; ++p) {
-        const bool is_float = last_is_float && p == arity - 1;
-        out += (p > 0 ? ", " : "") + std::string(is_float ? "float" : type) + " a" +
-               std::to_string(p);
+        const bool is_float = p >= first_float;
+        out +=
+            (p > 0 ? ", " : "") + std::string(is_float ? "float" : type) + " a" + std::to_string(p);
       }
       out += ") { return " + std::string(type) + "(";
       for (int c = 0; c < size; ++c) {
         out += (c > 0 ? ", " : "") + helper + "(";
         for (int p = 0; p < arity; ++p) {
-          const bool is_float = last_is_float && p == arity - 1;
+          const bool is_float = p >= first_float;
           out += (p > 0 ? ", " : "") + ("a" + std::to_string(p)) +
                  (is_float ? "" : std::string(".") + kComponents[static_cast<size_t>(c)]);
         }
@@ -309,14 +369,14 @@ std::string Definition(const Helper& helper) {
     }
     case Shape::kUnary: {
       std::string out =
-          WithOpaqueParameters(Spell(helper.text)) + Componentwise(helper.builtin, 1, false);
-      if (helper.builtin == "atan") out += Componentwise(helper.builtin, 2, false);
+          WithOpaqueParameters(Spell(helper.text)) + Componentwise(helper.builtin, 1, 0);
+      if (helper.builtin == "atan") out += Componentwise(helper.builtin, 2, 0);
       return out;
     }
     case Shape::kBinary:
-      return WithOpaqueParameters(Spell(helper.text)) + Componentwise(helper.builtin, 2, false);
+      return WithOpaqueParameters(Spell(helper.text)) + Componentwise(helper.builtin, 2, 0);
     case Shape::kMix:
-      return WithOpaqueParameters(Spell(helper.text)) + Componentwise(helper.builtin, 3, true);
+      return WithOpaqueParameters(Spell(helper.text)) + Componentwise(helper.builtin, 3, 1);
     case Shape::kReduction:
     case Shape::kGeometric: {
       std::string out = WithOpaqueParameters(
@@ -351,22 +411,22 @@ std::string CpuMathHelperName(std::string_view builtin) {
 }
 
 std::string MacroProofHelperText(std::string_view text) {
-  static const std::set<std::string_view> kKept = {
-      "float", "vec2",  "vec3",  "vec4",           "int",            "uint",
-      "bool",  "bvec2", "bvec3", "bvec4",          "return",         "if", "else",
-      "uniform", "highp", "true", "false",         "abs",            "roundEven",
-      "floor", "sqrt",  "min",   "max",            "clamp",          "mix",
-      "equal", "greaterThan", "intBitsToFloat",    "floatBitsToInt", "uintBitsToFloat",
-      "isinf", "uvec2", "uvec3", "uvec4"};
+  // Keywords and built-ins the helpers use; everything else gets the prefix.
+  constexpr std::string_view kKept =
+      " float vec2 vec3 vec4 int uint uvec2 uvec3 uvec4 bool bvec2 bvec3 bvec4 return if else "
+      "uniform highp true false abs roundEven floor sqrt min max clamp mix equal greaterThan "
+      "intBitsToFloat floatBitsToInt uintBitsToFloat isinf ";
+  auto kept = [&](std::string_view word) {
+    return kKept.find(" " + std::string(word) + " ") != std::string_view::npos;
+  };
   constexpr std::string_view kPrefix = "shaderport_";
   std::string out;
   for (size_t i = 0; i < text.size();) {
     const auto c = static_cast<unsigned char>(text[i]);
     if (std::isdigit(c)) {  // a number with its suffix and exponent
-      while (i < text.size() && (std::isalnum(static_cast<unsigned char>(text[i])) ||
-                                 text[i] == '.' ||
-                                 ((text[i] == '-' || text[i] == '+') &&
-                                  (text[i - 1] == 'e' || text[i - 1] == 'E')))) {
+      while (i < text.size() &&
+             (std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '.' ||
+              ((text[i] == '-' || text[i] == '+') && (text[i - 1] == 'e' || text[i - 1] == 'E')))) {
         out.push_back(text[i++]);
       }
       continue;
@@ -388,7 +448,7 @@ std::string MacroProofHelperText(std::string_view text) {
       out.back() = '[';
       out.push_back(static_cast<char>('0' + component));
       out.push_back(']');
-    } else if (word.starts_with(kPrefix) || kKept.contains(word)) {
+    } else if (word.starts_with(kPrefix) || kept(word)) {
       out.append(word);
     } else {
       out.append(kPrefix).append(word);

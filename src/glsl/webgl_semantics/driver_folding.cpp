@@ -157,8 +157,7 @@ bool DriverFolding::ParameterIsFolded(const Symbol& symbol, uint32_t symbol_id, 
 bool DriverFolding::PassedForWriting(const CallExpr& call, const Node& argument) const {
   const uint32_t callee = model_.SymbolAt(call.id);
   if (callee >= model_.symbols.size() || model_.symbols[callee].declaration == kNoNode) return true;
-  const auto* function =
-      tree_.NodeAt(model_.symbols[callee].declaration).As<FunctionDeclaration>();
+  const auto* function = tree_.NodeAt(model_.symbols[callee].declaration).As<FunctionDeclaration>();
   if (function == nullptr) return true;
   for (size_t i = 0; i < call.arguments.size() && i < function->parameters.size(); ++i) {
     if (call.arguments[i] != &argument) continue;

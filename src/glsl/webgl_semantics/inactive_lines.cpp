@@ -40,7 +40,8 @@ void EmptyInactiveLines(std::span<const SourceFile* const> parts,
     if (file == nullptr || region.end > file->Text().size()) continue;
     const std::string_view text = file->Text();
     const std::string_view inside = text.substr(region.begin, region.end - region.begin);
-    if (inside.find('\\') != std::string_view::npos || inside.find("/*") != std::string_view::npos) {
+    if (inside.find('\\') != std::string_view::npos ||
+        inside.find("/*") != std::string_view::npos) {
       continue;  // a continued line or a comment that may run out of the group
     }
     for (uint32_t at = region.begin; at < region.end;) {

@@ -122,8 +122,8 @@ TEST(BrowserParity, MathHasChromiumsBits) {
     ++probes;
     render::ImageRgba8 reference;
     std::string error;
-    ASSERT_TRUE(render::ReadPng((kDir / "math-chromium" / (name + ".png")).string(), reference,
-                                error))
+    ASSERT_TRUE(
+        render::ReadPng((kDir / "math-chromium" / (name + ".png")).string(), reference, error))
         << error;
     SourceManager sources;
     const RenderFileResult result = Render(entry.path(), true, sources);

@@ -35,24 +35,28 @@ TEST(CpuBrowserMath, BuiltinCallsBecomeHelpersOfEveryOverload) {
       MathOnly());
   EXPECT_EQ(result.math_calls, 10U);
   const std::string body = Body(result);
-  EXPECT_TRUE(Contains(body, "float a = shaderport_sin(p.x) + shaderport_pow(p.y, 2.2) + "
-                             "shaderport_atan(p.y, p.x) + shaderport_atan(p.z) + "
-                             "shaderport_dot(p, p) + shaderport_length(p.xy);\n"))
+  EXPECT_TRUE(Contains(body,
+                       "float a = shaderport_sin(p.x) + shaderport_pow(p.y, 2.2) + "
+                       "shaderport_atan(p.y, p.x) + shaderport_atan(p.z) + "
+                       "shaderport_dot(p, p) + shaderport_length(p.xy);\n"))
       << body;
-  EXPECT_TRUE(Contains(body, "o = vec4(shaderport_mix(p, shaderport_cos(p), 0.5), "
-                             "shaderport_exp(a) + shaderport_log2(a)); }"));
+  EXPECT_TRUE(Contains(body,
+                       "o = vec4(shaderport_mix(p, shaderport_cos(p), 0.5), "
+                       "shaderport_exp(a) + shaderport_log2(a)); }"));
   EXPECT_TRUE(Contains(body, "uniform highp float shaderport_zero;"));
-  EXPECT_TRUE(Contains(body, "vec3 shaderport_mix(vec3 shaderport_a0, vec3 shaderport_a1, "
-                             "float shaderport_a2)"));
+  EXPECT_TRUE(Contains(body,
+                       "vec3 shaderport_mix(vec3 shaderport_a0, vec3 shaderport_a1, "
+                       "float shaderport_a2)"));
   // Parameters and results pass through the opaque zero, so that Mesa cannot mix the
   // caller's arithmetic into the helper's.
-  EXPECT_TRUE(Contains(body, "float shaderport_dot(vec3 shaderport_x, vec3 shaderport_y) { "
-                             "shaderport_x = shaderport_x - shaderport_zero; shaderport_y = "
-                             "shaderport_y - shaderport_zero; float shaderport_d = "
-                             "shaderport_x[0] * shaderport_y[0]; shaderport_d = shaderport_x[1] "
-                             "* shaderport_y[1] + shaderport_d; shaderport_d = shaderport_x[2] * "
-                             "shaderport_y[2] + shaderport_d; return (shaderport_d) - "
-                             "shaderport_zero; }"))
+  EXPECT_TRUE(Contains(body,
+                       "float shaderport_dot(vec3 shaderport_x, vec3 shaderport_y) { "
+                       "shaderport_x = shaderport_x - shaderport_zero; shaderport_y = "
+                       "shaderport_y - shaderport_zero; float shaderport_d = "
+                       "shaderport_x[0] * shaderport_y[0]; shaderport_d = shaderport_x[1] "
+                       "* shaderport_y[1] + shaderport_d; shaderport_d = shaderport_x[2] * "
+                       "shaderport_y[2] + shaderport_d; return (shaderport_d) - "
+                       "shaderport_zero; }"))
       << body;
 }
 
@@ -78,8 +82,9 @@ TEST(CpuBrowserMath, ValuesTheDriverPropagatesAsConstantsKeepTheBuiltIn) {
   const std::string body = Body(result);
   EXPECT_TRUE(Contains(body, "float h(float k) { return sin(k); }\n")) << body;
   EXPECT_TRUE(Contains(body, "float r(float k) { return shaderport_cos(k); }\n")) << body;
-  EXPECT_TRUE(Contains(body, "o = vec4(sin(a), shaderport_sin(b), h(2.0) + h(a), "
-                             "r(gl_FragCoord.y) + r(1.0) + gl_FragCoord.x * (1.0 / (a))); }\n"));
+  EXPECT_TRUE(Contains(body,
+                       "o = vec4(sin(a), shaderport_sin(b), h(2.0) + h(a), "
+                       "r(gl_FragCoord.y) + r(1.0) + gl_FragCoord.x * (1.0 / (a))); }\n"));
 }
 
 TEST(CpuBrowserMath, BooleanMixIsASelectionAndStays) {
@@ -88,8 +93,9 @@ TEST(CpuBrowserMath, BooleanMixIsASelectionAndStays) {
       "mix(p.x, p.y, 0.25), 1.0); }\n",
       MathOnly());
   EXPECT_EQ(result.math_calls, 1U);
-  EXPECT_TRUE(Contains(Body(result), "vec4(mix(p, -p, lessThan(p, vec2(3.0))), "
-                                     "shaderport_mix(p.x, p.y, 0.25), 1.0)"));
+  EXPECT_TRUE(Contains(Body(result),
+                       "vec4(mix(p, -p, lessThan(p, vec2(3.0))), "
+                       "shaderport_mix(p.x, p.y, 0.25), 1.0)"));
 }
 
 TEST(CpuBrowserMath, DivisionByAConstantMultipliesByItsReciprocal) {
@@ -113,8 +119,9 @@ TEST(CpuBrowserMath, UintToFloatConversionsRoundTwice) {
       "o = vec4(vec3(h) / 4294967295.0, float(h.x ^ h.y) + float(k) + float(3u)); }\n",
       MathOnly());
   EXPECT_EQ(result.conversions, 2U);  // k and 3u reach the driver as constants
-  EXPECT_TRUE(Contains(Body(result), "o = vec4(vec3(shaderport_u2f(h)) * (1.0 / (4294967295.0)), "
-                                     "float(shaderport_u2f(h.x ^ h.y)) + float(k) + float(3u)); }"))
+  EXPECT_TRUE(Contains(Body(result),
+                       "o = vec4(vec3(shaderport_u2f(h)) * (1.0 / (4294967295.0)), "
+                       "float(shaderport_u2f(h.x ^ h.y)) + float(k) + float(3u)); }"))
       << Body(result);
 }
 
@@ -128,9 +135,10 @@ TEST(CpuBrowserMath, DivisionsSpelledInMacroBodies) {
       "F(2.0)); }\n",
       MathOnly());
   EXPECT_EQ(result.divisions, 1U);
-  EXPECT_TRUE(Contains(result.texts.front(), "#define H(k) (k * k * (1.0 / (7.0)))\n"
-                                             "#define G(a, b) (a / b)\n"
-                                             "#define F(k) (k / 7.0)\n"));
+  EXPECT_TRUE(Contains(result.texts.front(),
+                       "#define H(k) (k * k * (1.0 / (7.0)))\n"
+                       "#define G(a, b) (a / b)\n"
+                       "#define F(k) (k / 7.0)\n"));
 }
 
 TEST(CpuBrowserMath, MacroBodiesAreRenamedOnlyWhenEveryUseMayBe) {
@@ -141,8 +149,9 @@ TEST(CpuBrowserMath, MacroBodiesAreRenamedOnlyWhenEveryUseMayBe) {
       "o = vec4(p, h, 1.0); }\n",
       MathOnly());
   const std::string& text = result.texts.front();
-  EXPECT_TRUE(Contains(text, "#define R(a) mat2(shaderport_cos(a), shaderport_sin(a), "
-                             "-shaderport_sin(a), shaderport_cos(a))\n"));
+  EXPECT_TRUE(Contains(text,
+                       "#define R(a) mat2(shaderport_cos(a), shaderport_sin(a), "
+                       "-shaderport_sin(a), shaderport_cos(a))\n"));
   EXPECT_TRUE(Contains(text, "#define H(x) fract(sin(x) * 43758.5)\n"));  // H(1.0) folds
   EXPECT_EQ(result.math_calls, 4U);
 }
