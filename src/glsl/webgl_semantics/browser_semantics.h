@@ -68,6 +68,7 @@ struct BrowserSemanticsResult {
   uint32_t math_calls = 0;            // built-in calls renamed to the CPU-browser helpers
   uint32_t divisions = 0;             // divisions by constants made multiplications
   uint32_t conversions = 0;           // uint to float conversions done in two roundings
+  uint32_t folded_clamps = 0;         // clamp(c, lo, hi) answered from c and one bound
   uint32_t counted_loops = 0;         // loops instrumented
   uint32_t skipped = 0;               // places inside macros that could not be edited safely
 };

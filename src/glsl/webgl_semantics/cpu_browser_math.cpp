@@ -61,6 +61,7 @@ class MathRewriter {
       if (const auto* call = node.As<CallExpr>()) {
         CollectCall(*call);
         CollectUintConversions(*call);
+        CollectFoldedClamp(*call);
       }
       if (const auto* binary = node.As<BinaryExpr>()) {
         if (binary->op == BinaryOp::kDiv) {
@@ -137,6 +138,59 @@ class MathRewriter {
     if (c_.folding->IsFolded(&call) || !InsideFunctionBody(c_, call)) {
       entry->second.renamable = false;
     }
+  }
+
+  // clamp(x, lo, hi) with x and one bound constant: the SPIR-V optimiser answers
+  // from those two alone (x <= lo gives lo, x >= hi gives hi), which differs from
+  // min(max(x, lo), hi) when lo > hi, as in `t += clamp(0.02, 2.0, h)`.
+  void CollectFoldedClamp(const CallExpr& call) {
+    if (call.call_kind != CallKind::kFunction || call.callee.text != "clamp" ||
+        call.arguments.size() != 3 || !c_.model.builtin_calls.contains(call.id) ||
+        !c_.model.TypeOf(call.id).IsScalar() || c_.model.TypeOf(call.id).base != BaseType::kFloat ||
+        c_.folding->IsFolded(&call) || !InsideFunctionBody(c_, call)) {
+      return;
+    }
+    const auto x = ConstantValue(call.arguments[0]);
+    if (!x) return;
+    const Expr* answer = nullptr;
+    if (const auto lo = ConstantValue(call.arguments[1]); lo && *x <= *lo) {
+      answer = call.arguments[1];
+    } else if (const auto hi = ConstantValue(call.arguments[2]); hi && *x >= *hi) {
+      answer = call.arguments[2];
+    }
+    if (answer == nullptr) return;
+    const auto whole = c_.edits.Span(call);
+    const auto kept = c_.edits.Span(*answer);
+    if (!whole || !kept || kept->file != whole->file) {
+      ++c_.result.skipped;
+      return;
+    }
+    c_.edits.Replace({whole->file, whole->begin, kept->begin}, "(");
+    c_.edits.Replace({whole->file, kept->end, whole->end}, ")");
+    ++c_.result.folded_clamps;
+  }
+
+  // The value of a float literal, possibly negated or parenthesised, or of a
+  // variable the driver sees as such a constant.
+  std::optional<double> ConstantValue(const Expr* expr, int depth = 0) const {
+    if (expr == nullptr || depth > 8) return std::nullopt;
+    if (const auto* literal = expr->As<LiteralExpr>()) {
+      if (literal->literal_kind != LiteralKind::kFloat) return std::nullopt;
+      return static_cast<double>(static_cast<float>(literal->float_value));
+    }
+    if (const auto* paren = expr->As<ParenExpr>()) return ConstantValue(paren->inner, depth + 1);
+    if (const auto* unary = expr->As<UnaryExpr>(); unary && unary->op == UnaryOp::kMinus) {
+      const auto value = ConstantValue(unary->operand, depth + 1);
+      return value ? std::optional<double>(-*value) : std::nullopt;
+    }
+    if (expr->kind == NodeKind::kIdentifierExpr && c_.folding->IsFolded(expr)) {
+      const uint32_t symbol = c_.model.SymbolAt(expr->id);
+      const uint32_t declaration = c_.model.symbols[symbol].declaration;
+      if (declaration == kNoNode) return std::nullopt;
+      const auto* declarator = c_.tree.NodeAt(declaration).As<Declarator>();
+      return declarator ? ConstantValue(declarator->initializer, depth + 1) : std::nullopt;
+    }
+    return std::nullopt;
   }
 
   // float(u), vec3(uvec3): SwiftShader converts a uint in two roundings.

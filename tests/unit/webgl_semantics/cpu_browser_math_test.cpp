@@ -141,6 +141,19 @@ TEST(CpuBrowserMath, DivisionsSpelledInMacroBodies) {
                        "#define F(k) (k / 7.0)\n"));
 }
 
+TEST(CpuBrowserMath, ClampOfAConstantIsAnsweredFromOneBound) {
+  // clamp(0.02, 2.0, h) with h < 2: the browser's optimiser gives 2.0 (x <= lo);
+  // min(max(x, lo), hi) would give h.
+  const auto result = Apply(
+      "void main() { float h = gl_FragCoord.x; const float k = 0.3; o = vec4(clamp(0.02, 2.0, "
+      "h), clamp(k, h, -1.0), clamp(h, 0.0, 1.0), clamp(0.5, 0.0, h)); }\n",
+      MathOnly());
+  EXPECT_EQ(result.folded_clamps, 2U);
+  EXPECT_TRUE(Contains(Body(result), "o = vec4((2.0), (-1.0), clamp(h, 0.0, 1.0), "
+                                     "clamp(0.5, 0.0, h)); }"))
+      << Body(result);
+}
+
 TEST(CpuBrowserMath, MacroBodiesAreRenamedOnlyWhenEveryUseMayBe) {
   const auto result = Apply(
       "#define R(a) mat2(cos(a), sin(a), -sin(a), cos(a))\n"
