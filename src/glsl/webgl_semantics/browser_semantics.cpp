@@ -97,7 +97,10 @@ BrowserSemanticsResult ApplyBrowserSemantics(std::span<const SourceFile* const> 
   MainPrologue prologue;
   // First, so that its helpers precede the smoothstep helper at the same place.
   if (options.cpu_browser_math) ComputeMathAsCpuBrowser(context, preprocessed);
-  if (options.zero_initialize) ZeroInitializeVariables(context, prologue);
+  if (options.zero_initialize) {
+    ZeroInitializeVariables(context, prologue);
+    AddDefaultReturns(context, preprocessed);
+  }
   if (options.empty_inactive_lines) EmptyInactiveLines(parts, preprocessed, edits);
   if (options.clamp_indices) ClampIndirectIndices(context);
   if (options.gpu_smoothstep_edges) RewriteSmoothstepEdges(context, preprocessed);

@@ -5,6 +5,7 @@
 //  - InitializeUninitializedLocals / DeferGlobalInitializers: locals and globals
 //    without an initializer start at zero;
 //  - initOutputVariables / initGLPosition: shader outputs start at zero;
+//  - a non-void function that runs off its end returns zero (measured);
 //  - ClampIndirectIndices: a non-constant index into a vector, matrix or sized
 //    array is clamped into range, for reads and writes;
 // and where llvmpipe computes differently from desktop GPUs:
@@ -62,6 +63,7 @@ struct BrowserSemanticsResult {
   bool render_probe = false;          // the probe output was added
   bool tracks_output_writes = false;  // ... and its .y marks colour-output writes
   uint32_t initialized = 0;           // variables given a zero initial value
+  uint32_t default_returns = 0;       // `return <zero>;` added at the end of functions
   uint32_t clamped = 0;               // indices clamped
   uint32_t smoothsteps = 0;           // smoothstep names renamed to the GPU-faithful helper
   uint32_t promoted = 0;              // mediump / lowp keywords made highp

@@ -81,6 +81,7 @@ void AddRenderProbe(SemanticsContext& context, MainPrologue& prologue);
 void RewriteSmoothstepEdges(SemanticsContext& context, const PreprocessResult& preprocessed);
 void PromotePrecision(SemanticsContext& context, const PreprocessResult& preprocessed);
 void ComputeMathAsCpuBrowser(SemanticsContext& context, const PreprocessResult& preprocessed);
+void AddDefaultReturns(SemanticsContext& context, const PreprocessResult& preprocessed);
 void EmptyInactiveLines(std::span<const SourceFile* const> parts,
                         const PreprocessResult& preprocessed, EditCollector& edits);
 

@@ -214,6 +214,22 @@ TEST(BrowserSemantics, SkippedGroupsKeepOnlyTheirConditionalDirectives) {
             "#if 0\n\n\n  #if 1\n#endif\n#else\nvoid main() { o = vec4(1); }\n#endif\n");
 }
 
+TEST(BrowserSemantics, FunctionsThatRunOffTheirEndReturnZero) {
+  BrowserSemanticsOptions options;
+  options.clamp_indices = false;
+  const auto result = Apply(
+      "struct S { float a; };\n"
+      "float f(int i) { if (i == 0) return 0.5; }\nS g() { return S(1.0); }\nvoid h() {}\n"
+      "void main() { o = vec4(f(1), g().a, 0.0, 1.0); h(); }\n",
+      options);
+  EXPECT_EQ(result.default_returns, 2U);
+  EXPECT_EQ(Body(result),
+            "struct S { float a; };\n"
+            "float f(int i) { if (i == 0) return 0.5;  return 0.0; }\n"
+            "S g() { return S(1.0);  return S(0.0); }\nvoid h() {}\n"
+            "void main() { o = vec4(0.0); o = vec4(f(1), g().a, 0.0, 1.0); h(); }\n");
+}
+
 TEST(BrowserSemantics, BrokenCodeIsLeftAsItIs) {
   SourceManager sources;
   const SourceFile& file = sources.Add("t.frag", "#version 300 es\nvoid main() { vec4 c; +; }\n");
