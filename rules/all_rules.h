@@ -12,6 +12,7 @@ namespace shaderport::rules {
 // clang-format off
 // ---- rule factories (sorted by rule id; one line per rule) ----
 const rule::Rule& PortabilityIndexRangeRule();  // portability/index-range
+const rule::Rule& PortabilityMissingReturnRule();  // portability/missing-return
 const rule::Rule& PortabilityUninitializedReadRule();  // portability/uninitialized-read
 const rule::Rule& ShadertoyChannelTypesRule();  // shadertoy/channel-types
 const rule::Rule& ShadertoyGlobalTimeRule();  // shadertoy/global-time

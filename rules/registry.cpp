@@ -12,6 +12,7 @@ std::vector<const rule::Rule*> BuildRegistry() {
       // clang-format off
       // ---- rules (sorted by rule id; one line per rule: &FooRule(),) ----
       &PortabilityIndexRangeRule(),  // portability/index-range
+      &PortabilityMissingReturnRule(),  // portability/missing-return
       &PortabilityUninitializedReadRule(),  // portability/uninitialized-read
       &ShadertoyChannelTypesRule(),  // shadertoy/channel-types
       &ShadertoyGlobalTimeRule(),  // shadertoy/global-time

@@ -149,8 +149,9 @@ TEST(CpuBrowserMath, ClampOfAConstantIsAnsweredFromOneBound) {
       "h), clamp(k, h, -1.0), clamp(h, 0.0, 1.0), clamp(0.5, 0.0, h)); }\n",
       MathOnly());
   EXPECT_EQ(result.folded_clamps, 2U);
-  EXPECT_TRUE(Contains(Body(result), "o = vec4((2.0), (-1.0), clamp(h, 0.0, 1.0), "
-                                     "clamp(0.5, 0.0, h)); }"))
+  EXPECT_TRUE(Contains(Body(result),
+                       "o = vec4((2.0), (-1.0), clamp(h, 0.0, 1.0), "
+                       "clamp(0.5, 0.0, h)); }"))
       << Body(result);
 }
 
