@@ -337,7 +337,7 @@ std::string WithOpaqueParameters(std::string_view text) {
         if (end == std::string_view::npos) end = parameters.size();
         const std::string_view parameter = parameters.substr(begin, end - begin);
         const std::string name(parameter.substr(parameter.rfind(' ') + 1));
-        out += " " + name + " = " + name + minus_zero + ";";
+        out.append(" ").append(name).append(" = ").append(name).append(minus_zero).append(";");
         begin = end + 1;
       }
       i = brace + 1;
@@ -359,7 +359,8 @@ std::string Definition(const Helper& helper) {
       std::string out = Spell(helper.text);
       for (size_t v = 0; v < kVectors.size(); ++v) {
         const std::string type(kVectors[v]);
-        out += " " + type + " shaderport_u2f(u" + type + " a) { return " + type + "(";
+        out.append(" ").append(type).append(" shaderport_u2f(u").append(type);
+        out.append(" a) { return ").append(type).append("(");
         for (size_t c = 0; c <= v + 1; ++c) {
           out += std::string(c > 0 ? ", " : "") + "shaderport_u2f(a." + kComponents[c] + ")";
         }
