@@ -411,6 +411,15 @@ std::string CpuMathHelperName(std::string_view builtin) {
   return "shaderport_" + std::string(builtin);
 }
 
+namespace {
+
+bool IsNumericType(std::string_view word) {
+  return word == "float" || word == "int" || word == "uint" || word.starts_with("vec") ||
+         word.starts_with("ivec") || word.starts_with("uvec");
+}
+
+}  // namespace
+
 std::string MacroProofHelperText(std::string_view text) {
   // Keywords and built-ins the helpers use; everything else gets the prefix.
   constexpr std::string_view kKept =
@@ -450,6 +459,13 @@ std::string MacroProofHelperText(std::string_view text) {
       out.push_back(static_cast<char>('0' + component));
       out.push_back(']');
     } else if (word.starts_with(kPrefix) || kept(word)) {
+      // A declaration's type gets `highp`: a WebGL2 fragment shader's default int
+      // precision is mediump, which Mesa computes in 16 bits.
+      const bool declares =
+          IsNumericType(word) && end < text.size() && text[end] == ' ' && end + 1 < text.size() &&
+          (std::isalpha(static_cast<unsigned char>(text[end + 1])) || text[end + 1] == '_') &&
+          !out.ends_with("highp ");
+      if (declares) out.append("highp ");
       out.append(word);
     } else {
       out.append(kPrefix).append(word);

@@ -15,7 +15,8 @@
 
 namespace shaderport::glsl::testing_support {
 
-inline constexpr std::string_view kHead = "#version 300 es\nprecision highp float;\nout vec4 o;\n";
+inline constexpr std::string_view kHead =
+    "#version 300 es\nprecision highp float;\nprecision highp int;\nout vec4 o;\n";
 
 inline BrowserSemanticsResult Apply(std::string_view body, BrowserSemanticsOptions options = {}) {
   SourceManager sources;

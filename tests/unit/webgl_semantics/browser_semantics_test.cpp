@@ -97,7 +97,8 @@ TEST(BrowserSemantics, RenderProbeCountsLoopsAndMarksOutputWrites) {
   EXPECT_TRUE(result.tracks_output_writes);
   EXPECT_EQ(result.counted_loops, 2U);
   EXPECT_EQ(result.texts.front(),
-            "#version 300 es\nprecision highp float;\nlayout(location = 0) out vec4 o;\n"
+            "#version 300 es\nprecision highp float;\nprecision highp int;\n"
+            "layout(location = 0) out vec4 o;\n"
             "layout(location = 1) out highp vec4 shaderport_probe; int shaderport_loop_count = "
             "0; void main() { shaderport_probe = vec4(0.0, 0.0, 0.0, 0.0); float s = 0.0; for "
             "(int i = 0; i < 9; i++) { shaderport_probe.x = float(++shaderport_loop_count); s += "
@@ -174,9 +175,10 @@ TEST(BrowserSemantics, SmoothstepIsRenamedInCallsAndMacroBodies) {
   EXPECT_NE(text.find("float v = shaderport_smoothstep(0.1, 0.1, gl_FragCoord.x)"),
             std::string::npos);
   EXPECT_NE(text.find("o = vec4(shaderport_smoothstep(vec3(0.2)"), std::string::npos);
-  EXPECT_NE(text.find("float shaderport_smoothstep(float shaderport_a, float shaderport_b, float "
-                      "shaderport_x) { if (shaderport_a == shaderport_b)"),
-            std::string::npos);
+  EXPECT_NE(
+      text.find("highp float shaderport_smoothstep(highp float shaderport_a, highp float "
+                "shaderport_b, highp float shaderport_x) { if (shaderport_a == shaderport_b)"),
+      std::string::npos);
 }
 
 TEST(BrowserSemantics, SmoothstepInAConstantInitializerStaysTheBuiltIn) {
@@ -230,6 +232,22 @@ TEST(BrowserSemantics, FunctionsThatRunOffTheirEndReturnZero) {
             "void main() { o = vec4(0.0); o = vec4(f(1), g().a, 0.0, 1.0); h(); }\n");
 }
 
+TEST(BrowserSemantics, FragmentShadersWithoutAnIntPrecisionGetHighp) {
+  // The default is mediump, which Mesa computes in 16 bits (browsers in 32).
+  SourceManager sources;
+  const SourceFile& file = sources.Add(
+      "t.frag",
+      "#version 300 es\nprecision highp float;\nout vec4 o;\nvoid main() { o = vec4(1); }\n");
+  const SourceFile* parts[] = {&file};
+  BrowserSemanticsOptions options;
+  options.zero_initialize = false;
+  const auto result = ApplyBrowserSemantics(parts, options);
+  EXPECT_EQ(
+      result.texts.front(),
+      "#version 300 es\nprecision highp int; precision highp float;\nout vec4 o;\nvoid main() "
+      "{ o = vec4(1); }\n");
+}
+
 TEST(BrowserSemantics, BrokenCodeIsLeftAsItIs) {
   SourceManager sources;
   const SourceFile& file = sources.Add("t.frag", "#version 300 es\nvoid main() { vec4 c; +; }\n");
@@ -247,7 +265,8 @@ TEST(BrowserSemantics, PartsAreEditedSeparately) {
   const SourceFile* parts[] = {&header, &user};
   const auto result = ApplyBrowserSemantics(parts, {});
   EXPECT_EQ(result.texts[0],
-            "#version 300 es\nprecision highp float;\nout vec4 o;\nvec3 g = vec3(0.0);\n");
+            "#version 300 es\nprecision highp int; precision highp float;\nout vec4 o;\nvec3 g = "
+            "vec3(0.0);\n");
   EXPECT_EQ(result.texts[1], "void main() { o = vec4(0.0); float x = 0.0; o = vec4(g, x); }\n");
 }
 

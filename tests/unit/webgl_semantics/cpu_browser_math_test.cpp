@@ -45,14 +45,14 @@ TEST(CpuBrowserMath, BuiltinCallsBecomeHelpersOfEveryOverload) {
                        "shaderport_exp(a) + shaderport_log2(a)); }"));
   EXPECT_TRUE(Contains(body, "uniform highp float shaderport_zero;"));
   EXPECT_TRUE(Contains(body,
-                       "vec3 shaderport_mix(vec3 shaderport_a0, vec3 shaderport_a1, "
-                       "float shaderport_a2)"));
+                       "highp vec3 shaderport_mix(highp vec3 shaderport_a0, highp vec3 "
+                       "shaderport_a1, highp float shaderport_a2)"));
   // Parameters and results pass through the opaque zero, so that Mesa cannot mix the
   // caller's arithmetic into the helper's.
   EXPECT_TRUE(Contains(body,
-                       "float shaderport_dot(vec3 shaderport_x, vec3 shaderport_y) { "
-                       "shaderport_x = shaderport_x - shaderport_zero; shaderport_y = "
-                       "shaderport_y - shaderport_zero; float shaderport_d = "
+                       "highp float shaderport_dot(highp vec3 shaderport_x, highp vec3 "
+                       "shaderport_y) { shaderport_x = shaderport_x - shaderport_zero; "
+                       "shaderport_y = shaderport_y - shaderport_zero; highp float shaderport_d = "
                        "shaderport_x[0] * shaderport_y[0]; shaderport_d = shaderport_x[1] "
                        "* shaderport_y[1] + shaderport_d; shaderport_d = shaderport_x[2] * "
                        "shaderport_y[2] + shaderport_d; return (shaderport_d) - "
