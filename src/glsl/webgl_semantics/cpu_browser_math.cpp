@@ -35,6 +35,11 @@ bool IsBoolSelect(const SemanticModel& model, const CallExpr& call) {
   return model.TypeOf(call.arguments[2]->id).base == BaseType::kBool;
 }
 
+const CallExpr* UnparenthesizedCall(const Expr* expr) {
+  while (expr != nullptr && expr->kind == NodeKind::kParenExpr) expr = expr->As<ParenExpr>()->inner;
+  return expr != nullptr ? expr->As<CallExpr>() : nullptr;
+}
+
 bool IsZeroLiteral(const Expr* expr) {
   const auto* literal = expr->As<LiteralExpr>();
   return literal != nullptr && literal->literal_kind == LiteralKind::kFloat &&
@@ -44,6 +49,7 @@ bool IsZeroLiteral(const Expr* expr) {
 struct Division {
   SourceRange op;
   SourceRange divisor;
+  bool opaque = false;  // the reciprocal passes through the opaque zero
 };
 
 struct DivisionSite {
@@ -78,9 +84,9 @@ class MathRewriter {
   }
 
   void Apply() {
-    AddDivisions();
     const Node* first_function = FirstFunctionDefinition(c_.tree);
     const auto declare_at = first_function ? c_.edits.Span(*first_function) : std::nullopt;
+    const bool zero_for_divisions = declare_at && AddDivisions();
     std::set<std::string> used;
     for (const auto& [at, name] : names_) {
       if (!name.renamable || !declare_at) {
@@ -99,22 +105,33 @@ class MathRewriter {
         ++c_.result.conversions;
       }
     }
-    if (!used.empty()) {
-      c_.edits.Insert(declare_at->file, declare_at->begin, CpuMathDefinitions(used, false));
+    if (!used.empty() || zero_for_divisions) {
+      c_.edits.Insert(declare_at->file, declare_at->begin,
+                      CpuMathDefinitions(used, zero_for_divisions));
     }
   }
 
  private:
-  void AddDivisions() {
+  // `x / c` becomes `x * (1.0 / (c))`; both compilers then merge the reciprocal into
+  // a chain of constant factors (`(v / 65534.0) * 1000.0`). Not through a vector
+  // constructor, which the browser's optimiser does not look into and Mesa, having
+  // split the vector, does: `vec2(a, v * 0.3) / 65534.0` becomes
+  // `vec2(a, v * 0.3) * ((1.0 / (65534.0)) - zero)`. Returns whether the zero is used.
+  bool AddDivisions() {
+    bool opaque = false;
     for (const auto& [at, site] : divisions_) {
       if (!site.rewritable) continue;
       const Division& division = site.division;
       const bool compound = division.op.Size() == 2;  // `/=`
       c_.edits.Replace(division.op, compound ? "*=" : "*");
-      c_.edits.Insert(division.divisor.file, division.divisor.begin, "(1.0 / (");
-      c_.edits.Insert(division.divisor.file, division.divisor.end, "))");
+      c_.edits.Insert(division.divisor.file, division.divisor.begin,
+                      division.opaque ? "((1.0 / (" : "(1.0 / (");
+      c_.edits.Insert(division.divisor.file, division.divisor.end,
+                      division.opaque ? ")) - " + std::string(kOpaqueZeroUniform) + ")" : "))");
       ++c_.result.divisions;
+      opaque = opaque || division.opaque;
     }
+    return opaque;
   }
 
   void CollectCall(const CallExpr& call) {
@@ -234,6 +251,11 @@ class MathRewriter {
       return;
     }
     entry->second.division.divisor = *span;
+    const auto* constructor = UnparenthesizedCall(dividend);
+    entry->second.division.opaque =
+        entry->second.division.opaque ||
+        (constructor != nullptr && constructor->call_kind == CallKind::kConstructor &&
+         c_.model.TypeOf(constructor->id).IsVector());
   }
 
   // Where the divisor is written: in the file next to a written `/`, or, when the `/`

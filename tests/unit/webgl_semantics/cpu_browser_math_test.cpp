@@ -102,15 +102,18 @@ TEST(CpuBrowserMath, DivisionByAConstantMultipliesByItsReciprocal) {
   const auto result = Apply(
       "const float K = 3.3;\n"
       "void main() { vec2 p = gl_FragCoord.xy / 3.3; p /= K; float q = p.x / p.y;\n"
-      "mat2 m = mat2(p, p) / mat2(1.5); o = vec4(p / vec2(1.7, K), q / 0.0, m[0].x); }\n",
+      "mat2 m = mat2(p, p) / mat2(1.5); o = vec4(vec2(p.x, q * 0.3) / vec2(1.7, K), q / 0.0, "
+      "m[0].x); }\n",
       MathOnly());
   EXPECT_EQ(result.divisions, 3U);
+  // Through a vector constructor the reciprocal passes the opaque zero: Mesa would
+  // merge it into the constants inside the constructor, the browser does not.
   EXPECT_EQ(Body(result),
             "const float K = 3.3;\n"
-            "void main() { vec2 p = gl_FragCoord.xy * (1.0 / (3.3)); p *= (1.0 / (K)); float q = "
-            "p.x / p.y;\n"
-            "mat2 m = mat2(p, p) / mat2(1.5); o = vec4(p * (1.0 / (vec2(1.7, K))), q / 0.0, "
-            "m[0].x); }\n");
+            "uniform highp float shaderport_zero; void main() { vec2 p = gl_FragCoord.xy * (1.0 / "
+            "(3.3)); p *= (1.0 / (K)); float q = p.x / p.y;\n"
+            "mat2 m = mat2(p, p) / mat2(1.5); o = vec4(vec2(p.x, q * 0.3) * ((1.0 / (vec2(1.7, "
+            "K))) - shaderport_zero), q / 0.0, m[0].x); }\n");
 }
 
 TEST(CpuBrowserMath, UintToFloatConversionsRoundTwice) {
@@ -120,7 +123,8 @@ TEST(CpuBrowserMath, UintToFloatConversionsRoundTwice) {
       MathOnly());
   EXPECT_EQ(result.conversions, 2U);  // k and 3u reach the driver as constants
   EXPECT_TRUE(Contains(Body(result),
-                       "o = vec4(vec3(shaderport_u2f(h)) * (1.0 / (4294967295.0)), "
+                       "o = vec4(vec3(shaderport_u2f(h)) * ((1.0 / (4294967295.0)) - "
+                       "shaderport_zero), "
                        "float(shaderport_u2f(h.x ^ h.y)) + float(k) + float(3u)); }"))
       << Body(result);
 }
