@@ -37,8 +37,8 @@ struct Helper {
 // `S(name)` below is "shaderport_name", `Z` the opaque zero: subtracted from a
 // constant that the caller's constants must not be folded into (Mesa turns
 // `(x * 0.5) * 1.44` into `x * 0.72`; SwiftShader multiplies twice). One line each.
-const std::array<Helper, 29>& Helpers() {
-  static const std::array<Helper, 29> helpers = {{
+const std::array<Helper, 28>& Helpers() {
+  static const std::array<Helper, 28> helpers = {{
       // Sin5: A x^5 + B x^3 + C x on [-1/4, 1/4] (argument in turns).
       {"sin5",
        Shape::kInternal,
@@ -96,11 +96,9 @@ const std::array<Helper, 29>& Helpers() {
        Shape::kUnary,
        {"exp"},
        "float S(cosh)(float x) { return (S(exp)(x) + S(exp)(-x)) * 0.5; }"},
-      {"tanh",
-       Shape::kUnary,
-       {"exp"},
-       "float S(tanh)(float x) { float a = S(exp)(x); float b = S(exp)(-x); return (a - b) / "
-       "(a + b); }"},
+      // tanh is left to the driver: SwiftShader's (e^x - e^-x) / (e^x + e^-x) is NaN
+      // past |x| = 88, and a multipass project (ftt3z8) whose page stays finite there
+      // turned black in 142 pixels with it; not yet understood.
       {"asinh",
        Shape::kUnary,
        {"log"},
