@@ -1,6 +1,8 @@
 // Which expressions a browser's compiler folds to constants before the driver sees
 // them (ANGLE folds literals, const variables, operators, constructors and
 // built-in calls on constants), and where a call sits.
+#include <functional>
+
 #include "glsl/syntax/visit.h"
 #include "glsl/webgl_semantics/semantics_context.h"
 
@@ -14,47 +16,53 @@ bool FoldableBuiltin(std::string_view name) {
   return !name.starts_with("texture") && !name.starts_with("dFd") && name != "fwidth";
 }
 
-bool IsConstant(const Expr* expr, const SemanticModel& model, int depth) {
+}  // namespace
+
+bool IsConstantTree(const Expr* expr, const SemanticModel& model,
+                    const std::function<bool(const Expr& identifier, int depth)>& identifier,
+                    int depth) {
   if (expr == nullptr || depth > kMaxConstantDepth) return false;
+  auto constant = [&](const Expr* operand) {
+    return IsConstantTree(operand, model, identifier, depth + 1);
+  };
   switch (expr->kind) {
     case NodeKind::kLiteralExpr:
       return true;
-    case NodeKind::kIdentifierExpr: {
-      const uint32_t symbol = model.SymbolAt(expr->id);
-      return symbol != kNoSymbol && model.symbols[symbol].is_const;
-    }
+    case NodeKind::kIdentifierExpr:
+      return identifier(*expr, depth + 1);
     case NodeKind::kParenExpr:
-      return IsConstant(expr->As<ParenExpr>()->inner, model, depth + 1);
+      return constant(expr->As<ParenExpr>()->inner);
     case NodeKind::kUnaryExpr: {
       const auto* unary = expr->As<UnaryExpr>();
       return unary->op != UnaryOp::kPreIncrement && unary->op != UnaryOp::kPreDecrement &&
              unary->op != UnaryOp::kPostIncrement && unary->op != UnaryOp::kPostDecrement &&
-             IsConstant(unary->operand, model, depth + 1);
+             constant(unary->operand);
     }
     case NodeKind::kBinaryExpr: {
       const auto* binary = expr->As<BinaryExpr>();
-      return binary->op != BinaryOp::kComma && IsConstant(binary->lhs, model, depth + 1) &&
-             IsConstant(binary->rhs, model, depth + 1);
+      return binary->op != BinaryOp::kComma && constant(binary->lhs) && constant(binary->rhs);
     }
     case NodeKind::kConditionalExpr: {
       const auto* conditional = expr->As<ConditionalExpr>();
-      return IsConstant(conditional->condition, model, depth + 1) &&
-             IsConstant(conditional->if_true, model, depth + 1) &&
-             IsConstant(conditional->if_false, model, depth + 1);
+      return constant(conditional->condition) && constant(conditional->if_true) &&
+             constant(conditional->if_false);
     }
-    case NodeKind::kMemberExpr: {
-      const auto* member = expr->As<MemberExpr>();
-      return IsConstant(member->object, model, depth + 1);
+    case NodeKind::kMemberExpr:
+      return constant(expr->As<MemberExpr>()->object);
+    case NodeKind::kIndexExpr: {
+      const auto* index = expr->As<IndexExpr>();
+      return constant(index->base) && constant(index->index);
     }
     case NodeKind::kCallExpr: {
       const auto* call = expr->As<CallExpr>();
       const bool builtin = call->call_kind == CallKind::kFunction &&
                            model.builtin_calls.contains(call->id) &&
                            FoldableBuiltin(call->callee.text);
-      if (call->call_kind != CallKind::kConstructor && !builtin) return false;
-      if (call->arguments.empty()) return false;
+      if ((call->call_kind != CallKind::kConstructor && !builtin) || call->arguments.empty()) {
+        return false;
+      }
       for (const Expr* argument : call->arguments) {
-        if (!IsConstant(argument, model, depth + 1)) return false;
+        if (!constant(argument)) return false;
       }
       return true;
     }
@@ -63,10 +71,11 @@ bool IsConstant(const Expr* expr, const SemanticModel& model, int depth) {
   }
 }
 
-}  // namespace
-
 bool IsConstantExpression(const Expr* expr, const SemanticModel& model) {
-  return IsConstant(expr, model, 0);
+  return IsConstantTree(expr, model, [&](const Expr& identifier, int) {
+    const uint32_t symbol = model.SymbolAt(identifier.id);
+    return symbol != kNoSymbol && model.symbols[symbol].is_const;
+  });
 }
 
 bool InsideFunctionBody(const SemanticsContext& c, const Node& node) {

@@ -5,12 +5,6 @@
 namespace shaderport::glsl {
 namespace {
 
-constexpr int kMaxDepth = 64;
-
-bool FoldableBuiltin(std::string_view name) {
-  return !name.starts_with("texture") && !name.starts_with("dFd") && name != "fwidth";
-}
-
 bool IsIncrementOrDecrement(UnaryOp op) {
   return op == UnaryOp::kPreIncrement || op == UnaryOp::kPreDecrement ||
          op == UnaryOp::kPostIncrement || op == UnaryOp::kPostDecrement;
@@ -39,51 +33,12 @@ const Node* DriverFolding::Parent(const Node& node) const {
 bool DriverFolding::IsFolded(const Expr* expr) const { return IsFolded(expr, 0); }
 
 bool DriverFolding::IsFolded(const Expr* expr, int depth) const {
-  if (expr == nullptr || depth > kMaxDepth) return false;
-  switch (expr->kind) {
-    case NodeKind::kLiteralExpr:
-      return true;
-    case NodeKind::kIdentifierExpr:
-      return SymbolIsFolded(model_.SymbolAt(expr->id), depth + 1);
-    case NodeKind::kParenExpr:
-      return IsFolded(expr->As<ParenExpr>()->inner, depth + 1);
-    case NodeKind::kUnaryExpr: {
-      const auto* unary = expr->As<UnaryExpr>();
-      return !IsIncrementOrDecrement(unary->op) && IsFolded(unary->operand, depth + 1);
-    }
-    case NodeKind::kBinaryExpr: {
-      const auto* binary = expr->As<BinaryExpr>();
-      return binary->op != BinaryOp::kComma && IsFolded(binary->lhs, depth + 1) &&
-             IsFolded(binary->rhs, depth + 1);
-    }
-    case NodeKind::kConditionalExpr: {
-      const auto* conditional = expr->As<ConditionalExpr>();
-      return IsFolded(conditional->condition, depth + 1) &&
-             IsFolded(conditional->if_true, depth + 1) &&
-             IsFolded(conditional->if_false, depth + 1);
-    }
-    case NodeKind::kMemberExpr:
-      return IsFolded(expr->As<MemberExpr>()->object, depth + 1);
-    case NodeKind::kIndexExpr: {
-      const auto* index = expr->As<IndexExpr>();
-      return IsFolded(index->base, depth + 1) && IsFolded(index->index, depth + 1);
-    }
-    case NodeKind::kCallExpr: {
-      const auto* call = expr->As<CallExpr>();
-      const bool builtin = call->call_kind == CallKind::kFunction &&
-                           model_.builtin_calls.contains(call->id) &&
-                           FoldableBuiltin(call->callee.text);
-      if ((call->call_kind != CallKind::kConstructor && !builtin) || call->arguments.empty()) {
-        return false;
-      }
-      for (const Expr* argument : call->arguments) {
-        if (!IsFolded(argument, depth + 1)) return false;
-      }
-      return true;
-    }
-    default:
-      return false;
-  }
+  return IsConstantTree(
+      expr, model_,
+      [this](const Expr& identifier, int at) {
+        return SymbolIsFolded(model_.SymbolAt(identifier.id), at);
+      },
+      depth);
 }
 
 bool DriverFolding::SymbolIsFolded(uint32_t symbol_id, int depth) const {

@@ -3,6 +3,7 @@
 // span a generated header, Common and the pass).
 #pragma once
 
+#include <functional>
 #include <map>
 #include <optional>
 #include <span>
@@ -62,6 +63,11 @@ struct SemanticsContext {
 // A constant expression as a browser's compiler folds it: literals, const variables,
 // operators, constructors and built-in calls (not texture or derivative ones) on them.
 bool IsConstantExpression(const Expr* expr, const SemanticModel& model);
+// The walk under both: literals, operators, constructors and foldable built-ins on
+// constants, with `identifier` deciding for each name (`depth` grows along the walk).
+bool IsConstantTree(const Expr* expr, const SemanticModel& model,
+                    const std::function<bool(const Expr& identifier, int depth)>& identifier,
+                    int depth = 0);
 // True when `node` is inside the body of a function (not in a global initializer).
 bool InsideFunctionBody(const SemanticsContext& context, const Node& node);
 
