@@ -37,8 +37,8 @@ struct Helper {
 // `S(name)` below is "shaderport_name", `Z` the opaque zero: subtracted from a
 // constant that the caller's constants must not be folded into (Mesa turns
 // `(x * 0.5) * 1.44` into `x * 0.72`; SwiftShader multiplies twice). One line each.
-const std::array<Helper, 28>& Helpers() {
-  static const std::array<Helper, 28> helpers = {{
+const std::array<Helper, 29>& Helpers() {
+  static const std::array<Helper, 29> helpers = {{
       // Sin5: A x^5 + B x^3 + C x on [-1/4, 1/4] (argument in turns).
       {"sin5",
        Shape::kInternal,
@@ -96,9 +96,14 @@ const std::array<Helper, 28>& Helpers() {
        Shape::kUnary,
        {"exp"},
        "float S(cosh)(float x) { return (S(exp)(x) + S(exp)(-x)) * 0.5; }"},
-      // tanh is left to the driver: SwiftShader's (e^x - e^-x) / (e^x + e^-x) is NaN
-      // past |x| = 88, and a multipass project (ftt3z8) whose page stays finite there
-      // turned black in 142 pixels with it; not yet understood.
+      // Past |x| = 88 SwiftShader's formula gives inf / inf = NaN; there render gives the
+      // +-1 it tends to (a multipass project reached such values in render but not in
+      // Chromium's page, whose picture is finite there; not understood yet).
+      {"tanh",
+       Shape::kUnary,
+       {"exp"},
+       "float S(tanh)(float x) { if (abs(x) > 88.0) return sign(x); float a = S(exp)(x); float b "
+       "= S(exp)(-x); return (a - b) / (a + b); }"},
       {"asinh",
        Shape::kUnary,
        {"log"},
@@ -422,7 +427,7 @@ std::string MacroProofHelperText(std::string_view text) {
   // Keywords and built-ins the helpers use; everything else gets the prefix.
   constexpr std::string_view kKept =
       " float vec2 vec3 vec4 int uint uvec2 uvec3 uvec4 bool bvec2 bvec3 bvec4 return if else "
-      "uniform highp true false abs roundEven floor sqrt min max clamp mix equal greaterThan "
+      "uniform highp true false abs sign roundEven floor sqrt min max clamp mix equal greaterThan "
       "intBitsToFloat floatBitsToInt uintBitsToFloat isinf ";
   auto kept = [&](std::string_view word) {
     return kKept.find(" " + std::string(word) + " ") != std::string_view::npos;
