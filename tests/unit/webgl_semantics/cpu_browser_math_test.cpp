@@ -1,7 +1,7 @@
 // Math as Chromium computes it without a GPU: which calls and divisions are
 // rewritten, which are left to the browser's constant folding, and that every
 // output compiles with its helpers (the bits themselves are checked against
-// Chromium by tools/browser/probes/math_bits.py).
+// Chromium by tests/render-parity/math and BrowserParity.MathHasChromiumsBits).
 #include <gtest/gtest.h>
 
 #include "glsl/webgl_semantics/cpu_math_library.h"
