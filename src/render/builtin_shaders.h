@@ -2,9 +2,6 @@
 // pages (driver/project) draw with the same texts so that their pictures compare.
 #pragma once
 
-#include <string>
-#include <string_view>
-
 namespace shaderport::render {
 
 // A full-screen triangle from gl_VertexID: no attributes.
@@ -15,14 +12,6 @@ inline constexpr const char* kFullScreenVertexShader =
     "1.0);\n"
     "  gl_Position = vec4(p, 0.0, 1.0);\n"
     "}\n";
-
-// The full-screen vertex shader in the fragment shader's GLSL ES version (Mesa links
-// only stages of one version; render may raise a fragment shader to 3.20 for `precise`).
-inline std::string FullScreenVertexFor(std::string_view fragment_text) {
-  std::string text = kFullScreenVertexShader;
-  if (fragment_text.starts_with("#version 320 es")) text.replace(0, 15, "#version 320 es");
-  return text;
-}
 
 // Shades by depth, so that a vertex shader's geometry is visible.
 inline constexpr const char* kFlatFragmentShader =

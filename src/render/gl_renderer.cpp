@@ -132,16 +132,14 @@ RenderOutcome RenderInThisProcess(const RenderRequest& request, BackendKind back
   }
 
   const bool user_vertex = !request.vertex_source.empty() && !request.fullscreen_vertex;
-  const std::string vertex_text = request.vertex_source.empty()
-                                      ? FullScreenVertexFor(request.fragment_source)
-                                      : request.vertex_source;
+  const std::string vertex_text =
+      request.vertex_source.empty() ? std::string(kFullScreenVertexShader) : request.vertex_source;
   const std::string fragment_text =
       request.fragment_source.empty() ? kFlatFragmentShader : request.fragment_source;
   std::vector<GLuint> buffer_programs;
   for (size_t p = 0; p < request.buffer_passes.size(); ++p) {
-    const GLuint built =
-        BuildProgram(gl, FullScreenVertexFor(request.buffer_passes[p].fragment_source),
-                     request.buffer_passes[p].fragment_source, outcome);
+    const GLuint built = BuildProgram(gl, kFullScreenVertexShader,
+                                      request.buffer_passes[p].fragment_source, outcome);
     if (built == 0) {
       outcome.failed_pass = static_cast<int>(p);
       return outcome;

@@ -95,7 +95,7 @@ BrowserSemanticsResult ApplyBrowserSemantics(std::span<const SourceFile* const> 
     context.folding = &*folding;
   }
   MainPrologue prologue;
-  // First, so that its helpers precede the smoothstep helper at the same place.
+  // Its helpers go in first where the smoothstep helper also goes; neither needs the other.
   if (options.cpu_browser_math) ComputeMathAsCpuBrowser(context, preprocessed);
   if (options.zero_initialize) {
     ZeroInitializeVariables(context, prologue);
