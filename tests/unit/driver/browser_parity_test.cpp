@@ -65,8 +65,10 @@ std::map<std::string, ExpectedFinding> ExpectedFindings() {
   return expected;
 }
 
-RenderFileResult Render(const fs::path& shader, bool webgl_semantics, SourceManager& sources) {
+RenderFileResult Render(const fs::path& shader, bool webgl_semantics, SourceManager& sources,
+                        const SourceFile* common = nullptr) {
   RenderFileOptions options;
+  options.common = common;
   options.base.width = 64;
   options.base.height = 64;
   options.render.hermetic = true;
@@ -116,6 +118,10 @@ TEST(BrowserParity, RenderMatchesChromiumOrSaysWhyNot) {
 // exactly, where llvmpipe's own math gives other bits.
 TEST(BrowserParity, MathHasChromiumsBits) {
   int probes = 0, differ_natively = 0;
+  std::ifstream common_in(kDir / "math-common.glsl");
+  std::stringstream common_text;
+  common_text << common_in.rdbuf();
+  ASSERT_FALSE(common_text.str().empty());
   for (const auto& entry : fs::directory_iterator(kDir / "math")) {
     const std::string name = entry.path().stem().string();
     SCOPED_TRACE(name);
@@ -125,8 +131,12 @@ TEST(BrowserParity, MathHasChromiumsBits) {
     ASSERT_TRUE(
         render::ReadPng((kDir / "math-chromium" / (name + ".png")).string(), reference, error))
         << error;
+    // ShaderToy probes share math-common.glsl as their Common tab.
+    const bool shadertoy = entry.path().extension() == ".glsl";
     SourceManager sources;
-    const RenderFileResult result = Render(entry.path(), true, sources);
+    const SourceFile& common = sources.Add("math-common.glsl", common_text.str());
+    const RenderFileResult result =
+        Render(entry.path(), true, sources, shadertoy ? &common : nullptr);
     ASSERT_TRUE(result.image.has_value());
     ASSERT_EQ(result.image->pixels.size(), reference.pixels.size());
     size_t different = 0;
@@ -135,7 +145,9 @@ TEST(BrowserParity, MathHasChromiumsBits) {
     }
     EXPECT_EQ(different, 0U) << "bytes that differ from Chromium's";
     SourceManager native_sources;
-    const RenderFileResult native = Render(entry.path(), false, native_sources);
+    const SourceFile& native_common = native_sources.Add("math-common.glsl", common_text.str());
+    const RenderFileResult native =
+        Render(entry.path(), false, native_sources, shadertoy ? &native_common : nullptr);
     if (native.image && native.image->pixels != reference.pixels) ++differ_natively;
   }
   EXPECT_GE(probes, 12);
