@@ -69,6 +69,7 @@ struct BrowserSemanticsResult {
   uint32_t promoted = 0;              // mediump / lowp keywords made highp
   uint32_t math_calls = 0;            // built-in calls renamed to the CPU-browser helpers
   uint32_t divisions = 0;             // divisions by constants made multiplications
+  uint32_t opaque_divisors = 0;       // other float divisors hidden from Mesa's folding
   uint32_t conversions = 0;           // uint to float conversions done in two roundings
   uint32_t folded_clamps = 0;         // clamp(c, lo, hi) answered from c and one bound
   uint32_t counted_loops = 0;         // loops instrumented

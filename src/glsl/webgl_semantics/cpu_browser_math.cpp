@@ -6,7 +6,12 @@
 // them (cpu_math_library.cpp). A float division by a constant becomes a
 // multiplication by its reciprocal, as Chromium computes it (measured: `x / 3.3`
 // gives x * float(1 / 3.3) there, even when 3.3 reaches the division through a
-// variable or a parameter); Mesa divides.
+// variable or a parameter); Mesa divides. Every other float divisor is hidden
+// behind a select on the opaque zero: Mesa's own propagation (through globals and
+// struct members set in other functions) turns `x / d` with d = 0 into NaN or a
+// garbage value where the browser gives +-inf
+// (tests/render-parity/math/divide-by-zero.glsl). Not `d - zero`: Mesa turns
+// `0.0 - zero` into `-zero`, a zero of the wrong sign.
 // Left alone, as the browser folds them with exact math: calls and divisions whose
 // operands reach the driver as constants (driver_folding.h), and anything outside
 // a function body.
@@ -46,10 +51,18 @@ bool IsZeroLiteral(const Expr* expr) {
          literal->float_value == 0.0;
 }
 
+enum class DivisionRewrite : uint8_t {
+  kNone,           // folded whole: both compilers divide exactly
+  kReciprocal,     // `x * (1.0 / (c))`
+  kOpaqueDivisor,  // `x / (zero < 0.0 ? T(1.0) : (d))`: exact, and Mesa cannot fold d
+};
+
 struct Division {
   SourceRange op;
   SourceRange divisor;
-  bool opaque = false;  // the reciprocal passes through the opaque zero
+  DivisionRewrite rewrite = DivisionRewrite::kNone;
+  std::string divisor_type;  // spelled, for kOpaqueDivisor
+  bool opaque = false;       // the reciprocal passes through the opaque zero
 };
 
 struct DivisionSite {
@@ -119,15 +132,23 @@ class MathRewriter {
   // `vec2(a, v * 0.3) * ((1.0 / (65534.0)) - zero)`. Returns whether the zero is used.
   bool AddDivisions() {
     bool opaque = false;
+    const std::string zero(kOpaqueZeroUniform);
     for (const auto& [at, site] : divisions_) {
       if (!site.rewritable) continue;
       const Division& division = site.division;
+      const SourceRange& divisor = division.divisor;
+      if (division.rewrite == DivisionRewrite::kOpaqueDivisor) {
+        c_.edits.Insert(divisor.file, divisor.begin,
+                        "(" + zero + " < 0.0 ? " + division.divisor_type + "(1.0) : (");
+        c_.edits.Insert(divisor.file, divisor.end, "))");
+        ++c_.result.opaque_divisors;
+        opaque = true;
+        continue;
+      }
       const bool compound = division.op.Size() == 2;  // `/=`
       c_.edits.Replace(division.op, compound ? "*=" : "*");
-      c_.edits.Insert(division.divisor.file, division.divisor.begin,
-                      division.opaque ? "((1.0 / (" : "(1.0 / (");
-      c_.edits.Insert(division.divisor.file, division.divisor.end,
-                      division.opaque ? ")) - " + std::string(kOpaqueZeroUniform) + ")" : "))");
+      c_.edits.Insert(divisor.file, divisor.begin, division.opaque ? "((1.0 / (" : "(1.0 / (");
+      c_.edits.Insert(divisor.file, divisor.end, division.opaque ? ")) - " + zero + ")" : "))");
       ++c_.result.divisions;
       opaque = opaque || division.opaque;
     }
@@ -232,7 +253,7 @@ class MathRewriter {
 
   void CollectDivision(const Expr& division, const Expr* dividend, const Expr* divisor) {
     if (dividend == nullptr || divisor == nullptr || !dividend->HasTokens() ||
-        !c_.model.TypeOf(division.id).IsFloating() || !InsideFunctionBody(c_, division)) {
+        !InsideFunctionBody(c_, division)) {
       return;
     }
     const uint32_t op_token = dividend->last_token + 1;
@@ -240,22 +261,39 @@ class MathRewriter {
     const PpToken& op = pp_.tokens[op_token];
     if (op.text != "/" && op.text != "/=") return;
     auto [entry, added] = divisions_.try_emplace({op.spelling.file, op.spelling.begin});
-    if (added) entry->second.division.op = op.spelling;
-    // Folded whole, the division is exact in the browser too. A matrix divisor: `*`
-    // would be the matrix product.
-    const bool wanted = !c_.folding->IsFolded(&division) && c_.folding->IsFolded(divisor) &&
-                        !IsZeroLiteral(divisor) && !c_.model.TypeOf(divisor->id).IsMatrix();
+    DivisionSite& site = entry->second;
+    if (added) site.division.op = op.spelling;
+    const DivisionRewrite rewrite = RewriteOf(division, *divisor);
     const auto span = DivisorSpan(op, *divisor);
-    if (!wanted || !span || (!added && span->begin != entry->second.division.divisor.begin)) {
-      entry->second.rewritable = false;
+    const std::string type = Spell(c_.model.TypeOf(divisor->id));
+    // Every division spelled at one place (a macro body) must take the same rewrite.
+    if (rewrite == DivisionRewrite::kNone || !span ||
+        (!added && (span->begin != site.division.divisor.begin ||
+                    rewrite != site.division.rewrite || type != site.division.divisor_type))) {
+      site.rewritable = false;
       return;
     }
-    entry->second.division.divisor = *span;
+    site.division.divisor = *span;
+    site.division.rewrite = rewrite;
+    site.division.divisor_type = type;
     const auto* constructor = UnparenthesizedCall(dividend);
-    entry->second.division.opaque =
-        entry->second.division.opaque ||
+    site.division.opaque =
+        site.division.opaque ||
         (constructor != nullptr && constructor->call_kind == CallKind::kConstructor &&
          c_.model.TypeOf(constructor->id).IsVector());
+  }
+
+  // Folded whole, the division is exact in the browser too. A matrix divisor: `*`
+  // would be the matrix product. A zero divisor: x * inf is x / 0 anyway.
+  DivisionRewrite RewriteOf(const Expr& division, const Expr& divisor) const {
+    if (!c_.model.TypeOf(division.id).IsFloating() || c_.folding->IsFolded(&division)) {
+      return DivisionRewrite::kNone;
+    }
+    if (c_.folding->IsFolded(&divisor) && !IsZeroLiteral(&divisor) &&
+        !c_.model.TypeOf(divisor.id).IsMatrix()) {
+      return DivisionRewrite::kReciprocal;
+    }
+    return DivisionRewrite::kOpaqueDivisor;
   }
 
   // Where the divisor is written: in the file next to a written `/`, or, when the `/`

@@ -101,19 +101,39 @@ TEST(CpuBrowserMath, BooleanMixIsASelectionAndStays) {
 TEST(CpuBrowserMath, DivisionByAConstantMultipliesByItsReciprocal) {
   const auto result = Apply(
       "const float K = 3.3;\n"
-      "void main() { vec2 p = gl_FragCoord.xy / 3.3; p /= K; float q = p.x / p.y;\n"
-      "mat2 m = mat2(p, p) / mat2(1.5); o = vec4(vec2(p.x, q * 0.3) / vec2(1.7, K), q / 0.0, "
-      "m[0].x); }\n",
+      "void main() { vec2 p = gl_FragCoord.xy / 3.3; p /= K; float q = p.x;\n"
+      "o = vec4(vec2(p.x, q * 0.3) / vec2(1.7, K), 1.0 / 2.0, 0.0); }\n",
       MathOnly());
   EXPECT_EQ(result.divisions, 3U);
+  EXPECT_EQ(result.opaque_divisors, 0U);  // 1.0 / 2.0 is folded whole by both compilers
   // Through a vector constructor the reciprocal passes the opaque zero: Mesa would
   // merge it into the constants inside the constructor, the browser does not.
   EXPECT_EQ(Body(result),
             "const float K = 3.3;\n"
             "uniform highp float shaderport_zero; void main() { vec2 p = gl_FragCoord.xy * (1.0 / "
-            "(3.3)); p *= (1.0 / (K)); float q = p.x / p.y;\n"
-            "mat2 m = mat2(p, p) / mat2(1.5); o = vec4(vec2(p.x, q * 0.3) * ((1.0 / (vec2(1.7, "
-            "K))) - shaderport_zero), q / 0.0, m[0].x); }\n");
+            "(3.3)); p *= (1.0 / (K)); float q = p.x;\n"
+            "o = vec4(vec2(p.x, q * 0.3) * ((1.0 / (vec2(1.7, K))) - shaderport_zero), 1.0 / 2.0, "
+            "0.0); }\n");
+}
+
+TEST(CpuBrowserMath, OtherDivisorsAreHiddenFromTheDriversFolding) {
+  // Mesa propagates g = 0.0 out of Init() and turns `x / 0.0` into NaN or garbage;
+  // the select on the opaque zero keeps every divisor exact and its sign of zero.
+  // A matrix divisor and a literal zero are hidden too; integer divisions stay.
+  const auto result = Apply(
+      "float g; void Init() { g = 0.0; }\n"
+      "void main() { Init(); float x = gl_FragCoord.x; int i = int(x) / 3;\n"
+      "mat2 m = mat2(x) / mat2(1.5); x /= g; o = vec4(x / 0.0, m[0].x, float(i), 1.0 / g); }\n",
+      MathOnly());
+  EXPECT_EQ(result.divisions, 0U);
+  EXPECT_EQ(result.opaque_divisors, 4U);
+  EXPECT_EQ(Body(result),
+            "float g; uniform highp float shaderport_zero; void Init() { g = 0.0; }\n"
+            "void main() { Init(); float x = gl_FragCoord.x; int i = int(x) / 3;\n"
+            "mat2 m = mat2(x) / (shaderport_zero < 0.0 ? mat2(1.0) : (mat2(1.5))); x /= "
+            "(shaderport_zero < 0.0 ? float(1.0) : (g)); o = vec4(x / (shaderport_zero < 0.0 ? "
+            "float(1.0) : (0.0)), m[0].x, float(i), 1.0 / (shaderport_zero < 0.0 ? float(1.0) : "
+            "(g))); }\n");
 }
 
 TEST(CpuBrowserMath, UintToFloatConversionsRoundTwice) {
