@@ -311,14 +311,18 @@ std::string Componentwise(std::string_view name, int arity, int float_tail) {
   return out;
 }
 
-// Each parameter of each function in `text` starts with `p = p - zero;` and each
-// `return x;` becomes `return (x) - zero;`: in Chromium the helper's arithmetic runs
-// inside SwiftShader, out of reach of the SPIR-V optimiser, so Mesa must not mix the
-// caller's arithmetic into it either (it turns `(v * 0.61) * 78.233` into
+// Each parameter of each function in `text` starts with `p = zero < 0.0 ? -p : p;` and
+// each `return x;` becomes `return (x) - zero;`: in Chromium the helper's arithmetic
+// runs inside SwiftShader, out of reach of the SPIR-V optimiser, so Mesa must not mix
+// the caller's arithmetic into it either (it turns `(v * 0.61) * 78.233` into
 // `v * 47.72`, `v * a + v * b` into `v * (a + b)`, `(p * x) * k` into `(p * k) * x`).
+// Parameters do not use `p - zero`: Mesa turns `0.0 - zero` into `-zero`, a zero of
+// the wrong sign (atan(0.0, x) flipped); a result is never a constant, since no
+// constant reaches the helper. Multiplying results by a select changed 10 pictures
+// of the shared corpus (measured), so they keep `- zero`.
 std::string WithOpaqueParameters(std::string_view text) {
   constexpr std::string_view kReturn = "return ";
-  const std::string minus_zero = " - " + std::string(kOpaqueZeroUniform);
+  const std::string opaque = std::string(kOpaqueZeroUniform) + " < 0.0 ? -";
   std::string out;
   int depth = 0;
   for (size_t i = 0; i < text.size();) {
@@ -326,7 +330,7 @@ std::string WithOpaqueParameters(std::string_view text) {
       const size_t end = text.find(';', i);
       out += "return (";
       out.append(text.substr(i + kReturn.size(), end - i - kReturn.size()));
-      out += ")" + minus_zero;
+      out += ") - " + std::string(kOpaqueZeroUniform);
       i = end;
       continue;
     }
@@ -340,7 +344,8 @@ std::string WithOpaqueParameters(std::string_view text) {
         if (end == std::string_view::npos) end = parameters.size();
         const std::string_view parameter = parameters.substr(begin, end - begin);
         const std::string name(parameter.substr(parameter.rfind(' ') + 1));
-        out.append(" ").append(name).append(" = ").append(name).append(minus_zero).append(";");
+        out.append(" ").append(name).append(" = ").append(opaque).append(name).append(" : ");
+        out.append(name).append(";");
         begin = end + 1;
       }
       i = brace + 1;

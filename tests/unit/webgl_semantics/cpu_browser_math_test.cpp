@@ -47,16 +47,16 @@ TEST(CpuBrowserMath, BuiltinCallsBecomeHelpersOfEveryOverload) {
   EXPECT_TRUE(Contains(body,
                        "highp vec3 shaderport_mix(highp vec3 shaderport_a0, highp vec3 "
                        "shaderport_a1, highp float shaderport_a2)"));
-  // Parameters and results pass through the opaque zero, so that Mesa cannot mix the
-  // caller's arithmetic into the helper's.
+  // Parameters and results pass a select on the opaque zero, so that Mesa cannot mix
+  // the caller's arithmetic into the helper's (and a constant 0.0 keeps its sign).
   EXPECT_TRUE(Contains(body,
                        "highp float shaderport_dot(highp vec3 shaderport_x, highp vec3 "
-                       "shaderport_y) { shaderport_x = shaderport_x - shaderport_zero; "
-                       "shaderport_y = shaderport_y - shaderport_zero; highp float shaderport_d = "
-                       "shaderport_x[0] * shaderport_y[0]; shaderport_d = shaderport_x[1] "
-                       "* shaderport_y[1] + shaderport_d; shaderport_d = shaderport_x[2] * "
-                       "shaderport_y[2] + shaderport_d; return (shaderport_d) - "
-                       "shaderport_zero; }"))
+                       "shaderport_y) { shaderport_x = shaderport_zero < 0.0 ? -shaderport_x : "
+                       "shaderport_x; shaderport_y = shaderport_zero < 0.0 ? -shaderport_y : "
+                       "shaderport_y; highp float shaderport_d = shaderport_x[0] * "
+                       "shaderport_y[0]; shaderport_d = shaderport_x[1] * shaderport_y[1] + "
+                       "shaderport_d; shaderport_d = shaderport_x[2] * shaderport_y[2] + "
+                       "shaderport_d; return (shaderport_d) - shaderport_zero; }"))
       << body;
 }
 
