@@ -37,8 +37,8 @@ struct Helper {
 // `S(name)` below is "shaderport_name", `Z` the opaque zero: subtracted from a
 // constant that the caller's constants must not be folded into (Mesa turns
 // `(x * 0.5) * 1.44` into `x * 0.72`; SwiftShader multiplies twice). One line each.
-const std::array<Helper, 29>& Helpers() {
-  static const std::array<Helper, 29> helpers = {{
+const std::array<Helper, 31>& Helpers() {
+  static const std::array<Helper, 31> helpers = {{
       // Sin5: A x^5 + B x^3 + C x on [-1/4, 1/4] (argument in turns).
       {"sin5",
        Shape::kInternal,
@@ -159,6 +159,21 @@ const std::array<Helper, 29>& Helpers() {
        ": x1; float y2 = o ? x1 : y1; bool inf_y = isinf(y2); float t = S(atan01)(y2 / x2); "
        "theta += (x2 != 0.0 && !inf_y) ? (o ? 1.5707964 - t : t) : (inf_y ? 0.7853982 : 0.0); "
        "return (s && q && o && !inf_y) ? -t : theta; }"},
+      // SwiftShader's dFdx is coarse, the top row's difference for the whole 2x2 quad
+      // (v1 - v0 in every lane); llvmpipe's is per row. In the odd row, v - dFdy(v) is
+      // the even row's value, exactly when the difference is. Its dFdy is already
+      // the coarse one (measured). fwidth = |dFdx| + |dFdy| of those, and -0.0 where
+      // both are 0 (measured in Chromium: 1.0 / fwidth(c) is -inf there).
+      {"dFdx",
+       Shape::kUnary,
+       {},
+       "float S(dFdx)(float v) { return dFdx(mod(floor(gl_FragCoord.y), 2.0) > 0.5 ? v - dFdy(v) "
+       ": v); }"},
+      {"fwidth",
+       Shape::kUnary,
+       {"dFdx"},
+       "float S(fwidth)(float v) { float f = abs(S(dFdx)(v)) + abs(dFdy(v)); return f == 0.0 ? "
+       "-f : f; }"},
       {"mix",
        Shape::kMix,
        {},
@@ -433,7 +448,7 @@ std::string MacroProofHelperText(std::string_view text) {
   constexpr std::string_view kKept =
       " float vec2 vec3 vec4 int uint uvec2 uvec3 uvec4 bool bvec2 bvec3 bvec4 return if else "
       "uniform highp true false abs sign roundEven floor sqrt min max clamp mix equal greaterThan "
-      "intBitsToFloat floatBitsToInt uintBitsToFloat isinf ";
+      "intBitsToFloat floatBitsToInt uintBitsToFloat isinf mod dFdx dFdy gl_FragCoord ";
   auto kept = [&](std::string_view word) {
     return kKept.find(" " + std::string(word) + " ") != std::string_view::npos;
   };

@@ -223,6 +223,25 @@ TEST(CpuBrowserMath, OffByDefaultAndForGlslEs100) {
   EXPECT_EQ(es100.texts.front(), file.Text());
 }
 
+TEST(CpuBrowserMath, DerivativesAreCoarseAsInChromium) {
+  // dFdx and fwidth take the quad's first row (the odd row reads it through dFdy, which
+  // llvmpipe already computes from the first column); dFdy itself stays.
+  const auto result = Apply(
+      "void main() { float v = gl_FragCoord.x * gl_FragCoord.y;\n"
+      "o = vec4(dFdx(v), dFdy(v), fwidth(vec2(v)).x, 1.0); }\n",
+      MathOnly());
+  EXPECT_EQ(result.math_calls, 2U);
+  const std::string body = Body(result);
+  EXPECT_TRUE(Contains(body,
+                       "o = vec4(shaderport_dFdx(v), dFdy(v), shaderport_fwidth(vec2(v)).x, "
+                       "1.0); }"))
+      << body;
+  EXPECT_TRUE(Contains(body,
+                       "return (dFdx(mod(floor(gl_FragCoord[1]), 2.0) > 0.5 ? shaderport_v - "
+                       "dFdy(shaderport_v) : shaderport_v)) - shaderport_zero; }"))
+      << body;
+}
+
 TEST(CpuBrowserMath, LibraryDefinesWhatItsHelpersCall) {
   const std::string text = CpuMathDefinitions({"tan", "pow", "normalize"}, false);
   for (const std::string_view helper :
