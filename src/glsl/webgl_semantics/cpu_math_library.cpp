@@ -17,6 +17,7 @@ namespace {
 enum class Shape : uint8_t {
   kUnary,      // genType f(genType): componentwise
   kBinary,     // genType f(genType, genType): componentwise
+  kMinMax,     // genType f(genType, genType) and (genType, float): componentwise
   kMix,        // genType f(genType, genType, genType) and (genType, genType, float)
   kReduction,  // float f(genType[, genType]): written for each size below
   kGeometric,  // genType f(genType, ...): written for each size below
@@ -37,8 +38,8 @@ struct Helper {
 // `S(name)` below is "shaderport_name", `Z` the opaque zero: subtracted from a
 // constant that the caller's constants must not be folded into (Mesa turns
 // `(x * 0.5) * 1.44` into `x * 0.72`; SwiftShader multiplies twice). One line each.
-const std::array<Helper, 31>& Helpers() {
-  static const std::array<Helper, 31> helpers = {{
+const std::array<Helper, 33>& Helpers() {
+  static const std::array<Helper, 33> helpers = {{
       // Sin5: A x^5 + B x^3 + C x on [-1/4, 1/4] (argument in turns).
       {"sin5",
        Shape::kInternal,
@@ -174,6 +175,17 @@ const std::array<Helper, 31>& Helpers() {
        {"dFdx"},
        "float S(fwidth)(float v) { float f = abs(S(dFdx)(v)) + abs(dFdy(v)); return f == 0.0 ? "
        "-f : f; }"},
+      // SwiftShader's min and max are x86's minps/maxps: the second operand when either
+      // is NaN (min(1.0, NaN) is NaN, llvmpipe gives 1.0). The comparison is xored
+      // with an opaque false: Mesa turns `a < b ? a : b` back into its own fmin.
+      {"min",
+       Shape::kMinMax,
+       {},
+       "float S(min)(float a, float b) { return (a < b) != (Z < 0.0) ? a : b; }"},
+      {"max",
+       Shape::kMinMax,
+       {},
+       "float S(max)(float a, float b) { return (a > b) != (Z < 0.0) ? a : b; }"},
       {"mix",
        Shape::kMix,
        {},
@@ -399,6 +411,8 @@ std::string Definition(const Helper& helper) {
     }
     case Shape::kBinary:
       return WithOpaqueParameters(Spell(helper.text)) + Componentwise(helper.builtin, 2, 0);
+    case Shape::kMinMax:
+      return WithOpaqueParameters(Spell(helper.text)) + Componentwise(helper.builtin, 2, 1);
     case Shape::kMix:
       return WithOpaqueParameters(Spell(helper.text)) + Componentwise(helper.builtin, 3, 1);
     case Shape::kReduction:

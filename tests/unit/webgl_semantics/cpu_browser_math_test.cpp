@@ -242,6 +242,28 @@ TEST(CpuBrowserMath, DerivativesAreCoarseAsInChromium) {
       << body;
 }
 
+TEST(CpuBrowserMath, MinAndMaxGiveTheSecondOperandForNaN) {
+  // SwiftShader's minps/maxps order; integer min stays the built-in.
+  const auto result = Apply(
+      "void main() { float v = gl_FragCoord.x; int i = min(int(v), 3);\n"
+      "o = vec4(min(v, 1.0), max(vec2(v), 0.5).x, float(i), 1.0); }\n",
+      MathOnly());
+  EXPECT_EQ(result.math_calls, 2U);
+  const std::string body = Body(result);
+  EXPECT_TRUE(Contains(body,
+                       "int i = min(int(v), 3);\no = vec4(shaderport_min(v, 1.0), "
+                       "shaderport_max(vec2(v), 0.5).x, float(i), 1.0); }"))
+      << body;
+  EXPECT_TRUE(Contains(body,
+                       "return ((shaderport_a < shaderport_b) != (shaderport_zero < 0.0) ? "
+                       "shaderport_a : shaderport_b) - shaderport_zero; }"))
+      << body;
+  EXPECT_TRUE(Contains(body,
+                       "highp vec2 shaderport_max(highp vec2 shaderport_a0, highp float "
+                       "shaderport_a1)"))
+      << body;
+}
+
 TEST(CpuBrowserMath, LibraryDefinesWhatItsHelpersCall) {
   const std::string text = CpuMathDefinitions({"tan", "pow", "normalize"}, false);
   for (const std::string_view helper :
