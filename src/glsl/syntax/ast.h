@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -478,6 +479,13 @@ struct TranslationUnit : Node {
 
 // ------------------------------------------------------------------- the tree
 
+/// One node of a tree's preorder (SyntaxTree::Preorder).
+struct PreorderEntry {
+  const Node* node = nullptr;
+  uint32_t depth = 0;  // the root's is 0
+  uint32_t end = 0;    // index in the preorder just past the node's subtree
+};
+
 /// Owns every node. Nodes never move; pointers stay valid for the tree's life.
 class SyntaxTree {
  public:
@@ -494,6 +502,21 @@ class SyntaxTree {
   const Node& NodeAt(uint32_t id) const { return *nodes_[id]; }
   Node& NodeAt(uint32_t id) { return *nodes_[id]; }
 
+  /// Every node reachable from the root, in preorder with children in source order:
+  /// built once by IndexPreorder() when the tree is complete (the parser does it) so
+  /// that the many walks over one tree (every WebGL rule makes one) are a loop over
+  /// an array instead of a traversal each. Empty before IndexPreorder().
+  std::span<const PreorderEntry> Preorder() const { return preorder_; }
+  /// The index of node `id` in Preorder(), or kNotInPreorder (not reachable from
+  /// the root, or no index yet).
+  static constexpr uint32_t kNotInPreorder = UINT32_MAX;
+  uint32_t PreorderIndexOf(uint32_t id) const {
+    return id < preorder_index_.size() ? preorder_index_[id] : kNotInPreorder;
+  }
+  /// Builds Preorder() (iteratively: trees may be deeper than the call stack allows).
+  /// Call again after changing the tree's shape.
+  void IndexPreorder();
+
   /// Creates a node with the next id.
   template <class T>
   T* Make() {
@@ -507,6 +530,8 @@ class SyntaxTree {
  private:
   std::vector<std::unique_ptr<Node>> nodes_;
   TranslationUnit* root_ = nullptr;
+  std::vector<PreorderEntry> preorder_;
+  std::vector<uint32_t> preorder_index_;  // by node id
 };
 
 }  // namespace shaderport::glsl

@@ -295,7 +295,7 @@ void Parser::PopScope() {
 void Parser::PlaceEmptyNodes() {
   // A missing operand sits at the next token, which may lie past its parent
   // (`float a = ;`): move each empty node into its parent so ranges nest.
-  VisitPreorder(*tree_.Root(), [&](const Node& parent, uint32_t) {
+  VisitPreorder(tree_, [&](const Node& parent, uint32_t) {
     ForEachChild(parent, [&](const Node& child) {
       if (child.HasTokens() || child.range.file != parent.range.file) return;
       Node& node = tree_.NodeAt(child.id);
@@ -317,6 +317,7 @@ ParseResult Parser::Run() {
   }
   Finish(unit);
   tree_.SetRoot(unit);
+  tree_.IndexPreorder();
   PlaceEmptyNodes();
   return ParseResult{std::move(tree_), std::move(diagnostics_)};
 }
