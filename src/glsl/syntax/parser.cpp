@@ -46,46 +46,6 @@ Parser::Parser(const PreprocessResult& pp, const ParseOptions& options)
 
 // ------------------------------------------------------------------ tokens
 
-uint32_t Parser::Index(uint32_t ahead) const { return std::min(pos_ + ahead, end_index_); }
-
-const PpToken& Parser::Tok(uint32_t ahead) const {
-  static const PpToken kEnd{};
-  uint32_t i = Index(ahead);
-  return i < pp_.tokens.size() ? pp_.tokens[i] : kEnd;
-}
-
-std::string_view Parser::Text(uint32_t ahead) const { return texts_[Index(ahead)]; }
-const WordInfo& Parser::Word(uint32_t ahead) const { return words_[Index(ahead)]; }
-
-bool Parser::AtPunct(Punct p, uint32_t ahead) const {
-  const PpToken& t = Tok(ahead);
-  return t.kind == TokenKind::kPunctuator && t.punct == p;
-}
-
-bool Parser::AtKeyword(std::string_view word, uint32_t ahead) const {
-  return Tok(ahead).kind == TokenKind::kIdentifier && Word(ahead).status == WordStatus::kKeyword &&
-         Text(ahead) == word;
-}
-
-bool Parser::AtRole(WordRole role, uint32_t ahead) const {
-  return Tok(ahead).kind == TokenKind::kIdentifier && Word(ahead).role == role &&
-         Word(ahead).status == WordStatus::kKeyword;
-}
-
-bool Parser::AtName(uint32_t ahead) const {
-  return Tok(ahead).kind == TokenKind::kIdentifier && Word(ahead).status != WordStatus::kKeyword;
-}
-
-void Parser::Advance() {
-  if (pos_ < end_index_) ++pos_;
-}
-
-bool Parser::Accept(Punct p) {
-  if (!AtPunct(p)) return false;
-  Advance();
-  return true;
-}
-
 bool Parser::Expect(Punct p, std::string_view context) {
   if (Accept(p)) return true;
   std::string message = "expected '" + std::string(PunctSpelling(p)) + "'";
