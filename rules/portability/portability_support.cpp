@@ -109,7 +109,7 @@ std::optional<std::vector<int>> SwizzleComponents(std::string_view name) {
 
 void ForEachWrittenExpr(const rule::RuleContext& context, const glsl::Node& start,
                         const std::function<void(const glsl::Expr& target)>& fn) {
-  glsl::VisitPreorder(start, [&](const glsl::Node& node, uint32_t) {
+  glsl::VisitPreorder(context.Tree(), start, [&](const glsl::Node& node, uint32_t) {
     if (const auto* assignment = node.As<glsl::AssignmentExpr>()) {
       if (assignment->lhs != nullptr) fn(*assignment->lhs);
     } else if (const auto* unary = node.As<glsl::UnaryExpr>()) {

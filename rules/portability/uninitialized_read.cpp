@@ -190,7 +190,7 @@ class FunctionAnalysis {
       if (!parameter->qualifiers.Has(glsl::QualifierKind::kOut) && !(probe_ && inout)) continue;
       AddSlot(model_.SymbolAt(parameter->id), nullptr, parameter);
     }
-    glsl::VisitPreorder(*function_.body, [&](const glsl::Node& node, uint32_t) {
+    glsl::VisitPreorder(context_.Tree(), *function_.body, [&](const glsl::Node& node, uint32_t) {
       const auto* declaration = node.As<glsl::VariableDeclaration>();
       if (declaration == nullptr) return true;
       if (!declaration->qualifiers.Has(glsl::QualifierKind::kConst)) {

@@ -24,7 +24,7 @@ const glsl::Symbol* SymbolOf(const rule::RuleContext& context, const glsl::Node&
 Constness ClassifyInitializer(const rule::RuleContext& context, const glsl::Expr& e) {
   Constness result = Constness::kConstant;
   const glsl::SemanticModel& model = context.Model();
-  glsl::VisitPreorder(e, [&](const glsl::Node& node, uint32_t) {
+  glsl::VisitPreorder(context.Tree(), e, [&](const glsl::Node& node, uint32_t) {
     if (result == Constness::kUnknown) return false;
     switch (node.kind) {
       case glsl::NodeKind::kErrorExpr:
@@ -76,7 +76,7 @@ Constness ClassifyInitializer(const rule::RuleContext& context, const glsl::Expr
 std::string WhyNotMovable(const rule::RuleContext& context, const glsl::Expr& e) {
   std::string why;
   const glsl::SemanticModel& model = context.Model();
-  glsl::VisitPreorder(e, [&](const glsl::Node& node, uint32_t) {
+  glsl::VisitPreorder(context.Tree(), e, [&](const glsl::Node& node, uint32_t) {
     if (!why.empty()) return false;
     if (node.kind == glsl::NodeKind::kIdentifierExpr) {
       const glsl::Symbol* symbol = SymbolOf(context, node);
@@ -102,7 +102,7 @@ bool HasTypingFindings(const rule::RuleContext& context, const glsl::Expr& e) {
   for (const glsl::TypeMismatch& m : context.Model().mismatches) sites.insert(m.node);
   const glsl::SemanticModel& model = context.Model();
   bool found = false;
-  glsl::VisitPreorder(e, [&](const glsl::Node& node, uint32_t) {
+  glsl::VisitPreorder(context.Tree(), e, [&](const glsl::Node& node, uint32_t) {
     if (sites.contains(node.id)) found = true;
     if (const auto* b = node.As<glsl::BinaryExpr>();
         b != nullptr && b->op == glsl::BinaryOp::kMod) {

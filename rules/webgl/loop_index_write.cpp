@@ -63,7 +63,7 @@ class LoopIndexWriteRule final : public rule::Rule {
   }
 
   static void CheckBody(rule::RuleContext& context, const glsl::Node& body, uint32_t index) {
-    glsl::VisitPreorder(body, [&](const glsl::Node& node, uint32_t) {
+    glsl::VisitPreorder(context.Tree(), body, [&](const glsl::Node& node, uint32_t) {
       if (const auto* assignment = node.As<glsl::AssignmentExpr>()) {
         if (IsIndex(context, assignment->lhs, index)) Report(context, *assignment->lhs, index);
       } else if (const auto* unary = node.As<glsl::UnaryExpr>()) {

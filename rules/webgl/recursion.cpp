@@ -34,7 +34,7 @@ CallGraph BuildCallGraph(const rule::RuleContext& context) {
     const uint32_t caller = model.SymbolAt(function->id);
     if (caller == glsl::kNoSymbol) continue;
     std::vector<Call>& calls = graph[caller];
-    glsl::VisitPreorder(*function->body, [&](const glsl::Node& node, uint32_t) {
+    glsl::VisitPreorder(context.Tree(), *function->body, [&](const glsl::Node& node, uint32_t) {
       const auto* call = node.As<glsl::CallExpr>();
       if (call == nullptr || call->call_kind != glsl::CallKind::kFunction) return true;
       const uint32_t callee = model.SymbolAt(call->id);

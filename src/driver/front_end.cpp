@@ -1,5 +1,7 @@
 #include "driver/front_end.h"
 
+#include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -19,6 +21,22 @@ glsl::ParseResult ParseUnit(const std::vector<const SourceFile*>& files, int for
   glsl::ParseOptions parse_options;
   parse_options.version = forced_version != 0 ? forced_version : preprocessed.version.number;
   return glsl::Parse(preprocessed, parse_options);
+}
+
+// The header is parsed once per run and channel types, not once per file: it was
+// about a tenth of the front end's work on a short pass. Only its declarations are
+// read (as predeclared symbols, without nodes or ranges), so sharing one tree and
+// one generated file between files changes nothing they report.
+std::shared_ptr<const glsl::ParseResult> ShaderToyHeaderTree(const validate::ChannelTypes& channels,
+                                                             SourceManager& sources) {
+  std::string text = validate::ShaderToyHeader(validate::PassType::kImage, channels);
+  std::string key = "front-end:shadertoy-header:" + text;
+  return std::static_pointer_cast<const glsl::ParseResult>(sources.Memo(key, [&] {
+    const SourceFile& header = sources.Add("<shadertoy-header>", std::move(text), true);
+    glsl::PreprocessResult header_tokens;
+    return std::make_shared<const glsl::ParseResult>(
+        ParseUnit({&header}, glsl::kEssl300, true, header_tokens));
+  }));
 }
 
 void Append(DiagnosticList& to, const DiagnosticList& from) {
@@ -59,11 +77,7 @@ FrontEndResult RunFrontEnd(const SourceFile& file, glsl::LexedFile lexed, const 
   analyze.stage =
       kind.stage == Stage::kVertex ? glsl::ShaderStage::kVertex : glsl::ShaderStage::kFragment;
   if (shadertoy) {
-    const SourceFile& header =
-        sources.Add("<shadertoy-header>",
-                    validate::ShaderToyHeader(validate::PassType::kImage, options.channels), true);
-    glsl::PreprocessResult header_tokens;
-    result.header = ParseUnit({&header}, glsl::kEssl300, true, header_tokens);
+    result.header = ShaderToyHeaderTree(options.channels, sources);
     analyze.header = &result.header->tree;
   }
   result.model = glsl::Analyze(result.parsed.tree, analyze);

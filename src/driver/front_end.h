@@ -20,7 +20,9 @@ struct FrontEndResult {
   glsl::LexedFile lexed;                // the file alone (comments, suppressions)
   glsl::PreprocessResult preprocessed;  // Common (if any) then the file
   glsl::ParseResult parsed;
-  std::optional<glsl::ParseResult> header;   // ShaderToy's generated uniforms, parsed
+  // ShaderToy's generated uniforms, parsed; shared by every file of the run with
+  // the same channels (see SourceManager::Memo).
+  std::shared_ptr<const glsl::ParseResult> header;
   std::optional<glsl::SemanticModel> model;  // when analysis was asked for
   DiagnosticList diagnostics;                // lexer (of Common too), preprocessor, parser
 

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <deque>
+#include <functional>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -38,9 +40,22 @@ class SourceManager {
     return files_.size();
   }
 
+  // Immutable data derived from files of this manager, made once per key and then
+  // shared for the manager's life (the parsed ShaderToy header is the same for every
+  // pass with the same channels). `make` runs under a lock of its own and may Add().
+  std::shared_ptr<const void> Memo(const std::string& key,
+                                   const std::function<std::shared_ptr<const void>()>& make) {
+    const std::lock_guard lock(memo_mutex_);
+    std::shared_ptr<const void>& slot = memo_[key];
+    if (!slot) slot = make();
+    return slot;
+  }
+
  private:
   mutable std::mutex mutex_;
   std::deque<SourceFile> files_;
+  std::mutex memo_mutex_;
+  std::map<std::string, std::shared_ptr<const void>> memo_;
 };
 
 }  // namespace shaderport

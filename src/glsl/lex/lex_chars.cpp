@@ -5,29 +5,6 @@
 
 namespace shaderport::glsl {
 
-size_t NewlineLength(std::string_view text, size_t p) {
-  if (p >= text.size()) return 0;
-  if (text[p] == '\n') return 1;
-  if (text[p] != '\r') return 0;
-  return p + 1 < text.size() && text[p + 1] == '\n' ? 2 : 1;
-}
-
-size_t ContinuationLength(std::string_view text, size_t p) {
-  if (p >= text.size() || text[p] != '\\') return 0;
-  const size_t nl = NewlineLength(text, p + 1);
-  return nl ? nl + 1 : 0;
-}
-
-size_t SkipContinuations(std::string_view text, size_t p) {
-  while (size_t len = ContinuationLength(text, p)) p += len;
-  return p;
-}
-
-char PeekLogical(std::string_view text, size_t p, int k) {
-  for (int i = 0; i < k && p < text.size(); ++i) p = SkipContinuations(text, p + 1);
-  return p < text.size() ? text[p] : '\0';
-}
-
 size_t LineCommentEnd(std::string_view text, size_t p) {
   while (p < text.size()) {
     if (size_t len = ContinuationLength(text, p)) {

@@ -21,14 +21,34 @@ inline bool IsIdentifierStart(char c) {
 }
 inline bool IsIdentifierChar(char c) { return IsIdentifierStart(c) || IsDigit(c); }
 
+// The four below run for nearly every byte of a file: inline.
+
 // Length of the newline ("\n", "\r\n" or "\r") at `p`, or 0.
-size_t NewlineLength(std::string_view text, size_t p);
+inline size_t NewlineLength(std::string_view text, size_t p) {
+  if (p >= text.size()) return 0;
+  if (text[p] == '\n') return 1;
+  if (text[p] != '\r') return 0;
+  return p + 1 < text.size() && text[p + 1] == '\n' ? 2 : 1;
+}
+
 // Length of the backslash-newline at `p`, or 0.
-size_t ContinuationLength(std::string_view text, size_t p);
+inline size_t ContinuationLength(std::string_view text, size_t p) {
+  if (p >= text.size() || text[p] != '\\') return 0;
+  const size_t nl = NewlineLength(text, p + 1);
+  return nl ? nl + 1 : 0;
+}
+
 // `p` moved past any line continuations.
-size_t SkipContinuations(std::string_view text, size_t p);
+inline size_t SkipContinuations(std::string_view text, size_t p) {
+  while (size_t len = ContinuationLength(text, p)) p += len;
+  return p;
+}
+
 // The logical character `k` steps after the one at `p`; '\0' past the end.
-char PeekLogical(std::string_view text, size_t p, int k);
+inline char PeekLogical(std::string_view text, size_t p, int k) {
+  for (int i = 0; i < k && p < text.size(); ++i) p = SkipContinuations(text, p + 1);
+  return p < text.size() ? text[p] : '\0';
+}
 // End of the "//" comment at `p`: the next newline not escaped by a backslash.
 size_t LineCommentEnd(std::string_view text, size_t p);
 // One past the "*/" closing the comment at `p`, or kNoEnd when unterminated.

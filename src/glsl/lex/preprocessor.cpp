@@ -83,8 +83,18 @@ void PpDriver::FlushText() {
   input.reserve(text_.size());
   for (const Token* t : text_) input.push_back({ToPpToken(*file_, *t, state_), false});
   text_.clear();
-  std::vector<ExpToken> expanded = ExpandMacros(state_, std::move(input), false);
   auto& out = state_.result.tokens;
+  // The expander passes every token before the first use of a defined macro through
+  // unchanged: those go straight to the output, and only the rest is expanded (most
+  // runs of code use no macro, or only late).
+  const auto first_use = std::find_if(input.begin(), input.end(), [&](const ExpToken& t) {
+    return t.token.kind == TokenKind::kIdentifier && state_.Find(t.token.text) != nullptr;
+  });
+  out.reserve(out.size() + input.size());
+  for (auto it = input.begin(); it != first_use; ++it) out.push_back(it->token);
+  if (first_use == input.end()) return;
+  input.erase(input.begin(), first_use);
+  std::vector<ExpToken> expanded = ExpandMacros(state_, std::move(input), false);
   out.reserve(out.size() + expanded.size());
   for (ExpToken& t : expanded) out.push_back(t.token);
 }

@@ -2,8 +2,10 @@
 // statements are in analyzer_statements.cpp, expressions in analyzer_expressions.cpp.
 #pragma once
 
+#include <deque>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "glsl/sema/semantic_model.h"
@@ -61,6 +63,15 @@ class Analyzer {
   std::vector<std::unordered_map<std::string, std::vector<uint32_t>>> scope_names_;
   std::unordered_map<std::string, uint32_t> builtin_symbols_;
   Type current_return_ = Type::Unknown();
+  // Work lists of TypeExpression, kept between calls (it runs for every expression
+  // statement and initializer, and two fresh vectors a call were a heap allocation
+  // each); one per nesting level, as typing a constructor's array size re-enters it.
+  struct TypingScratch {
+    std::vector<std::pair<const Expr*, bool>> stack;
+    std::vector<const Expr*> operands;
+  };
+  std::deque<TypingScratch> typing_scratch_;
+  size_t typing_depth_ = 0;
 };
 
 }  // namespace shaderport::glsl

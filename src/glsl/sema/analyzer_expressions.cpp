@@ -67,9 +67,20 @@ const Type& Analyzer::TypeAt(const Expr* expr) const {
 
 Type Analyzer::TypeExpression(const Expr* root) {
   if (root == nullptr) return Type::Unknown();
+  if (typing_depth_ == typing_scratch_.size()) typing_scratch_.emplace_back();
+  TypingScratch& scratch = typing_scratch_[typing_depth_];
+  struct DepthGuard {
+    size_t& depth;
+    explicit DepthGuard(size_t& d) : depth(d) { ++depth; }
+    ~DepthGuard() { --depth; }
+    DepthGuard(const DepthGuard&) = delete;
+    DepthGuard& operator=(const DepthGuard&) = delete;
+  } guard(typing_depth_);
   // Post-order with an explicit stack: children are typed before their parent.
-  std::vector<std::pair<const Expr*, bool>> stack = {{root, false}};
-  std::vector<const Expr*> operands;
+  auto& stack = scratch.stack;
+  auto& operands = scratch.operands;
+  stack.clear();
+  stack.push_back({root, false});
   while (!stack.empty()) {
     auto [expr, expanded] = stack.back();
     stack.pop_back();

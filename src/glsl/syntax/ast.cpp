@@ -1,6 +1,32 @@
 #include "glsl/syntax/ast.h"
 
+#include <utility>
+
 namespace shaderport::glsl {
+
+SyntaxTree& SyntaxTree::operator=(SyntaxTree&& other) noexcept {
+  if (this == &other) return *this;
+  DestroyNodes();
+  arena_ = std::move(other.arena_);
+  nodes_ = std::exchange(other.nodes_, {});
+  destructors_ = std::exchange(other.destructors_, {});
+  root_ = std::exchange(other.root_, nullptr);
+  preorder_ = std::exchange(other.preorder_, {});
+  preorder_index_ = std::exchange(other.preorder_index_, {});
+  return *this;
+}
+
+void SyntaxTree::DestroyNodes() {
+  // A node's destructor frees only what the node itself holds (names, vectors of
+  // child pointers), never another node, so the order does not matter.
+  for (const Destructor& destructor : destructors_) destructor.destroy(destructor.node);
+  destructors_.clear();
+  nodes_.clear();
+  root_ = nullptr;
+  preorder_.clear();
+  preorder_index_.clear();
+  arena_.reset();  // releases every block at once
+}
 
 const char* NodeKindName(NodeKind kind) {
   switch (kind) {

@@ -4,7 +4,11 @@
 
 #include <cstdint>
 #include <memory>
+#include <memory_resource>
+#include <new>
+#include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "source/source_file.h"
@@ -63,10 +67,10 @@ enum class NodeKind : uint8_t {
 const char* NodeKindName(NodeKind kind);
 
 /// Base of every node. Ids are dense (0..N-1 in creation order) so side tables
-/// can be vectors indexed by id.
+/// can be vectors indexed by id. Not polymorphic: the tree destroys each node as
+/// the type it made it with (SyntaxTree::Make), never through a Node*.
 struct Node {
   explicit Node(NodeKind k) : kind(k) {}
-  virtual ~Node() = default;
   Node(const Node&) = delete;
   Node& operator=(const Node&) = delete;
 
@@ -95,6 +99,9 @@ struct Node {
   const T* As() const {
     return T::Matches(kind) ? static_cast<const T*>(this) : nullptr;
   }
+
+ protected:
+  ~Node() = default;
 };
 
 /// A name as written, with the range of its token.
@@ -478,12 +485,26 @@ struct TranslationUnit : Node {
 
 // ------------------------------------------------------------------- the tree
 
+/// One node of a tree's preorder (SyntaxTree::Preorder).
+struct PreorderEntry {
+  const Node* node = nullptr;
+  uint32_t depth = 0;  // the root's is 0
+  uint32_t end = 0;    // index in the preorder just past the node's subtree
+};
+
 /// Owns every node. Nodes never move; pointers stay valid for the tree's life.
+/// Nodes live in an arena of the tree's own (a tree has thousands of small nodes:
+/// one heap block each made malloc and free a tenth of `check`); destroying the
+/// tree runs the destructors of the nodes that have any (names, child vectors),
+/// then releases the arena's few blocks at once.
 class SyntaxTree {
  public:
   SyntaxTree() = default;
-  SyntaxTree(SyntaxTree&&) = default;
-  SyntaxTree& operator=(SyntaxTree&&) = default;
+  SyntaxTree(SyntaxTree&& other) noexcept { *this = std::move(other); }
+  SyntaxTree& operator=(SyntaxTree&& other) noexcept;
+  SyntaxTree(const SyntaxTree&) = delete;
+  SyntaxTree& operator=(const SyntaxTree&) = delete;
+  ~SyntaxTree() { DestroyNodes(); }
 
   /// The root; nullptr only for a default-constructed tree.
   const TranslationUnit* Root() const { return root_; }
@@ -493,20 +514,56 @@ class SyntaxTree {
   uint32_t NodeCount() const { return static_cast<uint32_t>(nodes_.size()); }
   const Node& NodeAt(uint32_t id) const { return *nodes_[id]; }
   Node& NodeAt(uint32_t id) { return *nodes_[id]; }
+  /// Room for `count` nodes without growing the node table.
+  void Reserve(size_t count) {
+    nodes_.reserve(count);
+    destructors_.reserve(count);
+  }
+
+  /// Every node reachable from the root, in preorder with children in source order:
+  /// built once by IndexPreorder() when the tree is complete (the parser does it) so
+  /// that the many walks over one tree (every WebGL rule makes one) are a loop over
+  /// an array instead of a traversal each. Empty before IndexPreorder().
+  std::span<const PreorderEntry> Preorder() const { return preorder_; }
+  /// The index of node `id` in Preorder(), or kNotInPreorder (not reachable from
+  /// the root, or no index yet).
+  static constexpr uint32_t kNotInPreorder = UINT32_MAX;
+  uint32_t PreorderIndexOf(uint32_t id) const {
+    return id < preorder_index_.size() ? preorder_index_[id] : kNotInPreorder;
+  }
+  /// Builds Preorder() (iteratively: trees may be deeper than the call stack allows).
+  /// Call again after changing the tree's shape.
+  void IndexPreorder();
 
   /// Creates a node with the next id.
   template <class T>
   T* Make() {
-    auto node = std::make_unique<T>();
+    static_assert(std::is_base_of_v<Node, T>);
+    if (!arena_) arena_ = std::make_unique<std::pmr::monotonic_buffer_resource>(kFirstBlockBytes);
+    T* node = new (arena_->allocate(sizeof(T), alignof(T))) T();
     node->id = NodeCount();
-    T* raw = node.get();
-    nodes_.push_back(std::move(node));
-    return raw;
+    nodes_.push_back(node);
+    if constexpr (!std::is_trivially_destructible_v<T>) {
+      destructors_.push_back({node, [](Node* n) { static_cast<T*>(n)->~T(); }});
+    }
+    return node;
   }
 
  private:
-  std::vector<std::unique_ptr<Node>> nodes_;
+  // A small shader's nodes fit in the first block; the arena doubles from there.
+  static constexpr size_t kFirstBlockBytes = size_t{16} << 10;
+  struct Destructor {
+    Node* node;
+    void (*destroy)(Node*);
+  };
+  void DestroyNodes();
+
+  std::unique_ptr<std::pmr::monotonic_buffer_resource> arena_;
+  std::vector<Node*> nodes_;
+  std::vector<Destructor> destructors_;  // the nodes whose type has a destructor to run
   TranslationUnit* root_ = nullptr;
+  std::vector<PreorderEntry> preorder_;
+  std::vector<uint32_t> preorder_index_;  // by node id
 };
 
 }  // namespace shaderport::glsl

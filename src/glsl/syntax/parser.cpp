@@ -46,46 +46,6 @@ Parser::Parser(const PreprocessResult& pp, const ParseOptions& options)
 
 // ------------------------------------------------------------------ tokens
 
-uint32_t Parser::Index(uint32_t ahead) const { return std::min(pos_ + ahead, end_index_); }
-
-const PpToken& Parser::Tok(uint32_t ahead) const {
-  static const PpToken kEnd{};
-  uint32_t i = Index(ahead);
-  return i < pp_.tokens.size() ? pp_.tokens[i] : kEnd;
-}
-
-std::string_view Parser::Text(uint32_t ahead) const { return texts_[Index(ahead)]; }
-const WordInfo& Parser::Word(uint32_t ahead) const { return words_[Index(ahead)]; }
-
-bool Parser::AtPunct(Punct p, uint32_t ahead) const {
-  const PpToken& t = Tok(ahead);
-  return t.kind == TokenKind::kPunctuator && t.punct == p;
-}
-
-bool Parser::AtKeyword(std::string_view word, uint32_t ahead) const {
-  return Tok(ahead).kind == TokenKind::kIdentifier && Word(ahead).status == WordStatus::kKeyword &&
-         Text(ahead) == word;
-}
-
-bool Parser::AtRole(WordRole role, uint32_t ahead) const {
-  return Tok(ahead).kind == TokenKind::kIdentifier && Word(ahead).role == role &&
-         Word(ahead).status == WordStatus::kKeyword;
-}
-
-bool Parser::AtName(uint32_t ahead) const {
-  return Tok(ahead).kind == TokenKind::kIdentifier && Word(ahead).status != WordStatus::kKeyword;
-}
-
-void Parser::Advance() {
-  if (pos_ < end_index_) ++pos_;
-}
-
-bool Parser::Accept(Punct p) {
-  if (!AtPunct(p)) return false;
-  Advance();
-  return true;
-}
-
 bool Parser::Expect(Punct p, std::string_view context) {
   if (Accept(p)) return true;
   std::string message = "expected '" + std::string(PunctSpelling(p)) + "'";
@@ -295,7 +255,7 @@ void Parser::PopScope() {
 void Parser::PlaceEmptyNodes() {
   // A missing operand sits at the next token, which may lie past its parent
   // (`float a = ;`): move each empty node into its parent so ranges nest.
-  VisitPreorder(*tree_.Root(), [&](const Node& parent, uint32_t) {
+  VisitPreorder(tree_, [&](const Node& parent, uint32_t) {
     ForEachChild(parent, [&](const Node& child) {
       if (child.HasTokens() || child.range.file != parent.range.file) return;
       Node& node = tree_.NodeAt(child.id);
@@ -307,6 +267,8 @@ void Parser::PlaceEmptyNodes() {
 }
 
 ParseResult Parser::Run() {
+  // About one node for every two tokens in shaders: the node table rarely grows.
+  tree_.Reserve(end_index_ / 2 + 1);
   auto* unit = Start<TranslationUnit>();
   unit->first_token = 0;
   while (!AtEnd()) {
@@ -317,6 +279,7 @@ ParseResult Parser::Run() {
   }
   Finish(unit);
   tree_.SetRoot(unit);
+  tree_.IndexPreorder();
   PlaceEmptyNodes();
   return ParseResult{std::move(tree_), std::move(diagnostics_)};
 }

@@ -2,6 +2,7 @@
 // parse_statements.cpp and parse_expressions.cpp. Not part of the public API.
 #pragma once
 
+#include <algorithm>
 #include <deque>
 #include <string>
 #include <string_view>
@@ -23,7 +24,8 @@ class Parser {
   void PlaceEmptyNodes();
   friend class DepthGuard;
 
-  // ---- tokens (parser.cpp)
+  // ---- tokens (defined below the class: inline, as the parser asks them for every
+  // token several times and a call each was a tenth of the parse)
   const PpToken& Tok(uint32_t ahead = 0) const;
   uint32_t Index(uint32_t ahead = 0) const;
   std::string_view Text(uint32_t ahead = 0) const;  // continuations removed
@@ -144,6 +146,48 @@ class Parser {
   size_t error_count_ = 0;
   bool too_many_reported_ = false;
 };
+
+// The end of input, for lookahead past the last token.
+inline constexpr PpToken kPastEndToken{};
+
+inline uint32_t Parser::Index(uint32_t ahead) const { return std::min(pos_ + ahead, end_index_); }
+
+inline const PpToken& Parser::Tok(uint32_t ahead) const {
+  const uint32_t i = Index(ahead);
+  return i < pp_.tokens.size() ? pp_.tokens[i] : kPastEndToken;
+}
+
+inline std::string_view Parser::Text(uint32_t ahead) const { return texts_[Index(ahead)]; }
+inline const WordInfo& Parser::Word(uint32_t ahead) const { return words_[Index(ahead)]; }
+
+inline bool Parser::AtPunct(Punct p, uint32_t ahead) const {
+  const PpToken& t = Tok(ahead);
+  return t.kind == TokenKind::kPunctuator && t.punct == p;
+}
+
+inline bool Parser::AtKeyword(std::string_view word, uint32_t ahead) const {
+  return Tok(ahead).kind == TokenKind::kIdentifier && Word(ahead).status == WordStatus::kKeyword &&
+         Text(ahead) == word;
+}
+
+inline bool Parser::AtRole(WordRole role, uint32_t ahead) const {
+  return Tok(ahead).kind == TokenKind::kIdentifier && Word(ahead).role == role &&
+         Word(ahead).status == WordStatus::kKeyword;
+}
+
+inline bool Parser::AtName(uint32_t ahead) const {
+  return Tok(ahead).kind == TokenKind::kIdentifier && Word(ahead).status != WordStatus::kKeyword;
+}
+
+inline void Parser::Advance() {
+  if (pos_ < end_index_) ++pos_;
+}
+
+inline bool Parser::Accept(Punct p) {
+  if (!AtPunct(p)) return false;
+  Advance();
+  return true;
+}
 
 // Counts one nesting level for as long as it lives.
 class DepthGuard {
