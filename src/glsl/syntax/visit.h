@@ -36,7 +36,9 @@ template <class Fn>
 void WalkWithStack(const Node& start, Fn& fn) {
   std::vector<std::pair<const Node*, uint32_t>> stack{{&start, 0}};
   while (!stack.empty()) {
-    auto [node, depth] = stack.back();
+    // Not a structured binding: clang 14 cannot capture one in the lambda below.
+    const Node* node = stack.back().first;
+    const uint32_t depth = stack.back().second;
     stack.pop_back();
     if (!fn(*node, depth)) continue;
     // Pushed in source order, then reversed so that the first child pops first.
