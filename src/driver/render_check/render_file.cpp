@@ -3,6 +3,7 @@
 #include "driver/dialect.h"
 #include "driver/port/port_file.h"
 #include "driver/read_input.h"
+#include "driver/render_check/browser_optimizer.h"
 #include "driver/render_check/browser_render_text.h"
 #include "driver/render_check/composed_text.h"
 #include "driver/render_check/varying_feeder.h"
@@ -34,6 +35,32 @@ render::ChannelKind KindOf(validate::ChannelType type) {
   if (type == validate::ChannelType::kCube) return render::ChannelKind::kCube;
   if (type == validate::ChannelType::k3D) return render::ChannelKind::k3D;
   return render::ChannelKind::k2D;
+}
+
+// With the browser's semantics, Mesa draws the text after the optimiser Chromium runs
+// (browser_optimizer.h); when that text cannot be made or Mesa rejects it, the text as
+// the browser semantics wrote it, whose diagnostics point at the user's lines.
+render::RenderOutcome RenderAsBrowser(const render::RenderRequest& request,
+                                      const RenderFileOptions& options) {
+  if (options.webgl_semantics) {
+    render::RenderRequest optimized = request;
+    bool complete = true;
+    for (render::BufferPass& pass : optimized.buffer_passes) {
+      auto text = OptimizeAsBrowser(pass.fragment_source);
+      complete = complete && text.has_value();
+      if (text) pass.fragment_source = std::move(*text);
+    }
+    auto text = complete ? OptimizeAsBrowser(request.fragment_source) : std::nullopt;
+    if (text) {
+      optimized.fragment_source = std::move(*text);
+      render::RenderOutcome outcome = render::RenderIsolated(optimized, options.render);
+      if (outcome.status != render::RenderStatus::kCompileFailed &&
+          outcome.status != render::RenderStatus::kLinkFailed) {
+        return outcome;
+      }
+    }
+  }
+  return render::RenderIsolated(request, options.render);
 }
 
 }  // namespace
@@ -68,7 +95,7 @@ void RenderPrepared(const PreparedShader& shader, const RenderFileOptions& optio
       return;
     }
   }
-  const render::RenderOutcome outcome = render::RenderIsolated(request, options.render);
+  const render::RenderOutcome outcome = RenderAsBrowser(request, options);
   result.milliseconds = outcome.milliseconds;
   render::CheckContext context;
   context.anchor = shader.anchor;

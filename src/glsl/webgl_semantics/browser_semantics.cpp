@@ -97,6 +97,8 @@ BrowserSemanticsResult ApplyBrowserSemantics(std::span<const SourceFile* const> 
   MainPrologue prologue;
   // Its helpers go in first where the smoothstep helper also goes; neither needs the other.
   if (options.cpu_browser_math) ComputeMathAsCpuBrowser(context, preprocessed);
+  // Before the render probe, which writes `layout(location = 0) ` at the same place.
+  if (options.source_order_arithmetic) KeepSourceOrderArithmetic(context);
   if (options.zero_initialize) {
     ZeroInitializeVariables(context, prologue);
     AddDefaultReturns(context, preprocessed);

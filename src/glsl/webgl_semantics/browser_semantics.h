@@ -15,6 +15,8 @@
 // and, on request, where llvmpipe computes differently from Chromium without a GPU:
 //  - sin, cos, exp, pow, dot, mix, ... computed as SwiftShader computes them, and
 //    float divisions kept as divisions (cpu_browser_math.cpp);
+//  - fragment outputs declared invariant, so that Mesa adds in source order
+//    (source_order_arithmetic.cpp);
 //  - lines inside skipped #if groups are emptied (Mesa rejects a misspelled
 //    directive there; browsers skip it);
 // plus, on request, a probe written to a second fragment output, so that a render
@@ -35,7 +37,7 @@ namespace shaderport::glsl {
 
 // The fragment output (location 1) of the render probe: .x = loop body executions
 // of the pixel's invocation (what llvmpipe caps at 65535), .y = 1 where the colour
-// output was assigned.
+// output was assigned; .z is a sink for branch conditions (source_order_arithmetic).
 inline constexpr std::string_view kRenderProbeOutput = "shaderport_probe";
 
 struct BrowserSemanticsOptions {
@@ -49,6 +51,9 @@ struct BrowserSemanticsOptions {
   // Built-in math and division as Chromium computes them on the CPU (SwiftShader),
   // so that hash noise draws the same bits. For renders, never for output text.
   bool cpu_browser_math = false;
+  // Fragment outputs declared invariant, so that Mesa keeps float arithmetic in
+  // source order as Chromium does (it regroups sums otherwise). For renders only.
+  bool source_order_arithmetic = false;
   // Lines of skipped #if groups emptied (conditional directives kept): browsers
   // ignore them, Mesa rejects a bad directive there.
   bool empty_inactive_lines = true;
@@ -73,6 +78,8 @@ struct BrowserSemanticsResult {
   uint32_t conversions = 0;           // uint to float conversions done in two roundings
   uint32_t folded_clamps = 0;         // clamp(c, lo, hi) answered from c and one bound
   uint32_t counted_loops = 0;         // loops instrumented
+  uint32_t invariant_outputs = 0;     // fragment outputs declared invariant
+  uint32_t exposed_conditions = 0;    // branch conditions also written to the probe
   uint32_t skipped = 0;               // places inside macros that could not be edited safely
 };
 

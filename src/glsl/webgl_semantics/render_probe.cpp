@@ -5,7 +5,9 @@
 //     a browser draws), and
 //  .y becomes 1 where the colour output is assigned (mainImage's out parameter, or
 //     the shader's single output), so a pixel that never assigns it can be told
-//     from one that is really black or white.
+//     from one that is really black or white;
+//  .z is assigned branch conditions when arithmetic is kept in source order
+//     (source_order_arithmetic.cpp); the render does not read it.
 // GLSL ES 3.00 needs explicit locations with several outputs, so the probe is only
 // added when the shader has exactly one output without a layout, which gets location 0.
 // Where a write cannot be marked (inside a macro), writes are not tracked (.y = 1).
@@ -181,9 +183,11 @@ void AddRenderProbe(SemanticsContext& c, MainPrologue& prologue) {
     for (PendingEdit& edit : *list) c.edits.Insert(edit.at.file, edit.at.begin, edit.text);
   }
   c.edits.Insert(output_span->file, output_span->begin, "layout(location = 0) ");
-  c.edits.Insert(
-      declare_at->file, declare_at->begin,
-      "layout(location = 1) out highp vec4 " + probe + "; int " + std::string(kCounter) + " = 0; ");
+  const bool exact = c.options.source_order_arithmetic;
+  if (exact) ExposeBranchConditions(c, probe);
+  c.edits.Insert(declare_at->file, declare_at->begin,
+                 std::string(exact ? "invariant " : "") + "layout(location = 1) out highp vec4 " +
+                     probe + "; int " + std::string(kCounter) + " = 0; ");
   prologue.statements.push_back(probe + " = vec4(0.0, " + (writes_complete ? "0.0" : "1.0") +
                                 ", 0.0, 0.0);");
   c.result.counted_loops = loops;

@@ -32,6 +32,12 @@ class EditCollector {
   void Insert(FileId file, uint32_t at, std::string text) {
     edits_[file].push_back({at, at, std::move(text)});
   }
+  // Before every insertion made so far at the same offset: the opening text of a
+  // wrapper around code whose inner parts other transforms have already wrapped.
+  void InsertOutermost(FileId file, uint32_t at, std::string text) {
+    auto& list = edits_[file];
+    list.insert(list.begin(), {at, at, std::move(text)});
+  }
   void Replace(const SourceRange& range, std::string text) {
     edits_[range.file].push_back({range.begin, range.end, std::move(text)});
   }
@@ -87,6 +93,11 @@ void AddRenderProbe(SemanticsContext& context, MainPrologue& prologue);
 void RewriteSmoothstepEdges(SemanticsContext& context, const PreprocessResult& preprocessed);
 void PromotePrecision(SemanticsContext& context, const PreprocessResult& preprocessed);
 void ComputeMathAsCpuBrowser(SemanticsContext& context, const PreprocessResult& preprocessed);
+void KeepSourceOrderArithmetic(SemanticsContext& context);
+// Makes the value of every branch and loop condition reach the (invariant) render
+// probe output `probe`, so that Mesa also keeps in source order what decides control
+// flow. Run after every transform that edits inside conditions.
+void ExposeBranchConditions(SemanticsContext& context, std::string_view probe);
 void AddDefaultReturns(SemanticsContext& context, const PreprocessResult& preprocessed);
 void EmptyInactiveLines(std::span<const SourceFile* const> parts,
                         const PreprocessResult& preprocessed, EditCollector& edits);

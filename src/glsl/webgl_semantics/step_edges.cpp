@@ -6,6 +6,10 @@
 // The name is also renamed inside macro bodies (`#define S(x, w) smoothstep(-w, w, x)`):
 // there it can only mean the built-in. Nothing is renamed when a call is outside a
 // function body (a constant initializer may call the built-in, not a function).
+// For a render that goes through the browser's optimiser (spirv-opt -O), the helper
+// hides its arguments and result behind an opaque zero: the built-in is one
+// instruction there, whose arithmetic no folding rule sees ((x - a) / (b - a) with
+// constant edges would become a multiplication by the reciprocal).
 #include <set>
 #include <utility>
 
@@ -29,16 +33,39 @@ constexpr std::string_view kVectorHelpers =
     "@ shaderport_smoothstep(float a, float b, @ x) { return shaderport_smoothstep(@(a), @(b), "
     "x); } ";
 
-std::string Helpers() {
-  std::string text(kScalarHelper);
-  for (const std::string_view vector : {"vec2", "vec3", "vec4"}) {
-    for (const char c : kVectorHelpers) {
-      if (c == '@') {
-        text.append(vector);
-      } else {
-        text.push_back(c);
-      }
+constexpr std::string_view kOpaqueZero = "shaderport_edge_zero";
+
+// kScalarHelper and kVectorHelpers as built-ins: arguments and results opaque.
+constexpr std::string_view kOpaqueScalarHelper =
+    "float shaderport_smoothstep(float a, float b, float x) { a = Z < 0.0 ? -a : a; b = Z < 0.0 "
+    "? -b : b; x = Z < 0.0 ? -x : x; if (a == b) return x > a ? 1.0 : 0.0; float t = clamp((x - "
+    "a) / (b - a), 0.0, 1.0); return (t * t * (3.0 - 2.0 * t)) - Z; } ";
+constexpr std::string_view kOpaqueVectorHelpers =
+    "@ shaderport_smoothstep(@ a, @ b, @ x) { a = Z < 0.0 ? -a : a; b = Z < 0.0 ? -b : b; x = Z "
+    "< 0.0 ? -x : x; @ t = clamp((x - a) / (b - a), 0.0, 1.0); t = t * t * (3.0 - 2.0 * t); "
+    "return mix(t, @(greaterThan(x, a)), equal(a, b)) - Z; } "
+    "@ shaderport_smoothstep(float a, float b, @ x) { return shaderport_smoothstep(@(a), @(b), "
+    "x); } ";
+
+// `@` becomes `vector`, `Z` the opaque zero.
+void AppendExpanded(std::string_view pattern, std::string_view vector, std::string& text) {
+  for (const char c : pattern) {
+    if (c == '@') {
+      text.append(vector);
+    } else if (c == 'Z') {
+      text.append(kOpaqueZero);
+    } else {
+      text.push_back(c);
     }
+  }
+}
+
+std::string Helpers(bool opaque) {
+  std::string text;
+  if (opaque) text = "uniform highp float " + std::string(kOpaqueZero) + "; ";
+  AppendExpanded(opaque ? kOpaqueScalarHelper : kScalarHelper, "", text);
+  for (const std::string_view vector : {"vec2", "vec3", "vec4"}) {
+    AppendExpanded(opaque ? kOpaqueVectorHelpers : kVectorHelpers, vector, text);
   }
   return MacroProofHelperText(text);
 }
@@ -81,7 +108,7 @@ void RewriteSmoothstepEdges(SemanticsContext& c, const PreprocessResult& preproc
     c.result.skipped += static_cast<uint32_t>(names.size());
     return;
   }
-  c.edits.Insert(declare_at->file, declare_at->begin, Helpers());
+  c.edits.Insert(declare_at->file, declare_at->begin, Helpers(c.options.source_order_arithmetic));
   for (const SourceRange& name : names) c.edits.Replace(name, std::string(kName));
   c.result.smoothsteps = static_cast<uint32_t>(names.size());
 }
