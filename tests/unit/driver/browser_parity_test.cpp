@@ -154,5 +154,22 @@ TEST(BrowserParity, MathHasChromiumsBits) {
   EXPECT_GE(differ_natively, probes - 1);  // each probe shows a real difference
 }
 
+// `buffer` is a word ES 3.10 reserves, so the text cannot go through the browser's
+// optimiser (glslang compiles it as 310 es): render draws the browser semantics' text.
+TEST(BrowserParity, PassTheOptimiserCannotTakeIsStillDrawn) {
+  const fs::path path = fs::path(::testing::TempDir()) / "reserved-in-310.glsl";
+  std::ofstream(path) << "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+                         "  float buffer = fragCoord.x / iResolution.x;\n"
+                         "  fragColor = vec4(buffer, 0.5, 0.25, 1.0);\n}\n";
+  SourceManager sources;
+  const RenderFileResult result = Render(path, true, sources);
+  ASSERT_TRUE(result.image.has_value());
+  EXPECT_FALSE(HasErrors(result.diagnostics));
+  const auto& pixels = result.image->pixels;
+  EXPECT_EQ(pixels[0], 2);  // x = 0.5 / 64 in the top-left pixel
+  EXPECT_EQ(pixels[1], 128);
+  EXPECT_EQ(pixels[(64 * 63 + 63) * 4], 253);
+}
+
 }  // namespace
 }  // namespace shaderport::driver

@@ -271,4 +271,41 @@ TEST(BrowserSemantics, PartsAreEditedSeparately) {
 }
 
 }  // namespace
+TEST(BrowserSemantics, SourceOrderArithmeticMakesOutputsAndConditionsInvariant) {
+  BrowserSemanticsOptions options;
+  options.zero_initialize = false;
+  options.add_render_probe = true;
+  options.source_order_arithmetic = true;
+  const auto result = Apply(
+      "void main() { float s = 0.0; for (int i = 0; i < 9 && s < 4.0; i++) s += 1.5;\n"
+      "do { s -= 2.0; } while (s > 0.0); if (s < 0.0) o = vec4(s); }\n",
+      options);
+  EXPECT_EQ(result.invariant_outputs, 1U);
+  EXPECT_EQ(result.exposed_conditions, 3U);
+  EXPECT_EQ(result.texts.front(),
+            "#version 300 es\nprecision highp float;\nprecision highp int;\n"
+            "invariant layout(location = 0) out vec4 o;\n"
+            "invariant layout(location = 1) out highp vec4 shaderport_probe; int "
+            "shaderport_loop_count = 0; void main() { shaderport_probe = vec4(0.0, 0.0, 0.0, "
+            "0.0); float s = 0.0; for (int i = 0; ((shaderport_probe.z = float(i < 9 && s < "
+            "4.0)) != 0.0); i++) { shaderport_probe.x = float(++shaderport_loop_count); s += "
+            "1.5; }\n"
+            "do { shaderport_probe.x = float(++shaderport_loop_count); s -= 2.0; } while "
+            "(((shaderport_probe.z = float(s > 0.0)) != 0.0)); if (((shaderport_probe.z = "
+            "float(s < 0.0)) != 0.0)) { o = vec4(s); shaderport_probe.y = 1.0; } }\n");
+}
+
+TEST(BrowserSemantics, SourceOrderArithmeticWithoutTheProbeOnlyMakesOutputsInvariant) {
+  BrowserSemanticsOptions options;
+  options.zero_initialize = false;
+  options.source_order_arithmetic = true;
+  const auto result = Apply("void main() { if (o.x > 0.0) o = vec4(1.0); }\n", options);
+  EXPECT_EQ(result.invariant_outputs, 1U);
+  EXPECT_EQ(result.exposed_conditions, 0U);
+  EXPECT_EQ(result.texts.front(),
+            "#version 300 es\nprecision highp float;\nprecision highp int;\n"
+            "invariant out vec4 o;\n"
+            "void main() { if (o.x > 0.0) o = vec4(1.0); }\n");
+}
+
 }  // namespace shaderport::glsl
