@@ -13,5 +13,8 @@ inline constexpr uint32_t kMaxMacroDepth = 200;          // nested macro expansi
 inline constexpr uint32_t kMaxConditionalDepth = 200;    // nested #if groups
 inline constexpr uint32_t kMaxSyntaxDepth = 256;         // nested expressions/statements
 inline constexpr size_t kMaxDiagnosticsPerFile = 1000;   // further ones are dropped with a note
+// A render's text goes through spirv-opt only while its entry point, with every call
+// inlined, stays below this many SPIR-V instructions (past it, tens of seconds).
+inline constexpr uint64_t kMaxInlinedInstructions = 40'000;
 
 }  // namespace shaderport::limits

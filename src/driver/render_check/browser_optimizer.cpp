@@ -1,9 +1,11 @@
 #include "driver/render_check/browser_optimizer.h"
 
 #include "base/large_stack.h"
+#include "base/limits.h"
 #include "diag/diagnostic.h"
 #include "source/source_manager.h"
 #include "toolchain/cross_compile.h"
+#include "toolchain/inlined_size.h"
 #include "toolchain/spirv_compile.h"
 #include "toolchain/spirv_tools.h"
 
@@ -18,6 +20,10 @@ std::optional<std::string> OptimizeAsBrowser(std::string_view text) {
     toolchain::SpirvCompilation compiled =
         toolchain::CompileToSpirv(file, toolchain::Stage::kFragment);
     if (HasErrors(compiled.diagnostics) || compiled.words.empty()) return;
+    // spirv-opt inlines every call first; past the limit that alone takes seconds.
+    if (toolchain::InlinedInstructionCount(compiled.words) > limits::kMaxInlinedInstructions) {
+      return;
+    }
     toolchain::OptimizeOutcome outcome =
         toolchain::OptimizeSpirv(compiled.words, toolchain::OptimizeLevel::kPerformance);
     if (outcome.words.empty()) return;
