@@ -56,6 +56,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   options.zero_out_parameters = true;
   options.add_render_probe = true;
   options.cpu_browser_math = true;  // as render applies them
+  options.source_order_arithmetic = true;
   const glsl::BrowserSemanticsResult result = glsl::ApplyBrowserSemantics(parts, options);
   Check(result.texts.size() == 1 && result.maps.size() == 1, "one text and map per part");
   const std::string& edited = result.texts.front();

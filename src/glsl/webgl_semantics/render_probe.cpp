@@ -11,6 +11,7 @@
 // GLSL ES 3.00 needs explicit locations with several outputs, so the probe is only
 // added when the shader has exactly one output without a layout, which gets location 0.
 // Where a write cannot be marked (inside a macro), writes are not tracked (.y = 1).
+// Components are written by index ([0], [1]): the user's code may `#define x`.
 #include "glsl/sema/language.h"
 #include "glsl/syntax/visit.h"
 #include "glsl/webgl_semantics/semantics_context.h"
@@ -111,7 +112,7 @@ void AddRenderProbe(SemanticsContext& c, MainPrologue& prologue) {
   std::vector<PendingEdit> loop_begins, loop_ends;
   bool loops_complete = true;
   uint32_t loops = 0;
-  const std::string count = " " + probe + ".x = float(++" + std::string(kCounter) + ");";
+  const std::string count = " " + probe + "[0] = float(++" + std::string(kCounter) + ");";
   VisitPreorder(c.tree, [&](const Node& node, uint32_t) {
     const Node* body = nullptr;
     if (const auto* loop = node.As<ForStatement>()) body = loop->body;
@@ -165,13 +166,13 @@ void AddRenderProbe(SemanticsContext& c, MainPrologue& prologue) {
       writes_complete = writes_complete && span.has_value();
       if (span && marked->kind == NodeKind::kForStatement) {
         write_begins.push_back(
-            {{span->file, span->begin, span->begin}, "{ " + probe + ".y = 1.0; "});
+            {{span->file, span->begin, span->begin}, "{ " + probe + "[1] = 1.0; "});
         write_ends.push_back({{span->file, span->end, span->end}, " }"});
         return true;  // writes in the body are marked too
       }
       if (span) {
         write_begins.push_back({{span->file, span->begin, span->begin}, "{ "});
-        write_ends.push_back({{span->file, span->end, span->end}, " " + probe + ".y = 1.0; }"});
+        write_ends.push_back({{span->file, span->end, span->end}, " " + probe + "[1] = 1.0; }"});
       }
       return false;
     });

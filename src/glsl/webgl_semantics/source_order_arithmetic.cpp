@@ -7,7 +7,8 @@
 // declared invariant. Mesa follows data only, not control flow, so the escape count
 // of a loop (`if (dot(z, z) > 4.0) { n = i; break; }`) would still be computed from
 // regrouped sums: every branch and loop condition is also assigned to the render
-// probe's spare channel (`(probe.z = float(c)) != 0.0`, the same truth value), which
+// probe's spare channel (`(probe[2] = float(c)) != 0.0`, the same truth value; an
+// index, not `.z`, since the user's code may `#define z`), which
 // is declared invariant too.
 #include "glsl/sema/language.h"
 #include "glsl/syntax/visit.h"
@@ -34,7 +35,7 @@ void KeepSourceOrderArithmetic(SemanticsContext& c) {
 }
 
 void ExposeBranchConditions(SemanticsContext& c, std::string_view probe) {
-  const std::string open = "((" + std::string(probe) + ".z = float(";
+  const std::string open = "((" + std::string(probe) + "[2] = float(";
   VisitPreorder(c.tree, [&](const Node& node, uint32_t) {
     const Node* condition = nullptr;
     if (const auto* branch = node.As<IfStatement>()) condition = branch->condition;

@@ -101,10 +101,10 @@ TEST(BrowserSemantics, RenderProbeCountsLoopsAndMarksOutputWrites) {
             "layout(location = 0) out vec4 o;\n"
             "layout(location = 1) out highp vec4 shaderport_probe; int shaderport_loop_count = "
             "0; void main() { shaderport_probe = vec4(0.0, 0.0, 0.0, 0.0); float s = 0.0; for "
-            "(int i = 0; i < 9; i++) { shaderport_probe.x = float(++shaderport_loop_count); s += "
+            "(int i = 0; i < 9; i++) { shaderport_probe[0] = float(++shaderport_loop_count); s += "
             "1.0; }\n"
-            "while (s > 0.0) { shaderport_probe.x = float(++shaderport_loop_count); s -= 2.0; } "
-            "if (s < 0.0) { o = vec4(s); shaderport_probe.y = 1.0; } }\n");
+            "while (s > 0.0) { shaderport_probe[0] = float(++shaderport_loop_count); s -= 2.0; } "
+            "if (s < 0.0) { o = vec4(s); shaderport_probe[1] = 1.0; } }\n");
 }
 
 TEST(BrowserSemantics, RenderProbeMarksWritesOfMainImagesOutParameter) {
@@ -120,11 +120,11 @@ TEST(BrowserSemantics, RenderProbeMarksWritesOfMainImagesOutParameter) {
   EXPECT_TRUE(result.tracks_output_writes);
   EXPECT_NE(
       result.texts.front().find(
-          "for (int i = 0; i < 2; i++) { shaderport_probe.x = float(++shaderport_loop_count); "
-          "{ f.x += 1.0; shaderport_probe.y = 1.0; } }"),
+          "for (int i = 0; i < 2; i++) { shaderport_probe[0] = float(++shaderport_loop_count); "
+          "{ f.x += 1.0; shaderport_probe[1] = 1.0; } }"),
       std::string::npos)
       << result.texts.front();
-  EXPECT_NE(result.texts.front().find("if (p.x > 1.0) { paint(f); shaderport_probe.y = 1.0; }"),
+  EXPECT_NE(result.texts.front().find("if (p.x > 1.0) { paint(f); shaderport_probe[1] = 1.0; }"),
             std::string::npos);
   // Writes of `o` in main() are not the site's output: mainImage's parameter is.
   EXPECT_NE(result.texts.front().find("mainImage(c, gl_FragCoord.xy); o = c; }"),
@@ -156,7 +156,7 @@ TEST(BrowserSemantics, RenderProbeMarksOutputWritesInAForHeader) {
       "void main() { vec4 c = vec4(0.0); mainImage(c, gl_FragCoord.xy); o = c; }\n",
       options);
   EXPECT_TRUE(result.tracks_output_writes);
-  EXPECT_NE(result.texts.front().find("{ shaderport_probe.y = 1.0; for (p = vec4(f, 1, 0);"),
+  EXPECT_NE(result.texts.front().find("{ shaderport_probe[1] = 1.0; for (p = vec4(f, 1, 0);"),
             std::string::npos)
       << result.texts.front();
 }
@@ -287,12 +287,12 @@ TEST(BrowserSemantics, SourceOrderArithmeticMakesOutputsAndConditionsInvariant) 
             "invariant layout(location = 0) out vec4 o;\n"
             "invariant layout(location = 1) out highp vec4 shaderport_probe; int "
             "shaderport_loop_count = 0; void main() { shaderport_probe = vec4(0.0, 0.0, 0.0, "
-            "0.0); float s = 0.0; for (int i = 0; ((shaderport_probe.z = float(i < 9 && s < "
-            "4.0)) != 0.0); i++) { shaderport_probe.x = float(++shaderport_loop_count); s += "
+            "0.0); float s = 0.0; for (int i = 0; ((shaderport_probe[2] = float(i < 9 && s < "
+            "4.0)) != 0.0); i++) { shaderport_probe[0] = float(++shaderport_loop_count); s += "
             "1.5; }\n"
-            "do { shaderport_probe.x = float(++shaderport_loop_count); s -= 2.0; } while "
-            "(((shaderport_probe.z = float(s > 0.0)) != 0.0)); if (((shaderport_probe.z = "
-            "float(s < 0.0)) != 0.0)) { o = vec4(s); shaderport_probe.y = 1.0; } }\n");
+            "do { shaderport_probe[0] = float(++shaderport_loop_count); s -= 2.0; } while "
+            "(((shaderport_probe[2] = float(s > 0.0)) != 0.0)); if (((shaderport_probe[2] = "
+            "float(s < 0.0)) != 0.0)) { o = vec4(s); shaderport_probe[1] = 1.0; } }\n");
 }
 
 TEST(BrowserSemantics, SourceOrderArithmeticWithoutTheProbeOnlyMakesOutputsInvariant) {
@@ -306,6 +306,23 @@ TEST(BrowserSemantics, SourceOrderArithmeticWithoutTheProbeOnlyMakesOutputsInvar
             "#version 300 es\nprecision highp float;\nprecision highp int;\n"
             "invariant out vec4 o;\n"
             "void main() { if (o.x > 0.0) o = vec4(1.0); }\n");
+}
+
+// Golfed code defines one-letter macros (`#define z Z`, `#define x ...`): the probe's
+// writes must not spell a component name that such a macro would replace.
+TEST(BrowserSemantics, ProbeWritesSurviveMacrosNamedLikeComponents) {
+  BrowserSemanticsOptions options;
+  options.zero_initialize = false;
+  options.add_render_probe = true;
+  options.source_order_arithmetic = true;
+  const auto result = Apply(
+      "#define x 2.0\n#define y 3.0\n#define z broken(\n"
+      "void main() { float s = 0.0; for (int i = 0; i < 9; i++) s += x;\n"
+      "if (s > y) o = vec4(s); }\n",
+      options);
+  ASSERT_TRUE(result.render_probe);
+  EXPECT_EQ(result.exposed_conditions, 2U);
+  EXPECT_EQ(result.texts.front().find("shaderport_probe."), std::string::npos);
 }
 
 }  // namespace shaderport::glsl

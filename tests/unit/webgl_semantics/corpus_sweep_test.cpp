@@ -23,6 +23,7 @@ TEST(BrowserSemanticsSweep, CorpusStillCompilesAfterTheTransforms) {
   options.zero_out_parameters = true;
   options.add_render_probe = true;
   options.cpu_browser_math = true;
+  options.source_order_arithmetic = true;  // as render applies them
   std::string line;
   while (std::getline(in, line)) {
     const auto record = nlohmann::json::parse(line);
