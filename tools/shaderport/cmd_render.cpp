@@ -31,6 +31,7 @@ struct RenderArgs {
   double timeout_seconds = 10.0;
   bool hermetic = false;
   bool native = false;
+  bool browser_optimiser = false;
   std::string fail_on = "error";
 };
 
@@ -86,6 +87,10 @@ int RunRender(const RenderArgs& args) {
       std::chrono::milliseconds(static_cast<int64_t>(args.timeout_seconds * 1000));
   options.render.hermetic = args.hermetic;
   options.webgl_semantics = !args.native;
+  options.browser_optimiser = args.browser_optimiser;
+  if (args.native && args.browser_optimiser) {
+    return Usage("--browser-optimiser needs the browser semantics that --native turns off");
+  }
   const std::optional<Severity> fail_on = SeverityFromName(args.fail_on);
   if (!fail_on) return Usage("unknown --fail-on '" + args.fail_on + "' (error, warning or note)");
 
@@ -170,6 +175,9 @@ void AddRenderCommand(CLI::App& app, int& exit_code) {
   command->add_flag("--native", args->native,
                     "Draw as a native driver would: without the browser's zero initialisation, "
                     "index clamping and math");
+  command->add_flag("--browser-optimiser", args->browser_optimiser,
+                    "Also run spirv-opt -O on the text, as Chromium's SwiftShader does, for its "
+                    "regroupings of float arithmetic (slower)");
   command->add_option("--fail-on", args->fail_on,
                       "Lowest severity that fails the run: error (default), warning or note");
   command->callback([args, &exit_code] { exit_code = RunRender(*args); });

@@ -3,9 +3,11 @@
 // performance passes (-O), whose folding rules regroup float arithmetic: (x * c1) * c2
 // becomes x * (c1 * c2), a * b + a * c becomes a * (b + c), x / c becomes x * (1 / c).
 // Each changes the last bit, which hash noise and escape-time fractals turn into
-// another colour. So the render text goes through glslang, spirv-opt -O and SPIRV-Cross
-// back to ESSL 3.00, and Mesa keeps the result's arithmetic as written (the outputs and
-// branch conditions made invariant by the browser semantics, source_order_arithmetic).
+// another colour. `render --browser-optimiser` therefore passes its text through glslang,
+// spirv-opt -O and SPIRV-Cross back to ESSL 3.00, and Mesa keeps the result's arithmetic
+// as written (the outputs and branch conditions made invariant by the browser
+// semantics, source_order_arithmetic). Not the default: Debian's spirv-opt is older than
+// Chromium's and regroups differently in places (docs/render.md).
 #pragma once
 
 #include <optional>

@@ -37,12 +37,12 @@ render::ChannelKind KindOf(validate::ChannelType type) {
   return render::ChannelKind::k2D;
 }
 
-// With the browser's semantics, Mesa draws the text after the optimiser Chromium runs
+// On request, Mesa draws the text after the optimiser Chromium runs
 // (browser_optimizer.h); when that text cannot be made or Mesa rejects it, the text as
 // the browser semantics wrote it, whose diagnostics point at the user's lines.
 render::RenderOutcome RenderAsBrowser(const render::RenderRequest& request,
                                       const RenderFileOptions& options) {
-  if (options.webgl_semantics) {
+  if (options.webgl_semantics && options.browser_optimiser) {
     render::RenderRequest optimized = request;
     bool complete = true;
     for (render::BufferPass& pass : optimized.buffer_passes) {

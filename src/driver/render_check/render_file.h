@@ -30,6 +30,10 @@ struct RenderFileOptions {
   // Apply what browsers do to WebGL shaders before Mesa compiles them (zero
   // initialisation, index clamping); false draws what a native driver would.
   bool webgl_semantics = true;
+  // With the browser semantics: also run the optimiser Chromium's SwiftShader runs
+  // (spirv-opt -O) on the text, for its regroupings of float arithmetic. Off by
+  // default: it doubles a render's time and measured no better (docs/render.md).
+  bool browser_optimiser = false;
 };
 
 struct RenderFileResult {

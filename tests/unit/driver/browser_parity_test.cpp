@@ -66,8 +66,9 @@ std::map<std::string, ExpectedFinding> ExpectedFindings() {
 }
 
 RenderFileResult Render(const fs::path& shader, bool webgl_semantics, SourceManager& sources,
-                        const SourceFile* common = nullptr) {
+                        const SourceFile* common = nullptr, bool browser_optimiser = false) {
   RenderFileOptions options;
+  options.browser_optimiser = browser_optimiser;
   options.common = common;
   options.base.width = 64;
   options.base.height = 64;
@@ -113,10 +114,33 @@ TEST(BrowserParity, RenderMatchesChromiumOrSaysWhyNot) {
   EXPECT_GE(differ_natively, shaders / 2);
 }
 
+// Probes whose bits only the browser's optimiser (--browser-optimiser) gives, with why.
+std::map<std::string, std::string> NeedTheOptimiser() {
+  std::map<std::string, std::string> names;
+  std::ifstream in(kDir / "math-needs-optimiser.txt");
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    const size_t space = line.find(' ');
+    names[line.substr(0, space)] = space == std::string::npos ? "" : line.substr(space + 1);
+  }
+  return names;
+}
+
+size_t DifferentBytes(const render::ImageRgba8& image, const render::ImageRgba8& reference) {
+  size_t different = 0;
+  for (size_t i = 0; i < reference.pixels.size(); ++i) {
+    different += image.pixels[i] != reference.pixels[i] ? 1 : 0;
+  }
+  return different;
+}
+
 // tests/render-parity/math: each probe draws the bits of one built-in (or a
 // division, a conversion) for 2,048 arguments; render must give Chromium's bits
-// exactly, where llvmpipe's own math gives other bits.
+// exactly, where llvmpipe's own math gives other bits; with the browser's optimiser
+// every probe, without it every probe but those math-needs-optimiser.txt lists (which
+// must then differ, or the list is stale).
 TEST(BrowserParity, MathHasChromiumsBits) {
+  const auto need_optimiser = NeedTheOptimiser();
   int probes = 0, differ_natively = 0;
   std::ifstream common_in(kDir / "math-common.glsl");
   std::stringstream common_text;
@@ -139,11 +163,17 @@ TEST(BrowserParity, MathHasChromiumsBits) {
         Render(entry.path(), true, sources, shadertoy ? &common : nullptr);
     ASSERT_TRUE(result.image.has_value());
     ASSERT_EQ(result.image->pixels.size(), reference.pixels.size());
-    size_t different = 0;
-    for (size_t i = 0; i < reference.pixels.size(); ++i) {
-      different += result.image->pixels[i] != reference.pixels[i] ? 1 : 0;
+    if (need_optimiser.contains(name)) {
+      EXPECT_NE(DifferentBytes(*result.image, reference), 0U) << "listed as needing the optimiser";
+    } else {
+      EXPECT_EQ(DifferentBytes(*result.image, reference), 0U)
+          << "bytes that differ from Chromium's";
     }
-    EXPECT_EQ(different, 0U) << "bytes that differ from Chromium's";
+    const RenderFileResult optimised =
+        Render(entry.path(), true, sources, shadertoy ? &common : nullptr, true);
+    ASSERT_TRUE(optimised.image.has_value());
+    EXPECT_EQ(DifferentBytes(*optimised.image, reference), 0U)
+        << "bytes that differ from Chromium's with the browser's optimiser";
     SourceManager native_sources;
     const SourceFile& native_common = native_sources.Add("math-common.glsl", common_text.str());
     const RenderFileResult native =
@@ -155,14 +185,15 @@ TEST(BrowserParity, MathHasChromiumsBits) {
 }
 
 // `buffer` is a word ES 3.10 reserves, so the text cannot go through the browser's
-// optimiser (glslang compiles it as 310 es): render draws the browser semantics' text.
+// optimiser (glslang compiles it as 310 es): render --browser-optimiser draws the browser
+// semantics' text.
 TEST(BrowserParity, PassTheOptimiserCannotTakeIsStillDrawn) {
   const fs::path path = fs::path(::testing::TempDir()) / "reserved-in-310.glsl";
   std::ofstream(path) << "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
                          "  float buffer = fragCoord.x / iResolution.x;\n"
                          "  fragColor = vec4(buffer, 0.5, 0.25, 1.0);\n}\n";
   SourceManager sources;
-  const RenderFileResult result = Render(path, true, sources);
+  const RenderFileResult result = Render(path, true, sources, nullptr, true);
   ASSERT_TRUE(result.image.has_value());
   EXPECT_FALSE(HasErrors(result.diagnostics));
   const auto& pixels = result.image->pixels;

@@ -135,4 +135,16 @@ TEST_F(CliRender, EndlessShaderIsKilledAndReported) {
 }
 
 }  // namespace
+// The browser's optimiser works on the browser semantics' text, which --native drops.
+TEST_F(CliRender, BrowserOptimiserDrawsAndRefusesNative) {
+  const std::string shader = std::string(SHADERPORT_SOURCE_DIR) + "/corpus/ao/template.glsl";
+  const CliRun optimised =
+      RunCli("render --hermetic --size 8x8 --browser-optimiser -o /dev/null " + shader);
+  EXPECT_EQ(optimised.exit_code, 0) << optimised.output;
+  const CliRun both = RunCli("render --hermetic --native --browser-optimiser " + shader);
+  EXPECT_EQ(both.exit_code, 2) << both.output;
+  EXPECT_NE(both.output.find("--browser-optimiser needs the browser semantics"), std::string::npos)
+      << both.output;
+}
+
 }  // namespace shaderport::render
