@@ -24,13 +24,15 @@ void PpState::Report(Severity severity, std::string_view rule, SourceRange range
   list.push_back(std::move(d));
 }
 
-PpToken ToPpToken(const SourceFile& file, const Token& token, PpState& state) {
+PpToken ToPpToken(const SourceFile& file, const Token& token, PpState& state,
+                  bool file_has_backslash) {
   PpToken t;
   t.kind = token.kind;
   t.punct = token.punct;
   t.text = token.text;
   // The parser wants the logical spelling: drop backslash-newlines inside the token.
-  if (token.text.find('\\') != std::string_view::npos && token.kind != TokenKind::kInvalid) {
+  if (file_has_backslash && token.text.find('\\') != std::string_view::npos &&
+      token.kind != TokenKind::kInvalid) {
     t.text = state.Store(RemoveLineContinuations(token.text));
   }
   t.spelling = {file.Id(), token.begin, token.end};

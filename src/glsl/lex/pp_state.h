@@ -2,6 +2,7 @@
 // table, the result being built, and the budgets that keep hostile input bounded.
 #pragma once
 
+#include <bitset>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -54,11 +55,23 @@ struct PpState {
 
   explicit PpState(PreprocessResult& r) : result(r) {}
 
+  // The first characters of every name ever defined: most identifiers of a shader are
+  // no macro, and this answers for them without hashing the name.
+  std::bitset<256> macro_initials;
+  void NoteMacroName(std::string_view name) {
+    if (!name.empty()) macro_initials.set(static_cast<unsigned char>(name[0]));
+  }
+  bool MayBeMacro(std::string_view name) const {
+    return name.empty() || macro_initials.test(static_cast<unsigned char>(name[0]));
+  }
+
   const Macro* Find(std::string_view name) const {
+    if (!MayBeMacro(name)) return nullptr;
     auto it = macros.find(name);
     return it == macros.end() ? nullptr : &it->second;
   }
   Macro* FindMutable(std::string_view name) {
+    if (!MayBeMacro(name)) return nullptr;
     auto it = macros.find(name);
     return it == macros.end() ? nullptr : &it->second;
   }
@@ -74,7 +87,9 @@ struct PpState {
 };
 
 // Converts a lexed token of `file` to a PpToken spelled where it is written.
-PpToken ToPpToken(const SourceFile& file, const Token& token, PpState& state);
+// `file_has_backslash` false promises that no token of the file holds a line continuation.
+PpToken ToPpToken(const SourceFile& file, const Token& token, PpState& state,
+                  bool file_has_backslash = true);
 
 // The smallest range covering `a` and `b` when both are in one file in order, else `a`.
 SourceRange Cover(SourceRange a, SourceRange b);
