@@ -86,10 +86,29 @@ struct PpState {
   }
 };
 
+// `text` without its line continuations, stored in `state` (the rare case of ToPpToken).
+std::string_view StoreLogicalSpelling(std::string_view text, PpState& state);
+
 // Converts a lexed token of `file` to a PpToken spelled where it is written.
 // `file_has_backslash` false promises that no token of the file holds a line continuation.
-PpToken ToPpToken(const SourceFile& file, const Token& token, PpState& state,
-                  bool file_has_backslash = true);
+// Inline: it runs for every token of every file.
+inline PpToken ToPpToken(const SourceFile& file, const Token& token, PpState& state,
+                         bool file_has_backslash = true) {
+  PpToken t;
+  t.kind = token.kind;
+  t.punct = token.punct;
+  t.text = token.text;
+  // The parser wants the logical spelling: drop backslash-newlines inside the token.
+  if (file_has_backslash && token.text.find('\\') != std::string_view::npos &&
+      token.kind != TokenKind::kInvalid) {
+    t.text = StoreLogicalSpelling(token.text, state);
+  }
+  t.spelling = {file.Id(), token.begin, token.end};
+  t.expansion = t.spelling;
+  t.leading_space = token.leading_space;
+  t.at_line_start = token.at_line_start;
+  return t;
+}
 
 // The smallest range covering `a` and `b` when both are in one file in order, else `a`.
 SourceRange Cover(SourceRange a, SourceRange b);

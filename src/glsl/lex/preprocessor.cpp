@@ -87,12 +87,19 @@ void PpDriver::FlushText() {
   // The expander passes every token before the first use of a defined macro through
   // unchanged: those go straight to the output, and only the rest is expanded (most
   // runs of code use no macro, or only late).
+  // A name's first character is the same with or without line continuations (a token
+  // never starts with one), so MayBeMacro can test the lexed text before converting.
   size_t i = 0;
-  PpToken token;
+  PpToken first_use;
   for (; i < text_.size(); ++i) {
-    token = ToPpToken(*file_, *text_[i], state_, file_has_backslash_);
-    if (token.kind == TokenKind::kIdentifier && state_.Find(token.text) != nullptr) break;
-    out.push_back(token);
+    const Token& t = *text_[i];
+    if (t.kind == TokenKind::kIdentifier && state_.MayBeMacro(t.text)) {
+      first_use = ToPpToken(*file_, t, state_, file_has_backslash_);
+      if (state_.Find(first_use.text) != nullptr) break;
+      out.push_back(first_use);
+      continue;
+    }
+    out.push_back(ToPpToken(*file_, t, state_, file_has_backslash_));
   }
   if (i == text_.size()) {
     text_.clear();
@@ -100,7 +107,7 @@ void PpDriver::FlushText() {
   }
   std::vector<ExpToken> input;
   input.reserve(text_.size() - i);
-  input.push_back({token, false});
+  input.push_back({first_use, false});
   for (++i; i < text_.size(); ++i) {
     input.push_back({ToPpToken(*file_, *text_[i], state_, file_has_backslash_), false});
   }
