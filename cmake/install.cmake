@@ -49,6 +49,8 @@ set(CPACK_GENERATOR DEB)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION devel)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+# libOSMesa is loaded at run time (dlopen), so dpkg-shlibdeps cannot see it.
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "libosmesa6")
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS
     "glslang-dev, spirv-tools, libspirv-cross-c-shared-dev, libosmesa6-dev, libpng-dev, nlohmann-json3-dev, libtomlplusplus-dev")
 include(CPack)

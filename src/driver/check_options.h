@@ -53,6 +53,9 @@ struct CheckOptions {
   std::optional<std::filesystem::path> cache_directory;
   std::string tool_identity;
   std::optional<ShardSpec> shard;  // --shard K/N: only this shard's files
+  // Free the text of each file that comes out with no finding as soon as it is checked
+  // (`check`: its reports print findings only). Off for callers that show every file.
+  bool release_clean_texts = false;
 };
 
 }  // namespace shaderport::driver

@@ -109,15 +109,26 @@ CheckRun RunCheck(const CheckOptions& options) {
   std::optional<CheckCache> cache;
   if (options.cache_directory && !options.render && !options.in_memory)
     cache.emplace(options, jobs);
+  const std::vector<std::pair<size_t, size_t>> programs = FindPrograms(jobs, options);
+  // A file with no finding is not read again unless it is linked or rendered below, or
+  // its text is shared (a project's pass): free its text now, so that a run over
+  // thousands of files holds only those with findings.
+  std::vector<bool> keep_text(jobs.size(), !options.release_clean_texts || options.render);
+  for (const auto& [vertex, fragment] : programs) keep_text[vertex] = keep_text[fragment] = true;
   std::vector<FileReport> reports(jobs.size());
   ParallelFor(jobs.size(), options.jobs, [&](size_t i) {
     reports[i] = cache ? cache->Check(i, sources) : CheckFile(jobs[i], options, sources);
+    const FileReport& report = reports[i];
+    if (!keep_text[i] && jobs[i].source == nullptr && report.file != nullptr &&
+        report.diagnostics.empty()) {
+      sources.ReleaseText(report.file->Id());
+    }
     if (!options.render) file_done();
   });
   if (cache) cache->Finish();
   // Programs link once both stages are checked (before renders, whose findings
   // must not stop a link).
-  for (const auto& [vertex, fragment] : FindPrograms(jobs, options)) {
+  for (const auto& [vertex, fragment] : programs) {
     LinkProgram(jobs[vertex], jobs[fragment], options, sources, reports[vertex], reports[fragment]);
   }
   // Each job thread draws with its own render worker (render/isolated_render.h),

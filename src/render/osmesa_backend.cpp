@@ -1,9 +1,8 @@
 // OSMesa needs a client buffer to make a context current; the renderer draws into
 // its own framebuffer object, so a 1x1 buffer is enough.
-#include <GL/osmesa.h>
-
 #include <array>
 
+#include "base/osmesa_library.h"
 #include "render/gl_backend.h"
 
 namespace shaderport::render {
@@ -13,12 +12,14 @@ class OsMesaBackend final : public GlBackend {
  public:
   ~OsMesaBackend() override {
     if (context_ != nullptr) {
-      OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
-      OSMesaDestroyContext(context_);
+      lib_->make_current(nullptr, nullptr, 0, 0, 0);
+      lib_->destroy_context(context_);
     }
   }
 
   bool Start(std::string& error) override {
+    lib_ = LoadOsMesa(error);
+    if (lib_ == nullptr) return false;
     const int attributes[] = {OSMESA_FORMAT,
                               OSMESA_RGBA,
                               OSMESA_DEPTH_BITS,
@@ -30,12 +31,12 @@ class OsMesaBackend final : public GlBackend {
                               OSMESA_CONTEXT_MINOR_VERSION,
                               5,
                               0};
-    context_ = OSMesaCreateContextAttribs(attributes, nullptr);
+    context_ = lib_->create_context_attribs(attributes, nullptr);
     if (context_ == nullptr) {
       error = "OSMesaCreateContextAttribs failed for a core 4.5 context";
       return false;
     }
-    if (!OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, 1, 1)) {
+    if (!lib_->make_current(context_, buffer_.data(), GL_UNSIGNED_BYTE, 1, 1)) {
       error = "OSMesaMakeCurrent failed";
       return false;
     }
@@ -43,10 +44,11 @@ class OsMesaBackend final : public GlBackend {
   }
 
   void* GetProc(const char* name) override {
-    return reinterpret_cast<void*>(OSMesaGetProcAddress(name));
+    return reinterpret_cast<void*>(lib_->get_proc_address(name));
   }
 
  private:
+  const OsMesaLibrary* lib_ = nullptr;  // set by Start; context_ needs it
   OSMesaContext context_ = nullptr;
   std::array<unsigned char, 4> buffer_{};
 };

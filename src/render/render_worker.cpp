@@ -15,6 +15,7 @@
 #include <mutex>
 #include <optional>
 
+#include "base/osmesa_library.h"
 #include "render/outcome_wire.h"
 #include "render/render_worker_child.h"
 #include "render/request_wire.h"
@@ -117,6 +118,12 @@ bool RenderWorker::Start(std::string& error) {
   // another worker, where it stays open until that worker's KeepOnlySocket).
   static std::mutex fork_mutex;
   const std::lock_guard lock(fork_mutex);
+  // OSMesa is loaded on first use (base/osmesa_library.h): load it here, before the
+  // fork, so that workers inherit it loaded as when it was linked, rather than each
+  // running the dynamic loader in a child of a multi-threaded process. A failure is
+  // reported by the worker's backend.
+  std::string ignored;
+  LoadOsMesa(ignored);
   int fds[2];
   if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, fds) != 0) {
     error = std::string("socketpair failed: ") + std::strerror(errno);

@@ -75,6 +75,12 @@ class SourceFile {
   // Byte offset of (line, column), clamped to the line.
   uint32_t OffsetOf(LineColumn location) const;
   SourceRange WholeRange() const { return {id_, 0, static_cast<uint32_t>(text_.size())}; }
+  // Frees the text and line table (the name stays): for a file nothing will read
+  // again, so that a run over thousands of files does not hold them all.
+  void ReleaseText() {
+    std::string().swap(text_);
+    std::vector<uint32_t>{0}.swap(line_starts_);
+  }
 
  private:
   FileId id_;

@@ -40,6 +40,12 @@ class SourceManager {
     return files_.size();
   }
 
+  // SourceFile::ReleaseText of file `id`. The caller must be the only reader of that file.
+  void ReleaseText(FileId id) {
+    const std::lock_guard lock(mutex_);
+    files_.at(id).ReleaseText();
+  }
+
   // Immutable data derived from files of this manager, made once per key and then
   // shared for the manager's life (the parsed ShaderToy header is the same for every
   // pass with the same channels). `make` runs under a lock of its own and may Add().

@@ -1,19 +1,17 @@
 #include "toolchain/toolchain_probe.h"
 
+#include <GL/gl.h>
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
 
+#include <exception>
 #include <spirv-tools/libspirv.hpp>
 #include <spirv_glsl.hpp>
-
-#define GL_GLEXT_PROTOTYPES 1
-#include <GL/gl.h>
-#include <GL/osmesa.h>
-
-#include <exception>
 #include <string>
 #include <vector>
+
+#include "base/osmesa_library.h"
 
 namespace shaderport::toolchain {
 namespace {
@@ -46,6 +44,12 @@ bool CompileProbe(std::vector<uint32_t>& spirv, std::string& error) {
 }
 
 void ProbeOsMesa(ToolchainReport& report) {
+  std::string load_error;
+  const OsMesaLibrary* lib = LoadOsMesa(load_error);
+  if (lib == nullptr) {
+    if (report.error.empty()) report.error = "OSMesa: " + load_error;
+    return;
+  }
   const int attributes[] = {OSMESA_FORMAT,
                             OSMESA_RGBA,
                             OSMESA_PROFILE,
@@ -55,22 +59,26 @@ void ProbeOsMesa(ToolchainReport& report) {
                             OSMESA_CONTEXT_MINOR_VERSION,
                             3,
                             0};
-  OSMesaContext context = OSMesaCreateContextAttribs(attributes, nullptr);
+  OSMesaContext context = lib->create_context_attribs(attributes, nullptr);
   if (context == nullptr) {
     if (report.error.empty()) report.error = "OSMesa: context creation failed";
     return;
   }
   std::vector<unsigned char> pixels(4 * 4 * 4);
-  if (OSMesaMakeCurrent(context, pixels.data(), GL_UNSIGNED_BYTE, 4, 4) != 0) {
-    const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    const auto* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+  if (lib->make_current(context, pixels.data(), GL_UNSIGNED_BYTE, 4, 4) != 0) {
+    using GetStringFn = const GLubyte* (*)(GLenum);
+    const auto get_string = reinterpret_cast<GetStringFn>(lib->get_proc_address("glGetString"));
+    const auto* renderer =
+        get_string ? reinterpret_cast<const char*>(get_string(GL_RENDERER)) : nullptr;
+    const auto* version =
+        get_string ? reinterpret_cast<const char*>(get_string(GL_VERSION)) : nullptr;
     report.osmesa_renderer = renderer != nullptr ? renderer : "";
     report.osmesa_version = version != nullptr ? version : "";
-    OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
+    lib->make_current(nullptr, nullptr, 0, 0, 0);
   } else {
     if (report.error.empty()) report.error = "OSMesa: make current failed";
   }
-  OSMesaDestroyContext(context);
+  lib->destroy_context(context);
 }
 
 }  // namespace

@@ -172,6 +172,7 @@ int RunCheckCommand(const CheckArgs& args) {
       args.quiet && *progress_mode == ProgressMode::kAuto ? ProgressMode::kNever : *progress_mode,
       "checking");
   options.progress = [&progress](size_t done, size_t total) { progress.Update(done, total); };
+  options.release_clean_texts = true;  // the formats below print findings only
   driver::CheckRun run = driver::RunCheck(options);
   progress.Clear();
   for (const std::string& error : run.usage_errors) {

@@ -1,6 +1,7 @@
 #include "glsl/lex/lexer.h"
 
 #include <cstdio>
+#include <cstring>
 #include <string>
 
 #include "base/limits.h"
@@ -12,9 +13,18 @@ namespace {
 
 class Lexer {
  public:
-  explicit Lexer(const SourceFile& file) : file_(file), text_(file.Text()) {}
+  explicit Lexer(const SourceFile& file)
+      : file_(file),
+        text_(file.Text()),
+        // Most files have no backslash: then no line continuation can split a token or
+        // a comment, and the loops below may read bytes directly.
+        plain_(text_.empty() || std::memchr(text_.data(), '\\', text_.size()) == nullptr) {}
 
   LexedFile Run() {
+    // Shaders have about one token and one trivia per five bytes: room for that up
+    // front saves most regrowths (and their copies) of the two arrays.
+    out_.tokens.reserve(text_.size() / 5 + 1);
+    out_.trivia.reserve(text_.size() / 5 + 1);
     size_t p = 0;
     while (true) {
       p = LexTrivia(p);
@@ -59,11 +69,11 @@ class Lexer {
         end = p + lc;
         kind = TriviaKind::kLineContinuation;
       } else if (c == '/' && PeekLogical(text_, p, 1) == '/') {
-        end = LineCommentEnd(text_, p);
+        end = plain_ ? PlainLineCommentEnd(p) : LineCommentEnd(text_, p);
         kind = TriviaKind::kLineComment;
         leading_space_ = true;
       } else if (c == '/' && PeekLogical(text_, p, 1) == '*') {
-        end = BlockCommentEnd(text_, p);
+        end = plain_ ? PlainBlockCommentEnd(p) : BlockCommentEnd(text_, p);
         if (end == kNoEnd) {
           end = n;
           Report("lex/unterminated-comment", p, p + 2,
@@ -87,16 +97,27 @@ class Lexer {
     const char c = text_[p];
     if (IsIdentifierStart(c)) {
       token.kind = TokenKind::kIdentifier;
-      while (IsIdentifierChar(cursor.Ch())) cursor.Bump();
+      if (plain_) {
+        size_t end = p + 1;
+        while (end < text_.size() && IsIdentifierChar(text_[end])) ++end;
+        cursor.SetEnd(end);
+      } else {
+        while (IsIdentifierChar(cursor.Ch())) cursor.Bump();
+      }
     } else if (IsDigit(c) || (c == '.' && IsDigit(cursor.Peek(1)))) {
       token.kind = LexNumber(cursor);
     } else if (c == '#' && at_line_start_) {
       token.kind = TokenKind::kHash;
       cursor.Bump();
-    } else if (int length = 0; (token.punct = MatchPunctuator(c, cursor.Peek(1), cursor.Peek(2),
-                                                              &length)) != Punct::kNone) {
+    } else if (int length = 0;
+               (token.punct = MatchPunctuator(c, PeekFrom(cursor, p, 1), PeekFrom(cursor, p, 2),
+                                              &length)) != Punct::kNone) {
       token.kind = TokenKind::kPunctuator;
-      for (int i = 0; i < length; ++i) cursor.Bump();
+      if (plain_) {
+        cursor.SetEnd(p + static_cast<size_t>(length));
+      } else {
+        for (int i = 0; i < length; ++i) cursor.Bump();
+      }
     } else {
       token.kind = TokenKind::kInvalid;
       cursor.SetEnd(p + InvalidLength(text_, p));
@@ -107,6 +128,26 @@ class Lexer {
     token.text = text_.substr(p, cursor.End() - p);
     Finish(token);
     return cursor.End();
+  }
+
+  // The logical character `k` after `p` (where `cursor` stands); '\0' past the end.
+  char PeekFrom(const Cursor& cursor, size_t p, size_t k) const {
+    if (!plain_) return cursor.Peek(static_cast<int>(k));
+    return p + k < text_.size() ? text_[p + k] : '\0';
+  }
+
+  // LineCommentEnd and BlockCommentEnd for a file without backslashes.
+  size_t PlainLineCommentEnd(size_t p) const {
+    const char* begin = text_.data() + p;
+    const size_t rest = text_.size() - p;
+    const void* lf = std::memchr(begin, '\n', rest);
+    const size_t until = lf ? static_cast<size_t>(static_cast<const char*>(lf) - begin) : rest;
+    const void* cr = std::memchr(begin, '\r', until);
+    return p + (cr ? static_cast<size_t>(static_cast<const char*>(cr) - begin) : until);
+  }
+  size_t PlainBlockCommentEnd(size_t p) const {
+    const size_t close = text_.find("*/", p + 2);
+    return close == std::string_view::npos ? kNoEnd : close + 2;
   }
 
   static TokenKind LexNumber(Cursor& cursor) {
@@ -183,6 +224,7 @@ class Lexer {
 
   const SourceFile& file_;
   std::string_view text_;
+  bool plain_;  // no backslash in the file
   LexedFile out_;
   uint32_t trivia_used_ = 0;
   bool at_line_start_ = true;

@@ -115,6 +115,7 @@ void DefineMacro(PpState& state, const SourceFile& file, std::span<const Token> 
     return;
   }
   std::string name = macro.name;
+  state.NoteMacroName(name);
   state.macros.emplace(std::move(name), std::move(macro));
 }
 
@@ -157,6 +158,7 @@ void AddPredefinedMacros(PpState& state, std::span<const std::string> predefined
         m.body_param.push_back(-1);
       }
     }
+    state.NoteMacroName(m.name);
     state.macros.insert_or_assign(m.name, std::move(m));
   };
   add("__LINE__", BuiltinMacro::kLine, "");

@@ -40,12 +40,20 @@ class PpDriver {
   void Version(std::span<const Token> args, SourceRange range);
   void Extension(std::span<const Token> args, SourceRange range);
   void Line(std::span<const Token> args, SourceRange range);
-  void CheckIdentifierLength(const Token& t);
+  // Runs for every token: the common case (short, or no identifier) stays inline.
+  void CheckIdentifierLength(const Token& t) {
+    const size_t shortest_limit = max_identifier_length_ != 0 ? max_identifier_length_ : 256;
+    if (t.kind == TokenKind::kIdentifier && t.text.size() > shortest_limit) {
+      ReportLongIdentifier(t);
+    }
+  }
+  void ReportLongIdentifier(const Token& t);
   SourceRange RangeOf(const Token& t) const { return {file_->Id(), t.begin, t.end}; }
 
   PpState state_;
   const SourceFile* file_ = nullptr;
   size_t file_index_ = 0;
+  bool file_has_backslash_ = true;  // false: no token of file_ holds a line continuation
   std::vector<const Token*> text_;  // active text tokens since the last directive
   std::vector<ConditionalGroup> groups_;
   uint32_t skip_begin_ = 0;  // start of the inactive region being read

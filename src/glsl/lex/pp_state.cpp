@@ -24,20 +24,8 @@ void PpState::Report(Severity severity, std::string_view rule, SourceRange range
   list.push_back(std::move(d));
 }
 
-PpToken ToPpToken(const SourceFile& file, const Token& token, PpState& state) {
-  PpToken t;
-  t.kind = token.kind;
-  t.punct = token.punct;
-  t.text = token.text;
-  // The parser wants the logical spelling: drop backslash-newlines inside the token.
-  if (token.text.find('\\') != std::string_view::npos && token.kind != TokenKind::kInvalid) {
-    t.text = state.Store(RemoveLineContinuations(token.text));
-  }
-  t.spelling = {file.Id(), token.begin, token.end};
-  t.expansion = t.spelling;
-  t.leading_space = token.leading_space;
-  t.at_line_start = token.at_line_start;
-  return t;
+std::string_view StoreLogicalSpelling(std::string_view text, PpState& state) {
+  return state.Store(RemoveLineContinuations(text));
 }
 
 SourceRange Cover(SourceRange a, SourceRange b) {

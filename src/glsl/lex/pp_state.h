@@ -2,6 +2,7 @@
 // table, the result being built, and the budgets that keep hostile input bounded.
 #pragma once
 
+#include <bitset>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -54,11 +55,23 @@ struct PpState {
 
   explicit PpState(PreprocessResult& r) : result(r) {}
 
+  // The first characters of every name ever defined: most identifiers of a shader are
+  // no macro, and this answers for them without hashing the name.
+  std::bitset<256> macro_initials;
+  void NoteMacroName(std::string_view name) {
+    if (!name.empty()) macro_initials.set(static_cast<unsigned char>(name[0]));
+  }
+  bool MayBeMacro(std::string_view name) const {
+    return name.empty() || macro_initials.test(static_cast<unsigned char>(name[0]));
+  }
+
   const Macro* Find(std::string_view name) const {
+    if (!MayBeMacro(name)) return nullptr;
     auto it = macros.find(name);
     return it == macros.end() ? nullptr : &it->second;
   }
   Macro* FindMutable(std::string_view name) {
+    if (!MayBeMacro(name)) return nullptr;
     auto it = macros.find(name);
     return it == macros.end() ? nullptr : &it->second;
   }
@@ -73,8 +86,29 @@ struct PpState {
   }
 };
 
+// `text` without its line continuations, stored in `state` (the rare case of ToPpToken).
+std::string_view StoreLogicalSpelling(std::string_view text, PpState& state);
+
 // Converts a lexed token of `file` to a PpToken spelled where it is written.
-PpToken ToPpToken(const SourceFile& file, const Token& token, PpState& state);
+// `file_has_backslash` false promises that no token of the file holds a line continuation.
+// Inline: it runs for every token of every file.
+inline PpToken ToPpToken(const SourceFile& file, const Token& token, PpState& state,
+                         bool file_has_backslash = true) {
+  PpToken t;
+  t.kind = token.kind;
+  t.punct = token.punct;
+  t.text = token.text;
+  // The parser wants the logical spelling: drop backslash-newlines inside the token.
+  if (file_has_backslash && token.text.find('\\') != std::string_view::npos &&
+      token.kind != TokenKind::kInvalid) {
+    t.text = StoreLogicalSpelling(token.text, state);
+  }
+  t.spelling = {file.Id(), token.begin, token.end};
+  t.expansion = t.spelling;
+  t.leading_space = token.leading_space;
+  t.at_line_start = token.at_line_start;
+  return t;
+}
 
 // The smallest range covering `a` and `b` when both are in one file in order, else `a`.
 SourceRange Cover(SourceRange a, SourceRange b);

@@ -1,6 +1,7 @@
 #include "glsl/lex/preprocessor.h"
 
 #include <algorithm>
+#include <cstring>
 
 #include "glsl/lex/macro_definitions.h"
 #include "glsl/lex/macro_expander.h"
@@ -25,6 +26,8 @@ void PpDriver::RunFile(const SourceFile& file, size_t index, const LexedFile* gi
   if (given == nullptr) own = Lex(file);
   const LexedFile& lexed = given != nullptr ? *given : own;
   const std::vector<Token>& tokens = lexed.tokens;
+  const std::string_view text = file.Text();
+  file_has_backslash_ = !text.empty() && std::memchr(text.data(), '\\', text.size()) != nullptr;
   size_t i = 0;
   while (tokens[i].kind != TokenKind::kEndOfFile) {
     if (tokens[i].kind != TokenKind::kHash) {
@@ -58,7 +61,7 @@ void PpDriver::RunFile(const SourceFile& file, size_t index, const LexedFile* gi
   AddLexDiagnostics(lexed, first_region);
 }
 
-void PpDriver::CheckIdentifierLength(const Token& t) {
+void PpDriver::ReportLongIdentifier(const Token& t) {
   // WebGL limits identifiers to 256 characters, and to 1024 in GLSL ES 3.00 (WebGL 2).
   const size_t limit = max_identifier_length_                ? max_identifier_length_
                        : state_.result.version.number >= 300 ? 1024
@@ -79,21 +82,36 @@ std::vector<ExpToken> PpDriver::ToExpTokens(std::span<const Token> tokens) {
 void PpDriver::FlushText() {
   if (text_.empty()) return;
   seen_code_ = true;
-  std::vector<ExpToken> input;
-  input.reserve(text_.size());
-  for (const Token* t : text_) input.push_back({ToPpToken(*file_, *t, state_), false});
-  text_.clear();
   auto& out = state_.result.tokens;
+  out.reserve(out.size() + text_.size());
   // The expander passes every token before the first use of a defined macro through
   // unchanged: those go straight to the output, and only the rest is expanded (most
   // runs of code use no macro, or only late).
-  const auto first_use = std::find_if(input.begin(), input.end(), [&](const ExpToken& t) {
-    return t.token.kind == TokenKind::kIdentifier && state_.Find(t.token.text) != nullptr;
-  });
-  out.reserve(out.size() + input.size());
-  for (auto it = input.begin(); it != first_use; ++it) out.push_back(it->token);
-  if (first_use == input.end()) return;
-  input.erase(input.begin(), first_use);
+  // A name's first character is the same with or without line continuations (a token
+  // never starts with one), so MayBeMacro can test the lexed text before converting.
+  size_t i = 0;
+  PpToken first_use;
+  for (; i < text_.size(); ++i) {
+    const Token& t = *text_[i];
+    if (t.kind == TokenKind::kIdentifier && state_.MayBeMacro(t.text)) {
+      first_use = ToPpToken(*file_, t, state_, file_has_backslash_);
+      if (state_.Find(first_use.text) != nullptr) break;
+      out.push_back(first_use);
+      continue;
+    }
+    out.push_back(ToPpToken(*file_, t, state_, file_has_backslash_));
+  }
+  if (i == text_.size()) {
+    text_.clear();
+    return;
+  }
+  std::vector<ExpToken> input;
+  input.reserve(text_.size() - i);
+  input.push_back({first_use, false});
+  for (++i; i < text_.size(); ++i) {
+    input.push_back({ToPpToken(*file_, *text_[i], state_, file_has_backslash_), false});
+  }
+  text_.clear();
   std::vector<ExpToken> expanded = ExpandMacros(state_, std::move(input), false);
   out.reserve(out.size() + expanded.size());
   for (ExpToken& t : expanded) out.push_back(t.token);

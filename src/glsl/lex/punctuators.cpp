@@ -90,11 +90,13 @@ Punct MatchPunctuator(char c0, char c1, char c2, int* length) {
   *length = 0;
   const auto first = static_cast<unsigned char>(c0);
   if (first >= kByFirstChar.size()) return Punct::kNone;
-  const std::array<char, 3> chars = {c0, c1, c2};
   const Candidates& candidates = kByFirstChar[first];
   for (uint8_t k = 0; k < candidates.count; ++k) {
     const auto& [spelling, punct] = kPunctuators[candidates.index[k]];
-    if (std::string_view(chars.data(), spelling.size()) == spelling) {
+    // The first character matches by construction; compare the rest inline (a memcmp
+    // call per candidate cost more than the comparison).
+    const size_t size = spelling.size();
+    if ((size < 2 || spelling[1] == c1) && (size < 3 || spelling[2] == c2)) {
       *length = static_cast<int>(spelling.size());
       return punct;
     }

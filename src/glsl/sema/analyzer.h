@@ -60,7 +60,11 @@ class Analyzer {
   std::vector<Type>* types_ = nullptr;  // expression types of the tree being read
   std::vector<Type> header_types_;
   uint32_t current_scope_ = kNoScope;
-  std::vector<std::unordered_map<std::string, std::vector<uint32_t>>> scope_names_;
+  // One table of the names in scope, each with its symbols, outermost first (inner
+  // scopes declare after outer ones): a lookup is one hash, not one per open scope.
+  std::unordered_map<std::string, std::vector<uint32_t>> visible_;
+  std::vector<uint32_t> scope_symbols_;  // symbols declared in the open scopes, in order
+  std::vector<size_t> scope_marks_;      // scope_symbols_.size() when each scope opened
   std::unordered_map<std::string, uint32_t> builtin_symbols_;
   Type current_return_ = Type::Unknown();
   // Work lists of TypeExpression, kept between calls (it runs for every expression

@@ -33,12 +33,18 @@ SemanticModel Analyzer::Run() {
 void Analyzer::PushScope(uint32_t node) {
   model_.scopes.push_back({current_scope_, recording_ ? node : kNoNode});
   current_scope_ = static_cast<uint32_t>(model_.scopes.size() - 1);
-  scope_names_.emplace_back();
+  scope_marks_.push_back(scope_symbols_.size());
 }
 
 void Analyzer::PopScope() {
   current_scope_ = model_.scopes[current_scope_].parent;
-  scope_names_.pop_back();
+  // The scope's own symbols are the last of their names' lists: drop them, newest first.
+  const size_t mark = scope_marks_.back();
+  scope_marks_.pop_back();
+  for (size_t i = scope_symbols_.size(); i-- > mark;) {
+    visible_[model_.symbols[scope_symbols_[i]].name].pop_back();
+  }
+  scope_symbols_.resize(mark);
 }
 
 uint32_t Analyzer::Declare(Symbol symbol) {
@@ -50,28 +56,29 @@ uint32_t Analyzer::Declare(Symbol symbol) {
   }
   uint32_t id = static_cast<uint32_t>(model_.symbols.size());
   if (symbol.declaration != kNoNode) model_.declarations[symbol.declaration] = id;
-  scope_names_.back()[symbol.name].push_back(id);
+  visible_[symbol.name].push_back(id);
+  scope_symbols_.push_back(id);
   model_.symbols.push_back(std::move(symbol));
   return id;
 }
 
 uint32_t Analyzer::Lookup(const std::string& name) const {
-  for (size_t i = scope_names_.size(); i-- > 0;) {
-    auto it = scope_names_[i].find(name);
-    if (it != scope_names_[i].end() && !it->second.empty()) return it->second.back();
-  }
-  return kNoSymbol;
+  auto it = visible_.find(name);
+  if (it == visible_.end() || it->second.empty()) return kNoSymbol;
+  return it->second.back();
 }
 
 std::vector<uint32_t> Analyzer::LookupFunctions(const std::string& name) const {
-  // A nearer variable or struct of that name hides the functions (GLSL scoping).
-  for (size_t i = scope_names_.size(); i-- > 0;) {
-    auto it = scope_names_[i].find(name);
-    if (it == scope_names_[i].end() || it->second.empty()) continue;
-    if (model_.symbols[it->second.back()].kind != SymbolKind::kFunction) return {};
-    return it->second;
-  }
-  return {};
+  // A nearer variable or struct of that name hides the functions (GLSL scoping): the
+  // answer is every symbol of that name in the innermost scope that has one.
+  auto it = visible_.find(name);
+  if (it == visible_.end() || it->second.empty()) return {};
+  const std::vector<uint32_t>& ids = it->second;
+  const Symbol& nearest = model_.symbols[ids.back()];
+  if (nearest.kind != SymbolKind::kFunction) return {};
+  size_t first = ids.size() - 1;
+  while (first > 0 && model_.symbols[ids[first - 1]].scope == nearest.scope) --first;
+  return std::vector<uint32_t>(ids.begin() + static_cast<std::ptrdiff_t>(first), ids.end());
 }
 
 void Analyzer::Refer(uint32_t node, uint32_t symbol) {

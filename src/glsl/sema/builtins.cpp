@@ -175,6 +175,8 @@ struct Tables {
   std::vector<BuiltinFunction> functions;
   std::vector<BuiltinVariable> variables;
   std::unordered_map<std::string_view, std::vector<uint32_t>> by_name;
+  // The same overloads as pointers, for lookups that must not allocate.
+  std::unordered_map<std::string_view, std::vector<const BuiltinFunction*>> overloads;
 };
 
 const Tables& GetTables() {
@@ -209,6 +211,7 @@ const Tables& GetTables() {
     }
     for (uint32_t i = 0; i < t.functions.size(); ++i) {
       t.by_name[t.functions[i].name].push_back(i);
+      t.overloads[t.functions[i].name].push_back(&t.functions[i]);
     }
     return t;
   }();
@@ -230,6 +233,13 @@ std::vector<const BuiltinFunction*> BuiltinOverloads(std::string_view name) {
   if (it == t.by_name.end()) return out;
   for (uint32_t i : it->second) out.push_back(&t.functions[i]);
   return out;
+}
+
+std::span<const BuiltinFunction* const> BuiltinOverloadList(std::string_view name) {
+  const Tables& t = GetTables();
+  auto it = t.overloads.find(name);
+  if (it == t.overloads.end()) return {};
+  return it->second;
 }
 
 const BuiltinVariable* FindBuiltinVariable(std::string_view name, int version, ShaderStage stage) {

@@ -58,6 +58,8 @@ std::span<const BuiltinVariable> AllBuiltinVariables();
 
 // Every overload named `name`, whatever its availability; empty when there is none.
 std::vector<const BuiltinFunction*> BuiltinOverloads(std::string_view name);
+// The same overloads, without a copy: the list lives as long as the program.
+std::span<const BuiltinFunction* const> BuiltinOverloadList(std::string_view name);
 // The variable named `name` available in (version, stage), else nullptr. Extension rows count
 // as available: whether the extension is enabled is for a rule to check.
 const BuiltinVariable* FindBuiltinVariable(std::string_view name, int version, ShaderStage stage);

@@ -21,12 +21,15 @@ ArgumentMatch Match(std::span<const Param> parameters, std::span<const Type> arg
   return uncertain ? ArgumentMatch::kUncertain : ArgumentMatch::kExact;
 }
 
-// Resolves among `candidates`; nullopt when none matches.
-std::optional<BuiltinCallMatch> ResolveAmong(const std::vector<const BuiltinFunction*>& candidates,
-                                             std::span<const Type> arguments) {
+// Resolves among `candidates` (only those available in `version` and `stage` when
+// `available_only`); nullopt when none matches.
+std::optional<BuiltinCallMatch> ResolveAmong(std::span<const BuiltinFunction* const> candidates,
+                                             std::span<const Type> arguments, bool available_only,
+                                             int version, ShaderStage stage) {
   const BuiltinFunction* uncertain = nullptr;
   bool uncertain_types_agree = true;
   for (const BuiltinFunction* f : candidates) {
+    if (available_only && !f->AvailableIn(version, stage)) continue;
     ArgumentMatch m = MatchArguments(f->params, arguments);
     if (m == ArgumentMatch::kExact) return BuiltinCallMatch{f, false, true};
     if (m == ArgumentMatch::kUncertain) {
@@ -55,13 +58,12 @@ ArgumentMatch MatchArguments(std::span<const BuiltinParam> parameters,
 
 BuiltinCallMatch ResolveBuiltinCall(std::string_view name, std::span<const Type> arguments,
                                     int version, ShaderStage stage) {
-  std::vector<const BuiltinFunction*> all = BuiltinOverloads(name);
-  std::vector<const BuiltinFunction*> available;
-  for (const BuiltinFunction* f : all) {
-    if (f->AvailableIn(version, stage)) available.push_back(f);
+  // Runs for every built-in call (and again per promotion tried): no copies of the list.
+  std::span<const BuiltinFunction* const> all = BuiltinOverloadList(name);
+  if (std::optional<BuiltinCallMatch> m = ResolveAmong(all, arguments, true, version, stage)) {
+    return *m;
   }
-  if (std::optional<BuiltinCallMatch> m = ResolveAmong(available, arguments)) return *m;
-  if (std::optional<BuiltinCallMatch> m = ResolveAmong(all, arguments)) {
+  if (std::optional<BuiltinCallMatch> m = ResolveAmong(all, arguments, false, version, stage)) {
     m->available = false;
     return *m;
   }

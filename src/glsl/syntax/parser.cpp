@@ -21,9 +21,16 @@ Parser::Parser(const PreprocessResult& pp, const ParseOptions& options)
   }
   texts_.reserve(end_index_ + 1);
   words_.reserve(end_index_ + 1);
+  // Tokens are a few bytes long: a loop is cheaper than a memchr call per token.
+  const auto has_backslash = [](std::string_view text) {
+    for (const char c : text) {
+      if (c == '\\') return true;
+    }
+    return false;
+  };
   for (uint32_t i = 0; i < end_index_; ++i) {
     std::string_view text = tokens[i].text;
-    if (text.find('\\') != std::string_view::npos) {
+    if (has_backslash(text)) {
       std::string clean;
       for (size_t k = 0; k < text.size(); ++k) {
         if (text[k] == '\\' && k + 1 < text.size() &&
@@ -254,16 +261,21 @@ void Parser::PopScope() {
 
 void Parser::PlaceEmptyNodes() {
   // A missing operand sits at the next token, which may lie past its parent
-  // (`float a = ;`): move each empty node into its parent so ranges nest.
-  VisitPreorder(tree_, [&](const Node& parent, uint32_t) {
-    ForEachChild(parent, [&](const Node& child) {
-      if (child.HasTokens() || child.range.file != parent.range.file) return;
-      Node& node = tree_.NodeAt(child.id);
-      uint32_t at = std::clamp(node.range.begin, parent.range.begin, parent.range.end);
-      node.range.begin = node.range.end = at;
-    });
-    return true;
-  });
+  // (`float a = ;`): move each empty node into its parent so ranges nest. A loop over
+  // the preorder index (parents come before their children, so each parent is placed
+  // before its children are) with the open ancestors by depth, not a second walk.
+  std::vector<const Node*> ancestors;
+  for (const PreorderEntry& entry : tree_.Preorder()) {
+    ancestors.resize(entry.depth);
+    ancestors.push_back(entry.node);
+    if (entry.depth == 0) continue;
+    const Node& parent = *ancestors[entry.depth - 1];
+    const Node& child = *entry.node;
+    if (child.HasTokens() || child.range.file != parent.range.file) continue;
+    Node& node = tree_.NodeAt(child.id);
+    uint32_t at = std::clamp(node.range.begin, parent.range.begin, parent.range.end);
+    node.range.begin = node.range.end = at;
+  }
 }
 
 ParseResult Parser::Run() {

@@ -1,5 +1,6 @@
 #include "glsl/syntax/visit.h"
 
+#include <algorithm>
 #include <utility>
 #include <vector>
 
@@ -10,28 +11,31 @@ void SyntaxTree::IndexPreorder() {
   preorder_index_.assign(nodes_.size(), kNotInPreorder);
   if (root_ == nullptr) return;
   preorder_.reserve(nodes_.size());
-  // An entry with node == nullptr closes the subtree of preorder_[value]: it pops
-  // after all of that node's descendants were appended.
   struct Item {
     const Node* node;
-    uint32_t value;  // the depth to open a node, the preorder index to close one
+    uint32_t depth;
   };
-  std::vector<Item> stack{{root_, 0}};
+  std::vector<Item> stack{{root_, 0}};  // nodes still to index, the next one last
+  // Indices of the entries whose subtree is still open, deepest last: an entry's subtree
+  // ends where the next node no deeper than it is placed.
+  std::vector<uint32_t> open;
   while (!stack.empty()) {
     const Item item = stack.back();
     stack.pop_back();
     const auto index = static_cast<uint32_t>(preorder_.size());
-    if (item.node == nullptr) {
-      preorder_[item.value].end = index;
-      continue;
+    while (!open.empty() && preorder_[open.back()].depth >= item.depth) {
+      preorder_[open.back()].end = index;
+      open.pop_back();
     }
     preorder_index_[item.node->id] = index;
-    preorder_.push_back({item.node, item.value, 0});
-    stack.push_back({nullptr, index});
+    preorder_.push_back({item.node, item.depth, 0});
+    open.push_back(index);
     const size_t first = stack.size();
-    ForEachChild(*item.node, [&](const Node& child) { stack.push_back({&child, item.value + 1}); });
+    ForEachChild(*item.node, [&](const Node& child) { stack.push_back({&child, item.depth + 1}); });
     std::reverse(stack.begin() + static_cast<std::ptrdiff_t>(first), stack.end());
   }
+  const auto size = static_cast<uint32_t>(preorder_.size());
+  for (const uint32_t index : open) preorder_[index].end = size;
 }
 
 void VisitPostorder(const Node& start, const std::function<void(const Node& node)>& fn) {
