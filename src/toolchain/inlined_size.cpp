@@ -1,5 +1,6 @@
 #include "toolchain/inlined_size.h"
 
+#include <glslang/SPIRV/spirv.hpp>
 #include <limits>
 #include <unordered_map>
 #include <vector>
@@ -7,11 +8,7 @@
 namespace shaderport::toolchain {
 namespace {
 
-constexpr uint32_t kOpEntryPoint = 15;
-constexpr uint32_t kOpFunction = 54;
-constexpr uint32_t kOpFunctionEnd = 56;
-constexpr uint32_t kOpFunctionCall = 57;
-constexpr size_t kHeaderWords = 5;
+constexpr size_t kHeaderWords = 5;  // magic, version, generator, bound, schema
 
 struct Function {
   uint64_t own = 0;               // instructions, calls included
@@ -33,13 +30,13 @@ uint64_t InlinedInstructionCount(const SpirvWords& words) {
     const uint32_t opcode = words[i] & 0xffffu;
     const uint32_t count = words[i] >> 16;
     if (count == 0 || i + count > words.size()) break;  // malformed: stop counting
-    if (opcode == kOpEntryPoint && count > 2 && entry == 0) entry = words[i + 2];
-    if (opcode == kOpFunction && count > 2) current = &functions[words[i + 2]];
+    if (opcode == spv::OpEntryPoint && count > 2 && entry == 0) entry = words[i + 2];
+    if (opcode == spv::OpFunction && count > 2) current = &functions[words[i + 2]];
     if (current != nullptr) {
       ++current->own;
-      if (opcode == kOpFunctionCall && count > 3) current->callees.push_back(words[i + 3]);
+      if (opcode == spv::OpFunctionCall && count > 3) current->callees.push_back(words[i + 3]);
     }
-    if (opcode == kOpFunctionEnd) current = nullptr;
+    if (opcode == spv::OpFunctionEnd) current = nullptr;
     i += count;
   }
   if (!functions.contains(entry)) return 0;

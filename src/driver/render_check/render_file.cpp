@@ -47,8 +47,11 @@ render::RenderOutcome RenderAsBrowser(const render::RenderRequest& request,
     bool complete = true;
     for (render::BufferPass& pass : optimized.buffer_passes) {
       auto text = OptimizeAsBrowser(pass.fragment_source);
-      complete = complete && text.has_value();
-      if (text) pass.fragment_source = std::move(*text);
+      if (!text) {
+        complete = false;  // one pass without the optimiser: none gets it
+        break;
+      }
+      pass.fragment_source = std::move(*text);
     }
     auto text = complete ? OptimizeAsBrowser(request.fragment_source) : std::nullopt;
     if (text) {
