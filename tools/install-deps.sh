@@ -13,7 +13,7 @@ build_packages=(
   libspirv-cross-c-shared-dev spirv-cross
   libosmesa6-dev libpng-dev
   libegl1 libegl-mesa0 libgl1-mesa-dri
-  libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libfmt-dev
+  libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libfmt-dev libmimalloc-dev
 )
 test_packages=(
   clang-14 libclang-rt-14-dev clang-format clang-tidy

@@ -1,5 +1,6 @@
 #include <cstdio>
 
+#include "allocator_name.h"
 #include "commands.h"
 #include "toolchain/toolchain_probe.h"
 
@@ -18,6 +19,7 @@ void AddVersionCommand(CLI::App& app, int& exit_code) {
                                          ? "ESSL 300 output"
                                          : "FAILED");
     std::printf("OSMesa: %s (%s)\n", report.osmesa_renderer.c_str(), report.osmesa_version.c_str());
+    std::printf("allocator: %s\n", AllocatorName().c_str());
     if (!report.error.empty()) {
       std::fprintf(stderr, "shaderport: %s\n", report.error.c_str());
       exit_code = kExitInternal;
