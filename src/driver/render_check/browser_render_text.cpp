@@ -17,6 +17,7 @@ EditResult BrowserRenderTextWithMap(std::string_view text,
   semantics.zero_out_parameters = options.webgl_semantics;
   semantics.cpu_browser_math = options.webgl_semantics && options.cpu_browser_math;
   semantics.source_order_arithmetic = semantics.cpu_browser_math;
+  semantics.opaque_helper_arguments = options.opaque_helper_arguments;
   semantics.add_render_probe = options.add_render_probe;
   semantics.vertex_stage = options.vertex_stage;
   SourceManager local;  // the transform needs a file with an id

@@ -18,6 +18,8 @@ struct BrowserRenderTextOptions {
   // Built-in math and float division as Chromium computes them without a GPU
   // (SwiftShader), bit for bit. Renders only: never in text a user receives.
   bool cpu_browser_math = false;
+  // For text that goes through the SPIR-V optimiser (BrowserSemanticsOptions).
+  bool opaque_helper_arguments = false;
   bool add_render_probe = false;  // loop counts and output writes (main fragment pass)
   bool vertex_stage = false;
 };

@@ -76,6 +76,7 @@ void RenderPrepared(const PreparedShader& shader, const RenderFileOptions& optio
   BrowserRenderTextOptions semantics;
   semantics.webgl_semantics = options.webgl_semantics;
   semantics.cpu_browser_math = true;
+  semantics.opaque_helper_arguments = options.browser_optimiser;
   for (render::BufferPass& pass : request.buffer_passes) {
     pass.fragment_source = BrowserRenderText(pass.fragment_source, semantics);
   }

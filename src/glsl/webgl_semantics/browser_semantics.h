@@ -54,6 +54,10 @@ struct BrowserSemanticsOptions {
   // Fragment outputs declared invariant, so that Mesa keeps float arithmetic in
   // source order as Chromium does (it regroups sums otherwise). For renders only.
   bool source_order_arithmetic = false;
+  // The math helpers' parameters pass through the opaque zero even where the above
+  // and the probe's conditions already keep arithmetic exact for Mesa: the SPIR-V
+  // optimiser (render --browser-optimiser) ignores invariance.
+  bool opaque_helper_arguments = false;
   // Lines of skipped #if groups emptied (conditional directives kept): browsers
   // ignore them, Mesa rejects a bad directive there.
   bool empty_inactive_lines = true;

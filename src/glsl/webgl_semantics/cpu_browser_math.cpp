@@ -120,11 +120,19 @@ class MathRewriter {
     }
     if (!used.empty() || zero_for_divisions) {
       c_.edits.Insert(declare_at->file, declare_at->begin,
-                      CpuMathDefinitions(used, zero_for_divisions));
+                      CpuMathDefinitions(used, zero_for_divisions, !ArithmeticStaysExact()));
     }
   }
 
  private:
+  // Every value reaches an invariant output (source_order_arithmetic.cpp: data through
+  // the outputs, branches through the probe), so Mesa regroups none of it.
+  bool ArithmeticStaysExact() const {
+    const BrowserSemanticsOptions& o = c_.options;
+    return o.source_order_arithmetic && o.add_render_probe && !o.vertex_stage &&
+           !o.opaque_helper_arguments && c_.model.version >= kEssl300;
+  }
+
   // `x / c` becomes `x * (1.0 / (c))`; both compilers then merge the reciprocal into
   // a chain of constant factors (`(v / 65534.0) * 1000.0`). Not through a vector
   // constructor, which the browser's optimiser does not look into and Mesa, having

@@ -346,8 +346,10 @@ std::string Componentwise(std::string_view name, int arity, int float_tail) {
 // Parameters do not use `p - zero`: Mesa turns `0.0 - zero` into `-zero`, a zero of
 // the wrong sign (atan(0.0, x) flipped); a result is never a constant, since no
 // constant reaches the helper. Multiplying results by a select changed 10 pictures
-// of the shared corpus (measured), so they keep `- zero`.
-std::string WithOpaqueParameters(std::string_view text) {
+// of the shared corpus (measured), so they keep `- zero`. Without `parameters` only
+// the results are: where every value reaches an invariant output, Mesa keeps the
+// caller's arithmetic exact anyway, and the selects made a quarter of the compile.
+std::string WithOpaqueParameters(std::string_view text, bool parameters) {
   constexpr std::string_view kReturn = "return ";
   const std::string opaque = std::string(kOpaqueZeroUniform) + " < 0.0 ? -";
   std::string out;
@@ -364,12 +366,12 @@ std::string WithOpaqueParameters(std::string_view text) {
     if (depth == 0 && text[i] == '(') {
       const size_t close = text.find(')', i);
       const size_t brace = text.find('{', close);
-      const std::string_view parameters = text.substr(i + 1, close - i - 1);
+      const std::string_view list = text.substr(i + 1, close - i - 1);
       out.append(text.substr(i, brace + 1 - i));
-      for (size_t begin = 0; begin < parameters.size();) {
-        size_t end = parameters.find(',', begin);
-        if (end == std::string_view::npos) end = parameters.size();
-        const std::string_view parameter = parameters.substr(begin, end - begin);
+      for (size_t begin = 0; parameters && begin < list.size();) {
+        size_t end = list.find(',', begin);
+        if (end == std::string_view::npos) end = list.size();
+        const std::string_view parameter = list.substr(begin, end - begin);
         const std::string name(parameter.substr(parameter.rfind(' ') + 1));
         out.append(" ").append(name).append(" = ").append(opaque).append(name).append(" : ");
         out.append(name).append(";");
@@ -386,7 +388,7 @@ std::string WithOpaqueParameters(std::string_view text) {
   return out;
 }
 
-std::string Definition(const Helper& helper) {
+std::string Definition(const Helper& helper, bool opaque_parameters) {
   switch (helper.shape) {
     case Shape::kInternal:
       return Spell(helper.text);
@@ -404,24 +406,29 @@ std::string Definition(const Helper& helper) {
       return out;
     }
     case Shape::kUnary: {
-      std::string out =
-          WithOpaqueParameters(Spell(helper.text)) + Componentwise(helper.builtin, 1, 0);
+      std::string out = WithOpaqueParameters(Spell(helper.text), opaque_parameters) +
+                        Componentwise(helper.builtin, 1, 0);
       if (helper.builtin == "atan") out += Componentwise(helper.builtin, 2, 0);
       return out;
     }
     case Shape::kBinary:
-      return WithOpaqueParameters(Spell(helper.text)) + Componentwise(helper.builtin, 2, 0);
+      return WithOpaqueParameters(Spell(helper.text), opaque_parameters) +
+             Componentwise(helper.builtin, 2, 0);
     case Shape::kMinMax:
-      return WithOpaqueParameters(Spell(helper.text)) + Componentwise(helper.builtin, 2, 1);
+      return WithOpaqueParameters(Spell(helper.text), opaque_parameters) +
+             Componentwise(helper.builtin, 2, 1);
     case Shape::kMix:
-      return WithOpaqueParameters(Spell(helper.text)) + Componentwise(helper.builtin, 3, 1);
+      return WithOpaqueParameters(Spell(helper.text), opaque_parameters) +
+             Componentwise(helper.builtin, 3, 1);
     case Shape::kReduction:
     case Shape::kGeometric: {
       std::string out = WithOpaqueParameters(
-          Spell(helper.float_text.empty() ? ForSize(helper.text, "float", 1) : helper.float_text));
+          Spell(helper.float_text.empty() ? ForSize(helper.text, "float", 1) : helper.float_text),
+          opaque_parameters);
       for (size_t v = 0; v < kVectors.size(); ++v) {
         out += " " + WithOpaqueParameters(
-                         Spell(ForSize(helper.text, kVectors[v], static_cast<int>(v) + 2)));
+                         Spell(ForSize(helper.text, kVectors[v], static_cast<int>(v) + 2)),
+                         opaque_parameters);
       }
       return out;
     }
@@ -512,7 +519,8 @@ std::string MacroProofHelperText(std::string_view text) {
   return out;
 }
 
-std::string CpuMathDefinitions(const std::set<std::string>& builtins, bool declare_zero) {
+std::string CpuMathDefinitions(const std::set<std::string>& builtins, bool declare_zero,
+                               bool opaque_parameters) {
   std::vector<const Helper*> ordered;
   std::set<std::string_view> seen;
   for (const std::string& name : builtins) AddWithCalls(name, ordered, seen);
@@ -522,7 +530,7 @@ std::string CpuMathDefinitions(const std::set<std::string>& builtins, bool decla
   }
   std::string text;
   if (zero) text = "uniform highp float " + std::string(kOpaqueZeroUniform) + "; ";
-  for (const Helper* helper : ordered) text += Definition(*helper) + " ";
+  for (const Helper* helper : ordered) text += Definition(*helper, opaque_parameters) + " ";
   return MacroProofHelperText(text);
 }
 

@@ -28,7 +28,10 @@ std::string MacroProofHelperText(std::string_view text);
 
 // Definitions (one line, no newline) of the helpers for `builtins` and of every
 // helper they call, each for float and vec2..vec4 where GLSL has such overloads,
-// preceded by the opaque-zero uniform when `declare_zero` is set.
-std::string CpuMathDefinitions(const std::set<std::string>& builtins, bool declare_zero);
+// preceded by the opaque-zero uniform when `declare_zero` is set. Results always pass
+// through the opaque zero; parameters too with `opaque_parameters` (needed unless
+// every value reaches an invariant output, see WithOpaqueParameters).
+std::string CpuMathDefinitions(const std::set<std::string>& builtins, bool declare_zero,
+                               bool opaque_parameters);
 
 }  // namespace shaderport::glsl

@@ -60,6 +60,33 @@ TEST(CpuBrowserMath, BuiltinCallsBecomeHelpersOfEveryOverload) {
       << body;
 }
 
+// Where every value reaches an invariant output (the render's main pass), Mesa keeps
+// the caller's arithmetic exact, so only results pass the opaque zero; text for the
+// SPIR-V optimiser, which ignores invariance, keeps the parameters' selects too.
+TEST(CpuBrowserMath, InvariantOutputsLeaveParametersPlain) {
+  BrowserSemanticsOptions options = MathOnly();
+  options.source_order_arithmetic = true;
+  options.add_render_probe = true;
+  const std::string plain =
+      Body(Apply("void main() { o = vec4(dot(gl_FragCoord.xy, gl_FragCoord.yx)); }\n", options));
+  EXPECT_TRUE(Contains(plain,
+                       "highp float shaderport_dot(highp vec2 shaderport_x, highp vec2 "
+                       "shaderport_y) { highp float shaderport_d = shaderport_x[0] * "
+                       "shaderport_y[0]; shaderport_d = shaderport_x[1] * shaderport_y[1] + "
+                       "shaderport_d; return (shaderport_d) - shaderport_zero; }"))
+      << plain;
+  options.opaque_helper_arguments = true;
+  const std::string opaque =
+      Body(Apply("void main() { o = vec4(dot(gl_FragCoord.xy, gl_FragCoord.yx)); }\n", options));
+  EXPECT_TRUE(Contains(opaque, "{ shaderport_x = shaderport_zero < 0.0 ? -shaderport_x : "))
+      << opaque;
+  options.opaque_helper_arguments = false;
+  options.add_render_probe = false;  // a buffer pass: its branches reach no output
+  EXPECT_TRUE(Contains(
+      Body(Apply("void main() { o = vec4(dot(gl_FragCoord.xy, gl_FragCoord.yx)); }\n", options)),
+      "{ shaderport_x = shaderport_zero < 0.0 ? -shaderport_x : "));
+}
+
 TEST(CpuBrowserMath, ConstantCallsAndGlobalInitializersKeepTheBuiltIn) {
   const auto result = Apply(
       "const float k = sin(0.5);\n"
@@ -265,7 +292,7 @@ TEST(CpuBrowserMath, MinAndMaxGiveTheSecondOperandForNaN) {
 }
 
 TEST(CpuBrowserMath, LibraryDefinesWhatItsHelpersCall) {
-  const std::string text = CpuMathDefinitions({"tan", "pow", "normalize"}, false);
+  const std::string text = CpuMathDefinitions({"tan", "pow", "normalize"}, false, true);
   for (const std::string_view helper :
        {"shaderport_sin5(", "shaderport_sin(", "shaderport_cos(", "shaderport_exp2(",
         "shaderport_log2(", "shaderport_dot(", "uniform highp float shaderport_zero;"}) {
