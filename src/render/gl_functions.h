@@ -80,7 +80,17 @@ namespace shaderport::render {
   X(PFNGLDRAWELEMENTSPROC, DrawElements)                       \
   X(PFNGLDRAWBUFFERSPROC, DrawBuffers)                         \
   X(PFNGLREADBUFFERPROC, ReadBuffer)                           \
-  X(PFNGLGETFRAGDATALOCATIONPROC, GetFragDataLocation)
+  X(PFNGLGETFRAGDATALOCATIONPROC, GetFragDataLocation)         \
+  X(PFNGLDELETETEXTURESPROC, DeleteTextures)                   \
+  X(PFNGLDELETESAMPLERSPROC, DeleteSamplers)                   \
+  X(PFNGLDELETEFRAMEBUFFERSPROC, DeleteFramebuffers)           \
+  X(PFNGLDELETERENDERBUFFERSPROC, DeleteRenderbuffers)         \
+  X(PFNGLDELETEBUFFERSPROC, DeleteBuffers)                     \
+  X(PFNGLDELETEVERTEXARRAYSPROC, DeleteVertexArrays)           \
+  X(PFNGLISPROGRAMPROC, IsProgram)                             \
+  X(PFNGLISSHADERPROC, IsShader)                               \
+  X(PFNGLDELETEPROGRAMPROC, DeleteProgram)                     \
+  X(PFNGLDELETESHADERPROC, DeleteShader)
 
 struct GlFunctions {
 #define SHADERPORT_GL_MEMBER(type, name) type name = nullptr;

@@ -14,10 +14,6 @@ namespace shaderport::render {
 
 namespace {
 
-// A render process has one context; GetProcAddress needs a plain function.
-GlBackend* current_backend = nullptr;
-void* CurrentBackendProc(const char* name) { return current_backend->GetProc(name); }
-
 // Ping-pong pairs for the ShaderToy buffers A..D that the request uses.
 struct BufferTargets {
   std::array<std::array<FloatTarget, 2>, 4> targets{};
@@ -113,24 +109,8 @@ void ReadProbe(const GlFunctions& gl, GLsizei width, GLsizei height, RenderOutco
 
 }  // namespace
 
-RenderOutcome RenderInThisProcess(const RenderRequest& request, BackendKind backend_kind) {
+RenderOutcome DrawRequest(const GlFunctions& gl, const RenderRequest& request) {
   RenderOutcome outcome;
-  std::unique_ptr<GlBackend> backend = CreateBackend(backend_kind);
-  std::string error;
-  if (!backend->Start(error)) {
-    outcome.status = RenderStatus::kContextFailed;
-    outcome.message = std::string(BackendName(backend_kind)) + ": " + error;
-    return outcome;
-  }
-  GlFunctions gl;
-  std::string missing;
-  current_backend = backend.get();
-  if (!LoadGlFunctions(&CurrentBackendProc, gl, missing)) {
-    outcome.status = RenderStatus::kContextFailed;
-    outcome.message = std::string(BackendName(backend_kind)) + ": no entry point " + missing;
-    return outcome;
-  }
-
   const bool user_vertex = !request.vertex_source.empty() && !request.fullscreen_vertex;
   const std::string vertex_text =
       request.vertex_source.empty() ? std::string(kFullScreenVertexShader) : request.vertex_source;
@@ -234,8 +214,7 @@ RenderOutcome RenderInThisProcess(const RenderRequest& request, BackendKind back
   if (probe != 0) ReadProbe(gl, width, height, outcome);
   CollectGlErrors(gl, "glReadPixels", outcome);
   outcome.status = RenderStatus::kOk;
-  // The process exits right after: GL objects die with the context.
-  return outcome;
+  return outcome;  // the caller deletes what was made (ReusableContext)
 }
 
 }  // namespace shaderport::render

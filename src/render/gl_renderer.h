@@ -3,6 +3,7 @@
 // creating a context starts llvmpipe threads that must not exist before a fork.
 #pragma once
 
+#include "render/gl_functions.h"
 #include "render/render_request.h"
 
 namespace shaderport::render {
@@ -11,6 +12,10 @@ namespace shaderport::render {
 extern const char* const kFullScreenVertexShader;
 extern const char* const kFlatFragmentShader;
 
+// Draws `request` with the current context, whose state must be that of a new one.
+RenderOutcome DrawRequest(const GlFunctions& gl, const RenderRequest& request);
+
+// Draws a request with a fresh GL context (see ReusableContext for several).
 RenderOutcome RenderInThisProcess(const RenderRequest& request, BackendKind backend);
 
 }  // namespace shaderport::render

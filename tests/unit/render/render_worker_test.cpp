@@ -96,6 +96,86 @@ TEST(RenderWorker, ServesSeveralRendersIdenticalToFreshProcesses) {
   EXPECT_EQ(worker.Pid(), pid);
 }
 
+// The worker keeps one GL context for the batch and resets it between renders: each
+// request below leaves state a fresh context does not have (buffer targets and
+// mipmaps, textures of every kind with their samplers, a mesh with its vertex array
+// and depth test), and every render after it must still equal a fresh process's.
+TEST(RenderWorker, OneContextForTheBatchLeavesNoStateBehind) {
+  RenderRequest multipass = FragmentRequest(ShaderToyText(
+      "void mainImage(out vec4 c, in vec2 p) {\n"
+      "  c = vec4(texelFetch(iChannel0, ivec2(p), 0).r, textureLod(iChannel0, p / 64.0, 2.0).g,"
+      " 0.5, 1.0);\n}\n"));
+  BufferPass a;
+  a.buffer = 0;
+  a.channel_buffers = {0, -1, -1, -1};
+  a.fragment_source = ShaderToyText(
+      "void mainImage(out vec4 c, in vec2 p) {\n"
+      "  c = texelFetch(iChannel0, ivec2(p), 0) + vec4(0.25, p.x / 64.0, 0.0, 0.0);\n}\n");
+  multipass.buffer_passes = {a};
+  multipass.channel_buffers = {0, -1, -1, -1};
+  multipass.frames = 2;
+  const RenderRequest channels = FragmentRequest(
+      "#version 300 es\nprecision highp float;\n"
+      "uniform samplerCube iChannel0;\nuniform highp sampler3D iChannel1;\n"
+      "uniform sampler2D iChannel2;\nuniform vec3 iResolution;\nout vec4 o;\n"
+      "void main() {\n  vec2 uv = gl_FragCoord.xy / iResolution.xy;\n"
+      "  vec3 d = normalize(vec3(uv * 2.0 - 1.0, 0.6));\n"
+      "  o = vec4(texture(iChannel0, d).r, texture(iChannel1, vec3(uv, 0.3)).g,\n"
+      "           texture(iChannel2, uv).b, 1.0);\n}\n");
+  RenderRequest mesh;
+  mesh.vertex_source =
+      "#version 300 es\nin vec3 Vertex;\nin vec3 Normal;\n"
+      "uniform mat4 ProjectionMatrix;\nuniform mat4 ViewMatrix;\nuniform mat4 ModelMatrix;\n"
+      "out vec3 vNormal;\nvoid main() {\n  vNormal = Normal;\n"
+      "  gl_Position = ProjectionMatrix * ViewMatrix * ModelMatrix * vec4(Vertex, 1.0);\n}\n";
+  mesh.fragment_source =
+      "#version 300 es\nprecision highp float;\nin vec3 vNormal;\nout vec4 o;\n"
+      "void main() { o = vec4(vNormal * 0.5 + 0.5, 1.0); }\n";
+  const std::vector<RenderRequest> requests = {
+      multipass, FragmentRequest(ShaderToyText(kGradient)),
+      channels,  FragmentRequest(ShaderToyText(kRings), 48),
+      mesh,      FragmentRequest(ShaderToyText(kGradient)),
+      multipass, FragmentRequest(ShaderToyText(kCompileError)),
+      channels};
+  RenderWorker worker(Hermetic());
+  for (size_t i = 0; i < requests.size(); ++i) {
+    SCOPED_TRACE(i);
+    const RenderOutcome served = worker.Render(requests[i], kTimeout);
+    if (i != 7) {
+      EXPECT_EQ(served.status, RenderStatus::kOk) << served.fragment_log;
+    }
+    ExpectSameOutcome(served, RenderInFreshProcess(requests[i], FastOptions()));
+  }
+}
+
+// What a render makes is deleted before the next: 16 renders of 1024x1024 with four
+// buffers (ten 16 MiB float targets each) would pass a 2 GiB address space otherwise.
+TEST(RenderWorker, ABatchOfLargeRendersStaysWithinTheAddressSpaceLimit) {
+  RenderRequest request =
+      FragmentRequest(ShaderToyText("void mainImage(out vec4 c, in vec2 p) {\n"
+                                    "  c = texelFetch(iChannel0, ivec2(p), 0) + vec4(0.5);\n}\n"),
+                      1024);
+  for (int k = 0; k < 4; ++k) {
+    BufferPass pass;
+    pass.buffer = k;
+    pass.channel_buffers = {k == 0 ? 3 : k - 1, -1, -1, -1};
+    pass.fragment_source = ShaderToyText(
+        "void mainImage(out vec4 c, in vec2 p) {\n"
+        "  c = texelFetch(iChannel0, ivec2(p), 0) * 0.5 + vec4(p / 1024.0, 0.0, 1.0);\n}\n");
+    request.buffer_passes.push_back(pass);
+  }
+  request.channel_buffers = {3, -1, -1, -1};
+  WorkerSettings settings = Hermetic();
+#if !defined(__SANITIZE_ADDRESS__)
+  settings.address_space_limit = rlim_t{2} << 30;
+#endif
+  RenderWorker worker(settings);
+  for (int i = 0; i < 16; ++i) {
+    const RenderOutcome outcome = worker.Render(request, kTimeout);
+    ASSERT_EQ(outcome.status, RenderStatus::kOk) << i << ": " << outcome.message;
+  }
+}
+
 TEST(RenderWorker, TimeoutKillsOnlyThatRender) {
   RenderWorker worker(Hermetic());
   ASSERT_EQ(worker.Render(FragmentRequest(ShaderToyText(kGradient)), kTimeout).status,
