@@ -85,6 +85,6 @@ awk -v c="$(median "$work/check1" 1)" -v g="$(median "$work/glslang1" 1)" \
   printf "check -j 1 / glslangValidator batched: %.2fx CPU, %.2fx wall\n", c / g, cw / gw
   printf "check -j N / N glslangValidator processes: %.2fx wall\n", jw / pw
   loop = lw * n / (lf < n ? lf : n)
-  printf "glslangValidator per file (loop of %d, scaled to %d): %.1f s wall: check -j 1 is %.1fx faster\n", lf, n, loop, loop / cw
+  printf "glslangValidator per file (loop of %d, scaled to %d): %.1f s wall: check -j 1 is %.1fx faster, check -j N %.1fx\n", lf, n, loop, loop / cw, loop / jw
 }'
 echo "(loop CPU for $loop_files files: ${loop_cpu} s)"

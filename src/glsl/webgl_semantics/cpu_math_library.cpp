@@ -418,8 +418,10 @@ std::string Definition(const Helper& helper, bool opaque_parameters) {
       return WithOpaqueParameters(Spell(helper.text), opaque_parameters) +
              Componentwise(helper.builtin, 2, 1);
     case Shape::kMix:
-      return WithOpaqueParameters(Spell(helper.text), opaque_parameters) +
-             Componentwise(helper.builtin, 3, 1);
+      // Always opaque: without, Mesa still reshaped mix's arithmetic with the caller's
+      // (4sXcWj drew 23 of 64 blocks off Chromium's; the selects of the others made no
+      // difference there).
+      return WithOpaqueParameters(Spell(helper.text), true) + Componentwise(helper.builtin, 3, 1);
     case Shape::kReduction:
     case Shape::kGeometric: {
       std::string out = WithOpaqueParameters(

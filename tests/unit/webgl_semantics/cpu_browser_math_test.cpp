@@ -75,6 +75,10 @@ TEST(CpuBrowserMath, InvariantOutputsLeaveParametersPlain) {
                        "shaderport_y[0]; shaderport_d = shaderport_x[1] * shaderport_y[1] + "
                        "shaderport_d; return (shaderport_d) - shaderport_zero; }"))
       << plain;
+  // mix keeps them: Mesa reshaped its arithmetic with the caller's (4sXcWj).
+  const std::string mixed =
+      Body(Apply("void main() { o = vec4(mix(gl_FragCoord.x, gl_FragCoord.y, 0.3)); }\n", options));
+  EXPECT_TRUE(Contains(mixed, "shaderport_a = shaderport_zero < 0.0 ? -shaderport_a : ")) << mixed;
   options.opaque_helper_arguments = true;
   const std::string opaque =
       Body(Apply("void main() { o = vec4(dot(gl_FragCoord.xy, gl_FragCoord.yx)); }\n", options));
