@@ -88,3 +88,7 @@ awk -v c="$(median "$work/check1" 1)" -v g="$(median "$work/glslang1" 1)" \
   printf "glslangValidator per file (loop of %d, scaled to %d): %.1f s wall: check -j 1 is %.1fx faster, check -j N %.1fx\n", lf, n, loop, loop / cw, loop / jw
 }'
 echo "(loop CPU for $loop_files files: ${loop_cpu} s)"
+# The machine's speed drifts between rounds (a shared VM): the ratio within each round,
+# whose two runs are seconds apart, is steadier than the ratio of the medians.
+paste -d' ' "$work/check1" "$work/glslang1" | awk '{ print $1 / $4 }' | sort -n |
+  awk '{ v[NR] = $1 } END { printf "check -j 1 / glslangValidator batched, median of the per-round CPU ratios: %.2fx (rounds: %d, range %.2f-%.2f)\n", v[int((NR + 1) / 2)], NR, v[1], v[NR] }'
