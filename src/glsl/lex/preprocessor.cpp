@@ -82,11 +82,22 @@ std::vector<ExpToken> PpDriver::ToExpTokens(std::span<const Token> tokens) {
   return out;
 }
 
+namespace {
+
+// Room for `more` tokens at the end of `out`, growing geometrically: reserving the exact
+// size for each run of text copied every token made so far once per run.
+void ReserveMore(std::vector<PpToken>& out, size_t more) {
+  const size_t need = out.size() + more;
+  if (need > out.capacity()) out.reserve(std::max(need, 2 * out.capacity()));
+}
+
+}  // namespace
+
 void PpDriver::FlushText(std::span<const Token> text) {
   if (text.empty()) return;
   seen_code_ = true;
   auto& out = state_.result.tokens;
-  out.reserve(out.size() + text.size());
+  ReserveMore(out, text.size());
   // The expander passes every token before the first use of a defined macro through
   // unchanged: those go straight to the output, and only the rest is expanded (most
   // runs of code use no macro, or only late).
@@ -96,13 +107,14 @@ void PpDriver::FlushText(std::span<const Token> text) {
   PpToken first_use;
   for (; i < text.size(); ++i) {
     const Token& t = text[i];
-    if (t.kind == TokenKind::kIdentifier && state_.MayBeMacro(t.text)) {
-      first_use = ToPpToken(*file_, t, state_, file_has_backslash_);
-      if (state_.Find(first_use.text) != nullptr) break;
-      out.push_back(first_use);
-      continue;
+    PpToken& converted = out.emplace_back();
+    ConvertToPpToken(converted, *file_, t, state_, file_has_backslash_);
+    if (t.kind == TokenKind::kIdentifier && state_.MayBeMacro(t.text) &&
+        state_.Find(converted.text) != nullptr) {
+      first_use = converted;
+      out.pop_back();
+      break;
     }
-    out.push_back(ToPpToken(*file_, t, state_, file_has_backslash_));
   }
   if (i == text.size()) return;
   std::vector<ExpToken> input;
@@ -112,7 +124,7 @@ void PpDriver::FlushText(std::span<const Token> text) {
     input.push_back({ToPpToken(*file_, text[i], state_, file_has_backslash_), false});
   }
   std::vector<ExpToken> expanded = ExpandMacros(state_, std::move(input), false);
-  out.reserve(out.size() + expanded.size());
+  ReserveMore(out, expanded.size());
   for (ExpToken& t : expanded) out.push_back(t.token);
 }
 
