@@ -557,6 +557,12 @@ class SyntaxTree {
     void (*destroy)(Node*);
   };
   void DestroyNodes();
+  // A node waiting to be placed by IndexPreorder, with its depth.
+  struct PreorderItem {
+    const Node* node;
+    uint32_t depth;
+  };
+  void IndexSharedPreorder();  // IndexPreorder for a tree with a node under two parents
 
   std::unique_ptr<std::pmr::monotonic_buffer_resource> arena_;
   std::vector<Node*> nodes_;

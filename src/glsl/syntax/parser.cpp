@@ -12,17 +12,10 @@ namespace shaderport::glsl {
 Parser::Parser(const PreprocessResult& pp, const ParseOptions& options)
     : pp_(pp), options_(options) {
   const auto& tokens = pp_.tokens;
-  end_index_ = static_cast<uint32_t>(tokens.size());
-  for (uint32_t i = 0; i < tokens.size(); ++i) {
-    if (tokens[i].kind == TokenKind::kEndOfFile) {
-      end_index_ = i;
-      break;
-    }
-  }
   // Sized once and written in place (zero is an empty text and a plain identifier's
-  // WordInfo): cheaper than two push_backs for every token.
-  texts_.resize(end_index_ + 1);
-  words_.resize(end_index_ + 1);
+  // WordInfo), then cut after the end of file: cheaper than two push_backs a token.
+  texts_.resize(tokens.size() + 1);
+  words_.resize(tokens.size() + 1);
   // Tokens are a few bytes long: a loop is cheaper than a memchr call per token.
   const auto has_backslash = [](std::string_view text) {
     for (const char c : text) {
@@ -30,10 +23,16 @@ Parser::Parser(const PreprocessResult& pp, const ParseOptions& options)
     }
     return false;
   };
-  for (uint32_t i = 0; i < end_index_; ++i) {
+  end_index_ = static_cast<uint32_t>(tokens.size());
+  for (uint32_t i = 0; i < tokens.size(); ++i) {
     const PpToken& token = tokens[i];
+    if (token.kind == TokenKind::kEndOfFile) {
+      end_index_ = i;
+      break;
+    }
     std::string_view text = token.text;
-    if (has_backslash(text)) {
+    // A one-byte token has no backslash-newline to remove.
+    if (text.size() > 1 && has_backslash(text)) {
       std::string clean;
       for (size_t k = 0; k < text.size(); ++k) {
         if (text[k] == '\\' && k + 1 < text.size() &&
@@ -49,6 +48,8 @@ Parser::Parser(const PreprocessResult& pp, const ParseOptions& options)
     texts_[i] = text;
     if (token.kind == TokenKind::kIdentifier) words_[i] = ClassifyWord(text, options_.version);
   }
+  texts_.resize(end_index_ + 1);
+  words_.resize(end_index_ + 1);
 }
 
 // ------------------------------------------------------------------ tokens
