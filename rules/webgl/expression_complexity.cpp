@@ -17,6 +17,16 @@ constexpr std::string_view kId = "webgl/expression-complexity";
 // ANGLE's MaxExpressionComplexity as Chromium sets it for WebGL.
 constexpr uint32_t kMaxDepth = 256;
 
+// Out of line, so that the walk's callback stays small enough to be inlined (it runs for
+// every node of every tree; the report for at most one).
+[[gnu::noinline]] void ReportTooDeep(rule::RuleContext& context, const SourceRange& range) {
+  webgl::ReportError(context, kId, range,
+                     "expression too complex: its syntax tree is more than " +
+                         std::to_string(kMaxDepth) +
+                         " levels deep, and browsers reject such shaders; split it into "
+                         "several statements");
+}
+
 class ExpressionComplexityRule final : public rule::Rule {
  public:
   const rule::RuleInfo& Info() const override {
@@ -35,11 +45,7 @@ class ExpressionComplexityRule final : public rule::Rule {
       if (reported) return false;
       if (!node.IsExpr()) statement = &node;
       if (depth <= kMaxDepth) return true;
-      webgl::ReportError(context, kId, statement != nullptr ? statement->range : node.range,
-                         "expression too complex: its syntax tree is more than " +
-                             std::to_string(kMaxDepth) +
-                             " levels deep, and browsers reject such shaders; split it into "
-                             "several statements");
+      ReportTooDeep(context, statement != nullptr ? statement->range : node.range);
       reported = true;
       return false;
     });
