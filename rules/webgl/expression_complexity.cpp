@@ -40,8 +40,20 @@ class ExpressionComplexityRule final : public rule::Rule {
     // Our tree has about as many levels as the browser's (a function, its body,
     // a statement, then the expression).
     const glsl::Node* statement = nullptr;
+    const glsl::SyntaxTree& tree = context.Tree();
+    if (tree.Root() != nullptr && !tree.Preorder().empty()) {
+      // Every node up to the first too deep one is visited: a plain loop over the index
+      // (the root's entry is the first, at depth 0).
+      for (const glsl::PreorderEntry& entry : tree.Preorder()) {
+        if (!entry.node->IsExpr()) statement = entry.node;
+        if (entry.depth <= kMaxDepth) continue;
+        ReportTooDeep(context, statement != nullptr ? statement->range : entry.node->range);
+        return;
+      }
+      return;
+    }
     bool reported = false;
-    glsl::VisitPreorder(context.Tree(), [&](const glsl::Node& node, uint32_t depth) {
+    glsl::VisitPreorder(tree, [&](const glsl::Node& node, uint32_t depth) {
       if (reported) return false;
       if (!node.IsExpr()) statement = &node;
       if (depth <= kMaxDepth) return true;

@@ -84,7 +84,11 @@ Type Analyzer::TypeExpression(const Expr* root) {
   while (!stack.empty()) {
     auto [expr, expanded] = stack.back();
     stack.pop_back();
-    if (!expanded) {
+    // A name or a literal has no operands: typed at once, not pushed back to wait for
+    // them (the same order: it would be the next one popped).
+    const bool leaf =
+        expr->kind == NodeKind::kIdentifierExpr || expr->kind == NodeKind::kLiteralExpr;
+    if (!expanded && !leaf) {
       stack.push_back({expr, true});
       operands.clear();
       Operands(*expr, operands);
