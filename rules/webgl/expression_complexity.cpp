@@ -17,6 +17,16 @@ constexpr std::string_view kId = "webgl/expression-complexity";
 // ANGLE's MaxExpressionComplexity as Chromium sets it for WebGL.
 constexpr uint32_t kMaxDepth = 256;
 
+// Out of line, so that the walk's callback stays small enough to be inlined (it runs for
+// every node of every tree; the report for at most one).
+[[gnu::noinline]] void ReportTooDeep(rule::RuleContext& context, const SourceRange& range) {
+  webgl::ReportError(context, kId, range,
+                     "expression too complex: its syntax tree is more than " +
+                         std::to_string(kMaxDepth) +
+                         " levels deep, and browsers reject such shaders; split it into "
+                         "several statements");
+}
+
 class ExpressionComplexityRule final : public rule::Rule {
  public:
   const rule::RuleInfo& Info() const override {
@@ -30,16 +40,24 @@ class ExpressionComplexityRule final : public rule::Rule {
     // Our tree has about as many levels as the browser's (a function, its body,
     // a statement, then the expression).
     const glsl::Node* statement = nullptr;
+    const glsl::SyntaxTree& tree = context.Tree();
+    if (tree.Root() != nullptr && !tree.Preorder().empty()) {
+      // Every node up to the first too deep one is visited: a plain loop over the index
+      // (the root's entry is the first, at depth 0).
+      for (const glsl::PreorderEntry& entry : tree.Preorder()) {
+        if (!entry.node->IsExpr()) statement = entry.node;
+        if (entry.depth <= kMaxDepth) continue;
+        ReportTooDeep(context, statement != nullptr ? statement->range : entry.node->range);
+        return;
+      }
+      return;
+    }
     bool reported = false;
-    glsl::VisitPreorder(context.Tree(), [&](const glsl::Node& node, uint32_t depth) {
+    glsl::VisitPreorder(tree, [&](const glsl::Node& node, uint32_t depth) {
       if (reported) return false;
       if (!node.IsExpr()) statement = &node;
       if (depth <= kMaxDepth) return true;
-      webgl::ReportError(context, kId, statement != nullptr ? statement->range : node.range,
-                         "expression too complex: its syntax tree is more than " +
-                             std::to_string(kMaxDepth) +
-                             " levels deep, and browsers reject such shaders; split it into "
-                             "several statements");
+      ReportTooDeep(context, statement != nullptr ? statement->range : node.range);
       reported = true;
       return false;
     });

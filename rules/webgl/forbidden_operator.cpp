@@ -33,38 +33,49 @@ class ForbiddenOperatorRule final : public rule::Rule {
   }
 
   void Run(rule::RuleContext& context) const override {
-    const glsl::SemanticModel& model = context.Model();
     const bool strict_ternary = webgl::IsEssl100(context) || webgl::InWebgl2(context);
+    // Only the two kinds are looked at: the test stays inline in the walk, the rest not.
     glsl::VisitPreorder(context.Tree(), [&](const glsl::Node& node, uint32_t) {
-      if (const auto* conditional = node.As<glsl::ConditionalExpr>()) {
-        if (conditional->if_true == nullptr) return true;
-        const glsl::Type& type = model.TypeOf(conditional->if_true->id);
-        const char* what = nullptr;
-        if (strict_ternary && type.IsArray()) what = "arrays";
-        if (strict_ternary && type.base == glsl::BaseType::kStruct && !type.IsArray()) {
-          what = "structs";
-        }
-        if (webgl::InWebgl2(context) && type.IsVoid()) what = "void";
-        if (what != nullptr) {
-          webgl::ReportError(context, kId, conditional->range,
-                             std::string("the ternary operator '?:' is not allowed on ") + what +
-                                 " in WebGL; use an if statement");
-        }
-        return true;
-      }
-      const auto* binary = node.As<glsl::BinaryExpr>();
-      if (binary == nullptr || binary->op != glsl::BinaryOp::kComma || !webgl::InWebgl2(context)) {
-        return true;
-      }
-      for (const glsl::Expr* operand : {binary->lhs, binary->rhs}) {
-        if (operand == nullptr || !NotInSequence(model, model.TypeOf(operand->id))) continue;
-        webgl::ReportError(context, kId, binary->op_range,
-                           "the sequence operator ',' is not allowed on void, arrays or structs "
-                           "containing arrays in WebGL 2");
-        break;
+      if (node.kind == glsl::NodeKind::kConditionalExpr) {
+        CheckConditional(context, *node.As<glsl::ConditionalExpr>(), strict_ternary);
+      } else if (node.kind == glsl::NodeKind::kBinaryExpr &&
+                 node.As<glsl::BinaryExpr>()->op == glsl::BinaryOp::kComma) {
+        CheckSequence(context, *node.As<glsl::BinaryExpr>());
       }
       return true;
     });
+  }
+
+ private:
+  [[gnu::noinline]] static void CheckConditional(rule::RuleContext& context,
+                                                 const glsl::ConditionalExpr& conditional,
+                                                 bool strict_ternary) {
+    if (conditional.if_true == nullptr) return;
+    const glsl::Type& type = context.Model().TypeOf(conditional.if_true->id);
+    const char* what = nullptr;
+    if (strict_ternary && type.IsArray()) what = "arrays";
+    if (strict_ternary && type.base == glsl::BaseType::kStruct && !type.IsArray()) {
+      what = "structs";
+    }
+    if (webgl::InWebgl2(context) && type.IsVoid()) what = "void";
+    if (what != nullptr) {
+      webgl::ReportError(context, kId, conditional.range,
+                         std::string("the ternary operator '?:' is not allowed on ") + what +
+                             " in WebGL; use an if statement");
+    }
+  }
+
+  [[gnu::noinline]] static void CheckSequence(rule::RuleContext& context,
+                                              const glsl::BinaryExpr& binary) {
+    if (!webgl::InWebgl2(context)) return;
+    const glsl::SemanticModel& model = context.Model();
+    for (const glsl::Expr* operand : {binary.lhs, binary.rhs}) {
+      if (operand == nullptr || !NotInSequence(model, model.TypeOf(operand->id))) continue;
+      webgl::ReportError(context, kId, binary.op_range,
+                         "the sequence operator ',' is not allowed on void, arrays or structs "
+                         "containing arrays in WebGL 2");
+      break;
+    }
   }
 };
 

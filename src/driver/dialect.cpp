@@ -1,7 +1,7 @@
 #include "driver/dialect.h"
 
-#include <set>
 #include <string>
+#include <string_view>
 
 #include "glsl/lex/lexer.h"
 #include "source/source_file.h"
@@ -56,13 +56,26 @@ std::optional<Stage> StageFromExtension(const std::filesystem::path& path) {
 
 // What the code says about itself, read from real tokens so that words in
 // comments do not count.
+// Only the entry points matter for detection: flags instead of a set of every defined
+// name (a string and a tree node per function of every file).
 struct CodeFacts {
   bool version_300 = false;
   bool version_directive = false;
-  std::set<std::string, std::less<>> defined_functions;  // `name (` at file scope-ish
+  // `type name (` at file scope-ish, for each entry point name
+  bool defines_main = false;
+  bool defines_main_image = false;
+  bool defines_main_cubemap = false;
+  bool defines_main_sound = false;
   bool writes_gl_position = false;
   bool uses_attribute = false;
 };
+
+void NoteDefinedFunction(std::string_view name, CodeFacts& facts) {
+  if (name == "main") facts.defines_main = true;
+  if (name == "mainImage") facts.defines_main_image = true;
+  if (name == "mainCubemap") facts.defines_main_cubemap = true;
+  if (name == "mainSound") facts.defines_main_sound = true;
+}
 
 CodeFacts ReadFacts(const glsl::LexedFile& lexed) {
   CodeFacts facts;
@@ -80,7 +93,7 @@ CodeFacts ReadFacts(const glsl::LexedFile& lexed) {
     // `type name (` is a function declaration or definition.
     if (i > 0 && i + 1 < tokens.size() && tokens[i - 1].kind == glsl::TokenKind::kIdentifier &&
         tokens[i + 1].punct == glsl::Punct::kLeftParen) {
-      facts.defined_functions.insert(std::string(token.text));
+      NoteDefinedFunction(token.text, facts);
     }
   }
   return facts;
@@ -96,16 +109,14 @@ DetectedKind DetectKind(std::string_view text, const std::filesystem::path& path
 DetectedKind DetectKind(const glsl::LexedFile& lexed, const std::filesystem::path& path) {
   const CodeFacts facts = ReadFacts(lexed);
   DetectedKind kind;
-  const bool has_main = facts.defined_functions.contains("main");
+  const bool has_main = facts.defines_main;
   if (facts.version_300) {
     kind.dialect = Dialect::kWebGL2;
   } else if (!has_main && !facts.version_directive &&
-             (facts.defined_functions.contains("mainImage") ||
-              facts.defined_functions.contains("mainCubemap") ||
-              facts.defined_functions.contains("mainSound"))) {
+             (facts.defines_main_image || facts.defines_main_cubemap || facts.defines_main_sound)) {
     kind.dialect = Dialect::kShaderToy;
-    if (facts.defined_functions.contains("mainCubemap")) kind.pass = ShaderToyPass::kCubemap;
-    if (facts.defined_functions.contains("mainSound")) kind.pass = ShaderToyPass::kSound;
+    if (facts.defines_main_cubemap) kind.pass = ShaderToyPass::kCubemap;
+    if (facts.defines_main_sound) kind.pass = ShaderToyPass::kSound;
   } else if (!has_main && !facts.version_directive && path.filename() == "common.glsl") {
     kind.dialect = Dialect::kShaderToy;
     kind.pass = ShaderToyPass::kCommon;

@@ -4,7 +4,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <array>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
@@ -23,15 +22,14 @@ InputText Reject(std::string rule_id, std::string message) {
 bool LooksBinary(std::string_view text) {
   if (text.find('\0') != std::string_view::npos) return true;
   const std::string_view head = text.substr(0, 4096);
-  // A table instead of five comparisons a byte: this runs over every file checked.
-  static constexpr std::array<uint8_t, 256> kIsControl = [] {
-    std::array<uint8_t, 256> table{};
-    for (int byte = 0; byte < 0x20; ++byte) table[byte] = 1;
-    for (const char c : {'\n', '\r', '\t', '\f', '\v'}) table[static_cast<unsigned char>(c)] = 0;
-    return table;
-  }();
+  // Control bytes are those below 0x20 but \t \n \v \f \r (9 to 13): two comparisons
+  // without branches or a table, which the compiler turns into vector code (this runs
+  // over every file checked).
   size_t control = 0;
-  for (const char c : head) control += kIsControl[static_cast<unsigned char>(c)];
+  for (const char c : head) {
+    const auto byte = static_cast<uint8_t>(c);
+    control += static_cast<size_t>((byte < 0x20) & (static_cast<uint8_t>(byte - 9) > 4));
+  }
   return control * 10 > head.size();
 }
 

@@ -3,7 +3,9 @@
 // before tokenizing; the bytes stay in the token text so nothing is lost.
 #pragma once
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -11,7 +13,24 @@ namespace shaderport::glsl {
 
 inline constexpr size_t kNoEnd = static_cast<size_t>(-1);
 
-inline bool IsHorizontalSpace(char c) { return c == ' ' || c == '\t' || c == '\f' || c == '\v'; }
+// Character classes by table: the lexer asks for nearly every byte of a file, and a
+// lookup is cheaper than the chains of comparisons.
+inline constexpr uint8_t kSpaceClass = 1;       // horizontal space
+inline constexpr uint8_t kIdentifierClass = 2;  // letter, digit or '_'
+inline constexpr std::array<uint8_t, 256> kCharClass = [] {
+  std::array<uint8_t, 256> table{};
+  for (const char c : {' ', '\t', '\f', '\v'}) table[static_cast<unsigned char>(c)] = kSpaceClass;
+  for (int c = 0; c < 256; ++c) {
+    if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_' || (c >= '0' && c <= '9')) {
+      table[static_cast<size_t>(c)] = kIdentifierClass;
+    }
+  }
+  return table;
+}();
+
+inline bool IsHorizontalSpace(char c) {
+  return kCharClass[static_cast<unsigned char>(c)] == kSpaceClass;
+}
 inline bool IsDigit(char c) { return c >= '0' && c <= '9'; }
 inline bool IsHexDigit(char c) {
   return IsDigit(c) || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F');
@@ -19,7 +38,9 @@ inline bool IsHexDigit(char c) {
 inline bool IsIdentifierStart(char c) {
   return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
 }
-inline bool IsIdentifierChar(char c) { return IsIdentifierStart(c) || IsDigit(c); }
+inline bool IsIdentifierChar(char c) {
+  return kCharClass[static_cast<unsigned char>(c)] == kIdentifierClass;
+}
 
 // The four below run for nearly every byte of a file: inline.
 

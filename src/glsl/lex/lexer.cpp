@@ -65,7 +65,7 @@ class Lexer {
         kind = TriviaKind::kNewline;
         at_line_start_ = true;
         leading_space_ = false;
-      } else if (size_t lc = ContinuationLength(text_, p)) {
+      } else if (size_t lc = plain_ ? 0 : ContinuationLength(text_, p)) {
         end = p + lc;
         kind = TriviaKind::kLineContinuation;
       } else if (c == '/' && PeekLogical(text_, p, 1) == '/') {

@@ -29,7 +29,8 @@ class PpDriver {
  private:
   // preprocessor.cpp
   bool Active() const { return groups_.empty() || groups_.back().active; }
-  void FlushText();
+  // Preprocesses a run of active text tokens (no directive among them) into the result.
+  void FlushText(std::span<const Token> text);
   std::vector<ExpToken> ToExpTokens(std::span<const Token> tokens);
   void AddLexDiagnostics(const LexedFile& lexed, size_t first_region);
 
@@ -54,7 +55,6 @@ class PpDriver {
   const SourceFile* file_ = nullptr;
   size_t file_index_ = 0;
   bool file_has_backslash_ = true;  // false: no token of file_ holds a line continuation
-  std::vector<const Token*> text_;  // active text tokens since the last directive
   std::vector<ConditionalGroup> groups_;
   uint32_t skip_begin_ = 0;  // start of the inactive region being read
   bool seen_token_ = false;  // #version must come before every other token

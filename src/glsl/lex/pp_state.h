@@ -89,12 +89,12 @@ struct PpState {
 // `text` without its line continuations, stored in `state` (the rare case of ToPpToken).
 std::string_view StoreLogicalSpelling(std::string_view text, PpState& state);
 
-// Converts a lexed token of `file` to a PpToken spelled where it is written.
+// Converts a lexed token of `file` to a PpToken spelled where it is written, into `t`
+// (a default PpToken): FlushText builds the output in place, without a copy per token.
 // `file_has_backslash` false promises that no token of the file holds a line continuation.
 // Inline: it runs for every token of every file.
-inline PpToken ToPpToken(const SourceFile& file, const Token& token, PpState& state,
-                         bool file_has_backslash = true) {
-  PpToken t;
+inline void ConvertToPpToken(PpToken& t, const SourceFile& file, const Token& token, PpState& state,
+                             bool file_has_backslash = true) {
   t.kind = token.kind;
   t.punct = token.punct;
   t.text = token.text;
@@ -107,6 +107,12 @@ inline PpToken ToPpToken(const SourceFile& file, const Token& token, PpState& st
   t.expansion = t.spelling;
   t.leading_space = token.leading_space;
   t.at_line_start = token.at_line_start;
+}
+
+inline PpToken ToPpToken(const SourceFile& file, const Token& token, PpState& state,
+                         bool file_has_backslash = true) {
+  PpToken t;
+  ConvertToPpToken(t, file, token, state, file_has_backslash);
   return t;
 }
 

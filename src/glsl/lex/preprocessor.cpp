@@ -30,23 +30,26 @@ void PpDriver::RunFile(const SourceFile& file, size_t index, const LexedFile* gi
   file_has_backslash_ = !text.empty() && std::memchr(text.data(), '\\', text.size()) != nullptr;
   size_t i = 0;
   while (tokens[i].kind != TokenKind::kEndOfFile) {
+    size_t end = i + 1;
     if (tokens[i].kind != TokenKind::kHash) {
+      // A run of text up to the next directive: only a directive can change whether
+      // code is active, so the whole run is compiled or skipped.
+      while (tokens[end].kind != TokenKind::kEndOfFile && tokens[end].kind != TokenKind::kHash) {
+        ++end;
+      }
       if (Active()) {
-        text_.push_back(&tokens[i]);
-        CheckIdentifierLength(tokens[i]);
+        for (size_t k = i; k < end; ++k) CheckIdentifierLength(tokens[k]);
+        FlushText(std::span<const Token>(tokens).subspan(i, end - i));
       }
       seen_token_ = true;
-      ++i;
+      i = end;
       continue;
     }
-    size_t end = i + 1;
     while (tokens[end].kind != TokenKind::kEndOfFile && !tokens[end].at_line_start) ++end;
-    FlushText();
     Directive(std::span<const Token>(tokens).subspan(i, end - i));
     seen_token_ = true;
     i = end;
   }
-  FlushText();
   // A conditional group may not span files.
   while (groups_.size() > outer_groups) {
     const ConditionalGroup& g = groups_.back();
@@ -79,11 +82,22 @@ std::vector<ExpToken> PpDriver::ToExpTokens(std::span<const Token> tokens) {
   return out;
 }
 
-void PpDriver::FlushText() {
-  if (text_.empty()) return;
+namespace {
+
+// Room for `more` tokens at the end of `out`, growing geometrically: reserving the exact
+// size for each run of text copied every token made so far once per run.
+void ReserveMore(std::vector<PpToken>& out, size_t more) {
+  const size_t need = out.size() + more;
+  if (need > out.capacity()) out.reserve(std::max(need, 2 * out.capacity()));
+}
+
+}  // namespace
+
+void PpDriver::FlushText(std::span<const Token> text) {
+  if (text.empty()) return;
   seen_code_ = true;
   auto& out = state_.result.tokens;
-  out.reserve(out.size() + text_.size());
+  ReserveMore(out, text.size());
   // The expander passes every token before the first use of a defined macro through
   // unchanged: those go straight to the output, and only the rest is expanded (most
   // runs of code use no macro, or only late).
@@ -91,29 +105,26 @@ void PpDriver::FlushText() {
   // never starts with one), so MayBeMacro can test the lexed text before converting.
   size_t i = 0;
   PpToken first_use;
-  for (; i < text_.size(); ++i) {
-    const Token& t = *text_[i];
-    if (t.kind == TokenKind::kIdentifier && state_.MayBeMacro(t.text)) {
-      first_use = ToPpToken(*file_, t, state_, file_has_backslash_);
-      if (state_.Find(first_use.text) != nullptr) break;
-      out.push_back(first_use);
-      continue;
+  for (; i < text.size(); ++i) {
+    const Token& t = text[i];
+    PpToken& converted = out.emplace_back();
+    ConvertToPpToken(converted, *file_, t, state_, file_has_backslash_);
+    if (t.kind == TokenKind::kIdentifier && state_.MayBeMacro(t.text) &&
+        state_.Find(converted.text) != nullptr) {
+      first_use = converted;
+      out.pop_back();
+      break;
     }
-    out.push_back(ToPpToken(*file_, t, state_, file_has_backslash_));
   }
-  if (i == text_.size()) {
-    text_.clear();
-    return;
-  }
+  if (i == text.size()) return;
   std::vector<ExpToken> input;
-  input.reserve(text_.size() - i);
+  input.reserve(text.size() - i);
   input.push_back({first_use, false});
-  for (++i; i < text_.size(); ++i) {
-    input.push_back({ToPpToken(*file_, *text_[i], state_, file_has_backslash_), false});
+  for (++i; i < text.size(); ++i) {
+    input.push_back({ToPpToken(*file_, text[i], state_, file_has_backslash_), false});
   }
-  text_.clear();
   std::vector<ExpToken> expanded = ExpandMacros(state_, std::move(input), false);
-  out.reserve(out.size() + expanded.size());
+  ReserveMore(out, expanded.size());
   for (ExpToken& t : expanded) out.push_back(t.token);
 }
 

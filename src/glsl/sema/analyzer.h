@@ -63,9 +63,14 @@ class Analyzer {
   // One table of the names in scope, each with its symbols, outermost first (inner
   // scopes declare after outer ones): a lookup is one hash, not one per open scope.
   std::unordered_map<std::string, std::vector<uint32_t>> visible_;
-  std::vector<uint32_t> scope_symbols_;  // symbols declared in the open scopes, in order
-  std::vector<size_t> scope_marks_;      // scope_symbols_.size() when each scope opened
-  std::unordered_map<std::string, uint32_t> builtin_symbols_;
+  // For each symbol declared in the open scopes, in order, its name's list in visible_
+  // (map nodes never move), so that closing a scope hashes no name again.
+  std::vector<std::vector<uint32_t>*> scope_symbols_;
+  std::vector<size_t> scope_marks_;  // scope_symbols_.size() when each scope opened
+  std::unordered_map<std::string, uint32_t> builtin_symbols_;  // built-in variables by name
+  // Built-in functions by their overload list (one per name): no key string to build.
+  std::unordered_map<const BuiltinFunction* const*, uint32_t> builtin_function_symbols_;
+  std::vector<Type> call_arguments_;  // CallType's argument types, kept between calls
   Type current_return_ = Type::Unknown();
   // Work lists of TypeExpression, kept between calls (it runs for every expression
   // statement and initializer, and two fresh vectors a call were a heap allocation

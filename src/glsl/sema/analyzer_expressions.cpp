@@ -84,7 +84,11 @@ Type Analyzer::TypeExpression(const Expr* root) {
   while (!stack.empty()) {
     auto [expr, expanded] = stack.back();
     stack.pop_back();
-    if (!expanded) {
+    // A name or a literal has no operands: typed at once, not pushed back to wait for
+    // them (the same order: it would be the next one popped).
+    const bool leaf =
+        expr->kind == NodeKind::kIdentifierExpr || expr->kind == NodeKind::kLiteralExpr;
+    if (!expanded && !leaf) {
       stack.push_back({expr, true});
       operands.clear();
       Operands(*expr, operands);
@@ -234,20 +238,26 @@ Type Analyzer::ConditionalType(const ConditionalExpr& conditional) {
 }
 
 Type Analyzer::CallType(const CallExpr& call) {
-  std::vector<Type> args;
-  for (const Expr* arg : call.arguments) args.push_back(TypeAt(arg));
   switch (call.call_kind) {
     case CallKind::kConstructor: {
       Type type = ResolveTypeSpecifier(call.constructor_type);
-      if (type.array_size == Type::kUnsizedArray && !args.empty()) {
-        type = type.ArrayOf(static_cast<int32_t>(args.size()));
+      if (type.array_size == Type::kUnsizedArray && !call.arguments.empty()) {
+        type = type.ArrayOf(static_cast<int32_t>(call.arguments.size()));
       }
       return type;
     }
     case CallKind::kMethod:
       return call.callee.text == "length" ? Type::Int() : Type::Unknown();
-    case CallKind::kFunction:
-      return FunctionCallType(call, args);
+    case CallKind::kFunction: {
+      // The argument list is reused between calls (a heap block per call before); taken
+      // out while in use, so a nested call would simply start a list of its own.
+      std::vector<Type> args = std::move(call_arguments_);
+      args.clear();
+      for (const Expr* arg : call.arguments) args.push_back(TypeAt(arg));
+      Type type = FunctionCallType(call, args);
+      call_arguments_ = std::move(args);
+      return type;
+    }
   }
   return Type::Unknown();
 }
@@ -303,18 +313,20 @@ Type Analyzer::FunctionCallType(const CallExpr& call, const std::vector<Type>& a
     Refer(call.id, symbol);  // a struct constructor the parser took for a call
     return model_.symbols[symbol].type;
   }
-  if (!IsBuiltinFunctionName(name)) return Type::Unknown();
-  auto [it, inserted] = builtin_symbols_.try_emplace("()" + name, kNoSymbol);
+  // One lookup of the name answers whether it is a built-in and gives its overloads.
+  const std::span<const BuiltinFunction* const> overloads = BuiltinOverloadList(name);
+  if (overloads.empty()) return Type::Unknown();
+  auto [it, inserted] = builtin_function_symbols_.try_emplace(overloads.data(), kNoSymbol);
   if (inserted) {
     it->second = static_cast<uint32_t>(model_.symbols.size());
     model_.symbols.push_back({.kind = SymbolKind::kBuiltinFunction, .name = name, .scope = 0});
   }
   Refer(call.id, it->second);
-  BuiltinCallMatch match = ResolveBuiltinCall(name, args, model_.version, model_.stage);
+  BuiltinCallMatch match = ResolveBuiltinCall(overloads, args, model_.version, model_.stage);
   if (match.function == nullptr) {
     for (uint32_t mask : MasksBySize(int_args.size())) {
       std::vector<Type> promoted = promote(mask);
-      match = ResolveBuiltinCall(name, promoted, model_.version, model_.stage);
+      match = ResolveBuiltinCall(overloads, promoted, model_.version, model_.stage);
       if (match.function != nullptr && !match.uncertain) {
         record_promotions(mask, promoted, MismatchContext::kBuiltinCallArgument);
         break;

@@ -41,9 +41,7 @@ void Analyzer::PopScope() {
   // The scope's own symbols are the last of their names' lists: drop them, newest first.
   const size_t mark = scope_marks_.back();
   scope_marks_.pop_back();
-  for (size_t i = scope_symbols_.size(); i-- > mark;) {
-    visible_[model_.symbols[scope_symbols_[i]].name].pop_back();
-  }
+  for (size_t i = scope_symbols_.size(); i-- > mark;) scope_symbols_[i]->pop_back();
   scope_symbols_.resize(mark);
 }
 
@@ -56,8 +54,9 @@ uint32_t Analyzer::Declare(Symbol symbol) {
   }
   uint32_t id = static_cast<uint32_t>(model_.symbols.size());
   if (symbol.declaration != kNoNode) model_.declarations[symbol.declaration] = id;
-  visible_[symbol.name].push_back(id);
-  scope_symbols_.push_back(id);
+  std::vector<uint32_t>& same_name = visible_[symbol.name];
+  same_name.push_back(id);
+  scope_symbols_.push_back(&same_name);
   model_.symbols.push_back(std::move(symbol));
   return id;
 }

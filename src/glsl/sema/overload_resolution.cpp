@@ -58,8 +58,13 @@ ArgumentMatch MatchArguments(std::span<const BuiltinParam> parameters,
 
 BuiltinCallMatch ResolveBuiltinCall(std::string_view name, std::span<const Type> arguments,
                                     int version, ShaderStage stage) {
+  return ResolveBuiltinCall(BuiltinOverloadList(name), arguments, version, stage);
+}
+
+BuiltinCallMatch ResolveBuiltinCall(std::span<const BuiltinFunction* const> all,
+                                    std::span<const Type> arguments, int version,
+                                    ShaderStage stage) {
   // Runs for every built-in call (and again per promotion tried): no copies of the list.
-  std::span<const BuiltinFunction* const> all = BuiltinOverloadList(name);
   if (std::optional<BuiltinCallMatch> m = ResolveAmong(all, arguments, true, version, stage)) {
     return *m;
   }

@@ -32,5 +32,9 @@ struct BuiltinCallMatch {
 // all return the same type, in which case the first is returned.
 BuiltinCallMatch ResolveBuiltinCall(std::string_view name, std::span<const Type> arguments,
                                     int version, ShaderStage stage);
+// The same over `overloads`, the BuiltinOverloadList of the name (for a caller that has it).
+BuiltinCallMatch ResolveBuiltinCall(std::span<const BuiltinFunction* const> overloads,
+                                    std::span<const Type> arguments, int version,
+                                    ShaderStage stage);
 
 }  // namespace shaderport::glsl

@@ -4,13 +4,13 @@
 
 #include <cstdint>
 #include <memory>
-#include <memory_resource>
 #include <new>
 #include <span>
 #include <string>
 #include <type_traits>
 #include <vector>
 
+#include "glsl/syntax/node_arena.h"
 #include "source/source_file.h"
 
 namespace shaderport::glsl {
@@ -539,8 +539,8 @@ class SyntaxTree {
   template <class T>
   T* Make() {
     static_assert(std::is_base_of_v<Node, T>);
-    if (!arena_) arena_ = std::make_unique<std::pmr::monotonic_buffer_resource>(kFirstBlockBytes);
-    T* node = new (arena_->allocate(sizeof(T), alignof(T))) T();
+    if (!arena_) arena_ = std::make_unique<NodeArena>();
+    T* node = new (arena_->Allocate(sizeof(T), alignof(T))) T();
     node->id = NodeCount();
     nodes_.push_back(node);
     if constexpr (!std::is_trivially_destructible_v<T>) {
@@ -550,15 +550,19 @@ class SyntaxTree {
   }
 
  private:
-  // A small shader's nodes fit in the first block; the arena doubles from there.
-  static constexpr size_t kFirstBlockBytes = size_t{16} << 10;
   struct Destructor {
     Node* node;
     void (*destroy)(Node*);
   };
   void DestroyNodes();
+  // A node waiting to be placed by IndexPreorder, with its depth.
+  struct PreorderItem {
+    const Node* node;
+    uint32_t depth;
+  };
+  void IndexSharedPreorder();  // IndexPreorder for a tree with a node under two parents
 
-  std::unique_ptr<std::pmr::monotonic_buffer_resource> arena_;
+  std::unique_ptr<NodeArena> arena_;
   std::vector<Node*> nodes_;
   std::vector<Destructor> destructors_;  // the nodes whose type has a destructor to run
   TranslationUnit* root_ = nullptr;

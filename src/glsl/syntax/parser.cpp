@@ -12,15 +12,10 @@ namespace shaderport::glsl {
 Parser::Parser(const PreprocessResult& pp, const ParseOptions& options)
     : pp_(pp), options_(options) {
   const auto& tokens = pp_.tokens;
-  end_index_ = static_cast<uint32_t>(tokens.size());
-  for (uint32_t i = 0; i < tokens.size(); ++i) {
-    if (tokens[i].kind == TokenKind::kEndOfFile) {
-      end_index_ = i;
-      break;
-    }
-  }
-  texts_.reserve(end_index_ + 1);
-  words_.reserve(end_index_ + 1);
+  // Sized once and written in place (zero is an empty text and a plain identifier's
+  // WordInfo), then cut after the end of file: cheaper than two push_backs a token.
+  texts_.resize(tokens.size() + 1);
+  words_.resize(tokens.size() + 1);
   // Tokens are a few bytes long: a loop is cheaper than a memchr call per token.
   const auto has_backslash = [](std::string_view text) {
     for (const char c : text) {
@@ -28,9 +23,16 @@ Parser::Parser(const PreprocessResult& pp, const ParseOptions& options)
     }
     return false;
   };
-  for (uint32_t i = 0; i < end_index_; ++i) {
-    std::string_view text = tokens[i].text;
-    if (has_backslash(text)) {
+  end_index_ = static_cast<uint32_t>(tokens.size());
+  for (uint32_t i = 0; i < tokens.size(); ++i) {
+    const PpToken& token = tokens[i];
+    if (token.kind == TokenKind::kEndOfFile) {
+      end_index_ = i;
+      break;
+    }
+    std::string_view text = token.text;
+    // A one-byte token has no backslash-newline to remove.
+    if (text.size() > 1 && has_backslash(text)) {
       std::string clean;
       for (size_t k = 0; k < text.size(); ++k) {
         if (text[k] == '\\' && k + 1 < text.size() &&
@@ -43,12 +45,11 @@ Parser::Parser(const PreprocessResult& pp, const ParseOptions& options)
       }
       text = cleaned_.emplace_back(std::move(clean));
     }
-    texts_.push_back(text);
-    words_.push_back(tokens[i].kind == TokenKind::kIdentifier ? ClassifyWord(text, options_.version)
-                                                              : WordInfo{});
+    texts_[i] = text;
+    if (token.kind == TokenKind::kIdentifier) words_[i] = ClassifyWord(text, options_.version);
   }
-  texts_.emplace_back();
-  words_.emplace_back();
+  texts_.resize(end_index_ + 1);
+  words_.resize(end_index_ + 1);
 }
 
 // ------------------------------------------------------------------ tokens
@@ -92,11 +93,6 @@ std::string Parser::Describe(uint32_t ahead) const {
 
 // ------------------------------------------------------------------ ranges
 
-SourceRange Parser::TokenRange(uint32_t index) const {
-  if (index >= pp_.tokens.size()) return {};
-  return pp_.tokens[index].expansion;
-}
-
 SourceRange Parser::RangeOf(uint32_t first, uint32_t last) const {
   SourceRange start = TokenRange(std::min(first, end_index_));
   if (last < first || last >= end_index_) return {start.file, start.begin, start.begin};
@@ -105,7 +101,7 @@ SourceRange Parser::RangeOf(uint32_t first, uint32_t last) const {
   return {start.file, start.begin, std::max(start.begin, TokenRange(end_token).end)};
 }
 
-void Parser::FinishNode(Node* node) {
+void Parser::FinishNodeSlow(Node* node) {
   bool empty = pos_ <= node->first_token;
   node->last_token = empty ? node->first_token - 1 : pos_ - 1;
   node->range = RangeOf(node->first_token, node->last_token);

@@ -55,9 +55,12 @@ class Parser {
     FinishNode(node);
     return node;
   }
-  void FinishNode(Node* node);
+  void FinishNode(Node* node);  // inline below: it runs for every node
+  void FinishNodeSlow(Node* node);
   SourceRange RangeOf(uint32_t first, uint32_t last) const;
-  SourceRange TokenRange(uint32_t index) const;
+  SourceRange TokenRange(uint32_t index) const {
+    return index < pp_.tokens.size() ? pp_.tokens[index].expansion : SourceRange{};
+  }
 
   // ---- diagnostics and recovery (parser.cpp)
   void Error(const SourceRange& range, std::string_view rule, std::string message);
@@ -177,6 +180,20 @@ inline bool Parser::AtRole(WordRole role, uint32_t ahead) const {
 
 inline bool Parser::AtName(uint32_t ahead) const {
   return Tok(ahead).kind == TokenKind::kIdentifier && Word(ahead).status != WordStatus::kKeyword;
+}
+
+inline void Parser::FinishNode(Node* node) {
+  // The common case of RangeOf: tokens consumed, the first and last in one file.
+  if (pos_ > node->first_token && pos_ <= end_index_) {
+    const SourceRange& first = pp_.tokens[node->first_token].expansion;
+    const SourceRange& last = pp_.tokens[pos_ - 1].expansion;
+    if (first.file == last.file) {
+      node->last_token = pos_ - 1;
+      node->range = {first.file, first.begin, std::max(first.begin, last.end)};
+      return;
+    }
+  }
+  FinishNodeSlow(node);
 }
 
 inline void Parser::Advance() {
