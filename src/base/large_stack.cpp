@@ -11,7 +11,11 @@
 namespace shaderport {
 namespace {
 
+// Set on the threads this file starts: work already on a large stack runs in place.
+thread_local bool on_large_stack = false;
+
 void* Trampoline(void* arg) {
+  on_large_stack = true;
   (*static_cast<const std::function<void()>*>(arg))();
   return nullptr;
 }
@@ -53,6 +57,7 @@ class LargeStackThread {
  private:
   static void* Loop(void* arg) {
     auto* self = static_cast<LargeStackThread*>(arg);
+    on_large_stack = true;
     std::unique_lock lock(self->mutex_);
     while (true) {
       self->wake_.wait(lock, [&] { return self->quit_ || self->work_ != nullptr; });
@@ -116,6 +121,10 @@ bool RunOnLargeStack(const std::function<void()>& work, size_t stack_bytes) {
 }
 
 bool RunOnLongLivedLargeStack(const std::function<void()>& work) {
+  if (on_large_stack) {
+    work();
+    return true;
+  }
   thread_local WorkerSlot slot;
   if (slot.worker != nullptr && !slot.worker->OwnedByThisProcess()) {
     ForkedAway().push_back(slot.worker);

@@ -21,6 +21,7 @@ bool RunOnLargeStack(const std::function<void()>& work, size_t stack_bytes = kLa
 // run. Work from one calling thread therefore runs on the same thread every time,
 // with whatever thread-local state the library keeps. In a process forked from one
 // that had such a thread, a new thread is started (the old one does not exist there).
+// Called on a thread started here (already on a large stack), runs `work` in place.
 bool RunOnLongLivedLargeStack(const std::function<void()>& work);
 
 }  // namespace shaderport
