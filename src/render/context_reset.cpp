@@ -2,41 +2,40 @@
 
 #include <vector>
 
+#include "render/uniform_values.h"
+
 namespace shaderport::render {
 namespace {
 
-constexpr GLuint kTextureUnits = 16;        // as many as SetUniforms binds
 constexpr GLuint kMaxSweptNames = 1 << 16;  // far above what one render creates
 
-// Names 1..n, where n is the next name `generate` hands out.
-std::vector<GLuint> NamesInUse(const GlFunctions& gl,
-                               void (*generate)(const GlFunctions&, GLuint&)) {
-  GLuint next = 0;
-  generate(gl, next);
+// Every glGen*/glDelete* pair has these signatures.
+using Generate = void(APIENTRYP)(GLsizei, GLuint*);
+using Delete = void(APIENTRYP)(GLsizei, const GLuint*);
+
+// Names 1..n, where n is the next free name (`next`, just generated).
+std::vector<GLuint> NamesUpTo(GLuint next) {
   std::vector<GLuint> names;
   for (GLuint name = 1; name <= next && name <= kMaxSweptNames; ++name) names.push_back(name);
   return names;
 }
 
-GLsizei Count(const std::vector<GLuint>& names) { return static_cast<GLsizei>(names.size()); }
+void Sweep(const GlFunctions& gl, Generate GlFunctions::*generate, Delete GlFunctions::*erase) {
+  GLuint next = 0;
+  (gl.*generate)(1, &next);
+  const std::vector<GLuint> names = NamesUpTo(next);
+  (gl.*erase)(static_cast<GLsizei>(names.size()), names.data());
+}
 
 void DeleteObjects(const GlFunctions& gl) {
-  auto names = NamesInUse(gl, [](const GlFunctions& f, GLuint& n) { f.GenTextures(1, &n); });
-  gl.DeleteTextures(Count(names), names.data());
-  names = NamesInUse(gl, [](const GlFunctions& f, GLuint& n) { f.GenSamplers(1, &n); });
-  gl.DeleteSamplers(Count(names), names.data());
-  names = NamesInUse(gl, [](const GlFunctions& f, GLuint& n) { f.GenFramebuffers(1, &n); });
-  gl.DeleteFramebuffers(Count(names), names.data());
-  names = NamesInUse(gl, [](const GlFunctions& f, GLuint& n) { f.GenRenderbuffers(1, &n); });
-  gl.DeleteRenderbuffers(Count(names), names.data());
-  names = NamesInUse(gl, [](const GlFunctions& f, GLuint& n) { f.GenBuffers(1, &n); });
-  gl.DeleteBuffers(Count(names), names.data());
-  names = NamesInUse(gl, [](const GlFunctions& f, GLuint& n) { f.GenVertexArrays(1, &n); });
-  gl.DeleteVertexArrays(Count(names), names.data());
+  Sweep(gl, &GlFunctions::GenTextures, &GlFunctions::DeleteTextures);
+  Sweep(gl, &GlFunctions::GenSamplers, &GlFunctions::DeleteSamplers);
+  Sweep(gl, &GlFunctions::GenFramebuffers, &GlFunctions::DeleteFramebuffers);
+  Sweep(gl, &GlFunctions::GenRenderbuffers, &GlFunctions::DeleteRenderbuffers);
+  Sweep(gl, &GlFunctions::GenBuffers, &GlFunctions::DeleteBuffers);
+  Sweep(gl, &GlFunctions::GenVertexArrays, &GlFunctions::DeleteVertexArrays);
   // Programs and shaders share one namespace; deleting the wrong kind is an error.
-  names = NamesInUse(
-      gl, [](const GlFunctions& f, GLuint& n) { n = f.CreateShader(GL_FRAGMENT_SHADER); });
-  for (const GLuint name : names) {
+  for (const GLuint name : NamesUpTo(gl.CreateShader(GL_FRAGMENT_SHADER))) {
     if (gl.IsProgram(name) == GL_TRUE) {
       gl.DeleteProgram(name);
     } else if (gl.IsShader(name) == GL_TRUE) {
@@ -55,7 +54,7 @@ bool ResetContext(const GlFunctions& gl) {
   gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
   gl.BindRenderbuffer(GL_RENDERBUFFER, 0);
   gl.BindBuffer(GL_ARRAY_BUFFER, 0);
-  for (GLuint unit = 0; unit < kTextureUnits; ++unit) {
+  for (GLuint unit = 0; unit < static_cast<GLuint>(kMaxTextureUnits); ++unit) {
     gl.ActiveTexture(GL_TEXTURE0 + unit);
     for (const GLenum target : {GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP}) {
       gl.BindTexture(target, 0);

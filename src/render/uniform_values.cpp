@@ -9,8 +9,6 @@
 namespace shaderport::render {
 namespace {
 
-constexpr int kMaxTextureUnits = 16;
-
 struct UniformInfo {
   std::string name;  // without a trailing "[0]"
   GLint size = 1;

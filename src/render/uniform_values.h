@@ -13,6 +13,9 @@
 
 namespace shaderport::render {
 
+// Texture units SetUniforms binds samplers to, at most (further samplers stay unbound).
+inline constexpr int kMaxTextureUnits = 16;
+
 // Sets all active uniforms for frame `frame_index` (0-based) and binds the
 // program's textures and samplers to their units (programs share units, so every
 // draw rebinds). `channels` are the pass's own inputs (channel_units.h).

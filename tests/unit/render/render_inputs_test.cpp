@@ -142,19 +142,14 @@ TEST(RenderMultipass, BuffersPingPongAcrossFramesAndFeedTheImage) {
       "void mainImage(out vec4 c, in vec2 p) {\n"
       "  c = vec4(texelFetch(iChannel0, ivec2(p), 0).r, texelFetch(iChannel1, ivec2(p), 0).g,\n"
       "           p.x / iResolution.x, 1.0);\n}\n"));
-  BufferPass a;
-  a.buffer = 0;
-  a.channel_buffers = {0, -1, -1, -1};
-  a.fragment_source = testing::ShaderToyText(
-      "void mainImage(out vec4 c, in vec2 p) {\n"
-      "  c = texelFetch(iChannel0, ivec2(p), 0) + vec4(0.25);\n}\n");
-  BufferPass b;
-  b.buffer = 1;
-  b.channel_buffers = {0, -1, -1, -1};
-  b.fragment_source = testing::ShaderToyText(
-      "void mainImage(out vec4 c, in vec2 p) {\n"
-      "  c = vec4(0.0, texelFetch(iChannel0, ivec2(p), 0).r * 0.5, 0.0, 1.0);\n}\n");
-  request.buffer_passes = {a, b};
+  request.buffer_passes = {
+      testing::BufferPassReading(0, 0,
+                                 "void mainImage(out vec4 c, in vec2 p) {\n"
+                                 "  c = texelFetch(iChannel0, ivec2(p), 0) + vec4(0.25);\n}\n"),
+      testing::BufferPassReading(
+          1, 0,
+          "void mainImage(out vec4 c, in vec2 p) {\n"
+          "  c = vec4(0.0, texelFetch(iChannel0, ivec2(p), 0).r * 0.5, 0.0, 1.0);\n}\n")};
   request.channel_buffers = {0, 1, -1, -1};
   request.frames = 3;
   const RenderOutcome outcome = RenderIsolated(request, testing::FastOptions());

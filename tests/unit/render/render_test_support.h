@@ -48,4 +48,13 @@ inline RenderRequest FragmentRequest(const std::string& fragment, uint32_t size 
   return request;
 }
 
+// A ShaderToy buffer pass writing `buffer` whose channel 0 reads buffer `reads`.
+inline BufferPass BufferPassReading(int buffer, int reads, const std::string& main_image) {
+  BufferPass pass;
+  pass.buffer = buffer;
+  pass.channel_buffers = {reads, -1, -1, -1};
+  pass.fragment_source = ShaderToyText(main_image);
+  return pass;
+}
+
 }  // namespace shaderport::render::testing

@@ -21,6 +21,7 @@
 namespace shaderport::render {
 namespace {
 
+using testing::BufferPassReading;
 using testing::FastOptions;
 using testing::FragmentRequest;
 using testing::kGradient;
@@ -105,13 +106,10 @@ TEST(RenderWorker, OneContextForTheBatchLeavesNoStateBehind) {
       "void mainImage(out vec4 c, in vec2 p) {\n"
       "  c = vec4(texelFetch(iChannel0, ivec2(p), 0).r, textureLod(iChannel0, p / 64.0, 2.0).g,"
       " 0.5, 1.0);\n}\n"));
-  BufferPass a;
-  a.buffer = 0;
-  a.channel_buffers = {0, -1, -1, -1};
-  a.fragment_source = ShaderToyText(
+  multipass.buffer_passes = {BufferPassReading(
+      0, 0,
       "void mainImage(out vec4 c, in vec2 p) {\n"
-      "  c = texelFetch(iChannel0, ivec2(p), 0) + vec4(0.25, p.x / 64.0, 0.0, 0.0);\n}\n");
-  multipass.buffer_passes = {a};
+      "  c = texelFetch(iChannel0, ivec2(p), 0) + vec4(0.25, p.x / 64.0, 0.0, 0.0);\n}\n")};
   multipass.channel_buffers = {0, -1, -1, -1};
   multipass.frames = 2;
   const RenderRequest channels = FragmentRequest(
@@ -156,13 +154,10 @@ TEST(RenderWorker, ABatchOfLargeRendersStaysWithinTheAddressSpaceLimit) {
                                     "  c = texelFetch(iChannel0, ivec2(p), 0) + vec4(0.5);\n}\n"),
                       1024);
   for (int k = 0; k < 4; ++k) {
-    BufferPass pass;
-    pass.buffer = k;
-    pass.channel_buffers = {k == 0 ? 3 : k - 1, -1, -1, -1};
-    pass.fragment_source = ShaderToyText(
+    request.buffer_passes.push_back(BufferPassReading(
+        k, k == 0 ? 3 : k - 1,
         "void mainImage(out vec4 c, in vec2 p) {\n"
-        "  c = texelFetch(iChannel0, ivec2(p), 0) * 0.5 + vec4(p / 1024.0, 0.0, 1.0);\n}\n");
-    request.buffer_passes.push_back(pass);
+        "  c = texelFetch(iChannel0, ivec2(p), 0) * 0.5 + vec4(p / 1024.0, 0.0, 1.0);\n}\n"));
   }
   request.channel_buffers = {3, -1, -1, -1};
   WorkerSettings settings = Hermetic();
