@@ -1,9 +1,12 @@
 #include "glsl/webgl_semantics/browser_semantics.h"
 
 #include <optional>
+#include <string_view>
+#include <vector>
 
 #include "glsl/syntax/parser.h"
 #include "glsl/syntax/visit.h"
+#include "glsl/webgl_semantics/cpu_math_library.h"
 #include "glsl/webgl_semantics/semantics_context.h"
 
 namespace shaderport::glsl {
@@ -88,7 +91,10 @@ BrowserSemanticsResult ApplyBrowserSemantics(std::span<const SourceFile* const> 
   const SemanticModel model = Analyze(parsed.tree, analyze);
 
   EditCollector edits(preprocessed);
-  SemanticsContext context{parsed.tree, model, options, ParentsOf(parsed.tree), edits, result};
+  std::vector<std::string_view> texts;
+  for (const SourceFile* part : parts) texts.push_back(part->Text());
+  SemanticsContext context{parsed.tree, model,  options, ParentsOf(parsed.tree),
+                           edits,       result, nullptr, SwizzleLettersFreeOfMacros(texts)};
   std::optional<DriverFolding> folding;
   if (options.cpu_browser_math) {
     folding.emplace(parsed.tree, model, context.parent);

@@ -22,6 +22,7 @@
 #include <utility>
 
 #include "glsl/sema/language.h"
+#include "glsl/sema/type.h"
 #include "glsl/syntax/visit.h"
 #include "glsl/webgl_semantics/cpu_math_library.h"
 #include "glsl/webgl_semantics/semantics_context.h"
@@ -33,6 +34,7 @@ struct SpelledName {
   SourceRange range;
   std::string builtin;
   bool renamable = true;
+  std::set<std::string> overloads;  // "min(vec3,float)", of each call spelled here
 };
 
 bool IsBoolSelect(const SemanticModel& model, const CallExpr& call) {
@@ -106,7 +108,7 @@ class MathRewriter {
         ++c_.result.skipped;
         continue;
       }
-      used.insert(name.builtin);
+      used.insert(name.overloads.begin(), name.overloads.end());
       c_.edits.Replace(name.range, CpuMathHelperName(name.builtin));
       ++c_.result.math_calls;
     }
@@ -120,7 +122,8 @@ class MathRewriter {
     }
     if (!used.empty() || zero_for_divisions) {
       c_.edits.Insert(declare_at->file, declare_at->begin,
-                      CpuMathDefinitions(used, zero_for_divisions, !ArithmeticStaysExact()));
+                      CpuMathDefinitions(used, zero_for_divisions, !ArithmeticStaysExact(),
+                                         c_.swizzle_letters));
     }
   }
 
@@ -178,12 +181,25 @@ class MathRewriter {
       return;
     }
     auto [entry, added] = names_.try_emplace({token.spelling.file, token.spelling.begin});
-    if (added) entry->second = {token.spelling, std::string(call.callee.text), true};
+    if (added) entry->second = {token.spelling, std::string(call.callee.text), true, {}};
+    entry->second.overloads.insert(Overload(call));
     // A folded constant stays exact in the browser; a global initializer must stay
     // a constant expression.
     if (c_.folding->IsFolded(&call) || !InsideFunctionBody(c_, call)) {
       entry->second.renamable = false;
     }
+  }
+
+  // "min(vec3,float)"; the bare name (every overload) when a type is unknown.
+  std::string Overload(const CallExpr& call) const {
+    std::string signature(call.callee.text);
+    signature += '(';
+    for (size_t i = 0; i < call.arguments.size(); ++i) {
+      const Type& type = c_.model.TypeOf(call.arguments[i]->id);
+      if (type.IsUnknown() || type.IsArray()) return std::string(call.callee.text);
+      signature += (i > 0 ? "," : "") + Spell(type);
+    }
+    return signature + ')';
   }
 
   // clamp(x, lo, hi) with x and one bound constant: the SPIR-V optimiser answers

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <set>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -23,15 +24,23 @@ std::string CpuMathHelperName(std::string_view builtin);
 
 // `text` (GLSL inserted among the user's code, which may `#define x ...`) with every
 // identifier other than GLSL keywords and the built-ins helpers use prefixed with
-// "shaderport_", and swizzles `.x` .. `.w` written as `[0]` .. `[3]`.
-std::string MacroProofHelperText(std::string_view text);
+// "shaderport_", and swizzles `.x` .. `.w` written with `swizzle_letters` (4 letters
+// no macro takes, see SwizzleLettersFreeOfMacros) or, without, as `[0]` .. `[3]`,
+// which costs Mesa's compiler more.
+std::string MacroProofHelperText(std::string_view text, std::string_view swizzle_letters = {});
 
-// Definitions (one line, no newline) of the helpers for `builtins` and of every
-// helper they call, each for float and vec2..vec4 where GLSL has such overloads,
-// preceded by the opaque-zero uniform when `declare_zero` is set. Results always pass
-// through the opaque zero; parameters too with `opaque_parameters` (needed unless
-// every value reaches an invariant output, see WithOpaqueParameters).
-std::string CpuMathDefinitions(const std::set<std::string>& builtins, bool declare_zero,
-                               bool opaque_parameters);
+// "xyzw", "rgba" or "stpq": the first swizzle set none of whose letters `texts`
+// `#define` (anywhere, active or not); empty when each set has one.
+std::string_view SwizzleLettersFreeOfMacros(std::span<const std::string_view> texts);
+
+// Definitions (one line, no newline) of the helper overloads in `overloads` and of
+// every overload they call, preceded by the opaque-zero uniform when `declare_zero`
+// is set or a helper uses it. An overload is "min(vec3,float)"; a bare name ("u2f")
+// or a signature no helper has stands for all overloads of that built-in. Results
+// always pass through the opaque zero; parameters too with `opaque_parameters`
+// (needed unless every value reaches an invariant output, see WithOpaqueParameters).
+// Mesa compiles every function given, called or not: unused overloads cost time.
+std::string CpuMathDefinitions(const std::set<std::string>& overloads, bool declare_zero,
+                               bool opaque_parameters, std::string_view swizzle_letters = {});
 
 }  // namespace shaderport::glsl

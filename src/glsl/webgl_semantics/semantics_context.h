@@ -59,6 +59,7 @@ struct SemanticsContext {
   EditCollector& edits;
   BrowserSemanticsResult& result;
   const DriverFolding* folding = nullptr;  // set when math follows Chromium
+  std::string_view swizzle_letters;        // for inserted helpers, see MacroProofHelperText
 
   const Node* Parent(const Node& node) const {
     const uint32_t p = parent[node.id];

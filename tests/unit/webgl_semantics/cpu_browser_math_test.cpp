@@ -27,7 +27,7 @@ bool Contains(const std::string& text, std::string_view part) {
   return text.find(part) != std::string::npos;
 }
 
-TEST(CpuBrowserMath, BuiltinCallsBecomeHelpersOfEveryOverload) {
+TEST(CpuBrowserMath, BuiltinCallsBecomeHelpersOfTheOverloadsCalled) {
   const auto result = Apply(
       "void main() { vec3 p = gl_FragCoord.xyz; float a = sin(p.x) + pow(p.y, 2.2) + "
       "atan(p.y, p.x) + atan(p.z) + dot(p, p) + length(p.xy);\n"
@@ -53,11 +53,32 @@ TEST(CpuBrowserMath, BuiltinCallsBecomeHelpersOfEveryOverload) {
                        "highp float shaderport_dot(highp vec3 shaderport_x, highp vec3 "
                        "shaderport_y) { shaderport_x = shaderport_zero < 0.0 ? -shaderport_x : "
                        "shaderport_x; shaderport_y = shaderport_zero < 0.0 ? -shaderport_y : "
-                       "shaderport_y; highp float shaderport_d = shaderport_x[0] * "
-                       "shaderport_y[0]; shaderport_d = shaderport_x[1] * shaderport_y[1] + "
-                       "shaderport_d; shaderport_d = shaderport_x[2] * shaderport_y[2] + "
+                       "shaderport_y; highp float shaderport_d = shaderport_x.x * "
+                       "shaderport_y.x; shaderport_d = shaderport_x.y * shaderport_y.y + "
+                       "shaderport_d; shaderport_d = shaderport_x.z * shaderport_y.z + "
                        "shaderport_d; return (shaderport_d) - shaderport_zero; }"))
       << body;
+  // Only the overloads called, and what they call: Mesa compiles every function given.
+  EXPECT_TRUE(Contains(body, "highp float shaderport_sin(highp float shaderport_x)"));
+  EXPECT_TRUE(Contains(body, "highp vec3 shaderport_cos(highp vec3 shaderport_a0)"));
+  EXPECT_TRUE(Contains(body, "highp float shaderport_cos(highp float shaderport_x)"));
+  for (const std::string_view unused :
+       {"highp vec2 shaderport_sin(", "highp vec4 shaderport_cos(", "shaderport_dot(highp vec2",
+        "shaderport_length(highp vec3", "highp vec2 shaderport_exp2("}) {
+    EXPECT_FALSE(Contains(body, unused)) << unused;
+  }
+}
+
+TEST(CpuBrowserMath, HelperSwizzlesAvoidLettersTheShaderDefines) {
+  const std::string call = "void main() { o = vec4(length(gl_FragCoord.xy)); }\n";
+  const std::string plain = Body(Apply(call, MathOnly()));
+  EXPECT_TRUE(Contains(plain, "shaderport_x.x * shaderport_x.x")) << plain;
+  // `.x` would expand a user's `x`; `.r` is the same component.
+  const std::string x = Body(Apply("#define x 1.0\n" + call, MathOnly()));
+  EXPECT_TRUE(Contains(x, "shaderport_x.r * shaderport_x.r")) << x;
+  const std::string all =
+      Body(Apply("#define x 1.0\n#  define g(a) a\n#define q 2\n" + call, MathOnly()));
+  EXPECT_TRUE(Contains(all, "shaderport_x[0] * shaderport_x[0]")) << all;
 }
 
 // Where every value reaches an invariant output (the render's main pass), Mesa keeps
@@ -71,8 +92,8 @@ TEST(CpuBrowserMath, InvariantOutputsLeaveParametersPlain) {
       Body(Apply("void main() { o = vec4(dot(gl_FragCoord.xy, gl_FragCoord.yx)); }\n", options));
   EXPECT_TRUE(Contains(plain,
                        "highp float shaderport_dot(highp vec2 shaderport_x, highp vec2 "
-                       "shaderport_y) { highp float shaderport_d = shaderport_x[0] * "
-                       "shaderport_y[0]; shaderport_d = shaderport_x[1] * shaderport_y[1] + "
+                       "shaderport_y) { highp float shaderport_d = shaderport_x.x * "
+                       "shaderport_y.x; shaderport_d = shaderport_x.y * shaderport_y.y + "
                        "shaderport_d; return (shaderport_d) - shaderport_zero; }"))
       << plain;
   // mix keeps them: Mesa reshaped its arithmetic with the caller's (4sXcWj).
@@ -268,7 +289,7 @@ TEST(CpuBrowserMath, DerivativesAreCoarseAsInChromium) {
                        "1.0); }"))
       << body;
   EXPECT_TRUE(Contains(body,
-                       "return (dFdx(mod(floor(gl_FragCoord[1]), 2.0) > 0.5 ? shaderport_v - "
+                       "return (dFdx(mod(floor(gl_FragCoord.y), 2.0) > 0.5 ? shaderport_v - "
                        "dFdy(shaderport_v) : shaderport_v)) - shaderport_zero; }"))
       << body;
 }
@@ -285,18 +306,24 @@ TEST(CpuBrowserMath, MinAndMaxGiveTheSecondOperandForNaN) {
                        "int i = min(int(v), 3);\no = vec4(shaderport_min(v, 1.0), "
                        "shaderport_max(vec2(v), 0.5).x, float(i), 1.0); }"))
       << body;
+  // A select by mix (Mesa compiles `?:` as a branch first); vectors at once.
   EXPECT_TRUE(Contains(body,
-                       "return ((shaderport_a < shaderport_b) != (shaderport_zero < 0.0) ? "
-                       "shaderport_a : shaderport_b) - shaderport_zero; }"))
+                       "return (mix(shaderport_b, shaderport_a, (shaderport_a < shaderport_b) "
+                       "!= (shaderport_zero < 0.0))) - shaderport_zero; }"))
       << body;
   EXPECT_TRUE(Contains(body,
                        "highp vec2 shaderport_max(highp vec2 shaderport_a0, highp float "
-                       "shaderport_a1)"))
+                       "shaderport_a1) {"))
+      << body;
+  EXPECT_TRUE(Contains(body,
+                       "highp vec2 shaderport_b = vec2(shaderport_a1); return "
+                       "(mix(shaderport_b, shaderport_a0, notEqual(greaterThan(shaderport_a0, "
+                       "shaderport_b), bvec2(shaderport_zero < 0.0)))) - shaderport_zero; }"))
       << body;
 }
 
 TEST(CpuBrowserMath, LibraryDefinesWhatItsHelpersCall) {
-  const std::string text = CpuMathDefinitions({"tan", "pow", "normalize"}, false, true);
+  const std::string text = CpuMathDefinitions({"tan", "pow", "reflect"}, false, true);
   for (const std::string_view helper :
        {"shaderport_sin5(", "shaderport_sin(", "shaderport_cos(", "shaderport_exp2(",
         "shaderport_log2(", "shaderport_dot(", "uniform highp float shaderport_zero;"}) {
@@ -306,6 +333,25 @@ TEST(CpuBrowserMath, LibraryDefinesWhatItsHelpersCall) {
   EXPECT_LT(text.find("float shaderport_sin5("), text.find("float shaderport_sin("));
   EXPECT_LT(text.find("float shaderport_exp2("), text.find("float shaderport_pow("));
   EXPECT_EQ(text.find('\n'), std::string::npos);
+}
+
+TEST(CpuBrowserMath, LibraryDefinesOneOverloadWithWhatItCalls) {
+  const std::string text =
+      CpuMathDefinitions({"pow(vec3,vec3)", "reflect(vec2,vec2)"}, false, false);
+  for (const std::string_view wanted :
+       {"highp vec3 shaderport_pow(highp vec3", "highp float shaderport_pow(highp float",
+        "highp float shaderport_exp2(highp float", "highp float shaderport_log2(highp float",
+        "highp vec2 shaderport_reflect(highp vec2", "highp float shaderport_dot(highp vec2"}) {
+    EXPECT_TRUE(Contains(text, wanted)) << wanted;
+  }
+  for (const std::string_view unused :
+       {"highp vec2 shaderport_pow(", "highp vec3 shaderport_exp2(",
+        "highp float shaderport_dot(highp vec3", "highp vec3 shaderport_reflect("}) {
+    EXPECT_FALSE(Contains(text, unused)) << unused;
+  }
+  // A signature no helper has stands for all overloads.
+  EXPECT_TRUE(
+      Contains(CpuMathDefinitions({"sin(int)"}, false, false), "highp vec4 shaderport_sin("));
 }
 
 }  // namespace
