@@ -169,6 +169,27 @@ std::string VectorMinMax(const Helper& helper) {
   return out;
 }
 
+// The vector overloads of `helper.vector_text` for vec2, vec3 and vec4.
+std::string WholeVectorOverloads(const Helper& helper) {
+  std::string out;
+  for (size_t v = 0; v < kVectors.size(); ++v) {
+    const std::string size = std::to_string(v + 2);
+    for (const char c : helper.vector_text) {
+      if (c == '@') {
+        out += "vec" + size;
+      } else if (c == '$') {
+        out += "ivec" + size;
+      } else if (c == '%') {
+        out += "uvec" + size;
+      } else {
+        out.push_back(c);
+      }
+    }
+    out.push_back(' ');
+  }
+  return Spell(out);
+}
+
 // One function of a helper, with what it calls: (helper, type of its first parameter).
 struct Overload {
   std::string_view helper;
@@ -216,11 +237,25 @@ void AddFunctions(const Helper& helper, const std::string& text, bool componentw
   }
 }
 
+// The vector overloads: on whole vectors where the helper has them, else componentwise.
+void AddVectorOverloads(const Helper& helper, int arity, int float_tail, bool opaque_parameters,
+                        std::vector<Overload>& out) {
+  if (!helper.vector_text.empty()) {
+    AddFunctions(helper, WithOpaqueParameters(WholeVectorOverloads(helper), opaque_parameters),
+                 false, out);
+  } else {
+    AddFunctions(helper, Componentwise(helper.builtin, arity, float_tail), true, out);
+  }
+}
+
 std::vector<Overload> Overloads(const Helper& helper, bool opaque_parameters) {
   std::vector<Overload> out;
   switch (helper.shape) {
     case Shape::kInternal:
       AddFunctions(helper, Spell(helper.text), false, out);
+      if (!helper.vector_text.empty()) {
+        AddFunctions(helper, WholeVectorOverloads(helper), false, out);
+      }
       break;
     case Shape::kFromUint: {
       AddFunctions(helper, Spell(helper.text), false, out);
@@ -239,14 +274,14 @@ std::vector<Overload> Overloads(const Helper& helper, bool opaque_parameters) {
     }
     case Shape::kUnary:
       AddFunctions(helper, WithOpaqueParameters(Spell(helper.text), opaque_parameters), false, out);
-      AddFunctions(helper, Componentwise(helper.builtin, 1, 0), true, out);
+      AddVectorOverloads(helper, 1, 0, opaque_parameters, out);
       if (helper.builtin == "atan") {
         AddFunctions(helper, Componentwise(helper.builtin, 2, 0), true, out);
       }
       break;
     case Shape::kBinary:
       AddFunctions(helper, WithOpaqueParameters(Spell(helper.text), opaque_parameters), false, out);
-      AddFunctions(helper, Componentwise(helper.builtin, 2, 0), true, out);
+      AddVectorOverloads(helper, 2, 0, opaque_parameters, out);
       break;
     case Shape::kMinMax:
       AddFunctions(
@@ -260,7 +295,7 @@ std::vector<Overload> Overloads(const Helper& helper, bool opaque_parameters) {
       // (4sXcWj drew 23 of 64 blocks off Chromium's; the selects of the others made no
       // difference there).
       AddFunctions(helper, WithOpaqueParameters(Spell(helper.text), true), false, out);
-      AddFunctions(helper, Componentwise(helper.builtin, 3, 1), true, out);
+      AddVectorOverloads(helper, 3, 1, true, out);
       break;
     case Shape::kReduction:
     case Shape::kGeometric: {

@@ -30,6 +30,10 @@ struct Helper {
   std::string_view text;
   std::string_view float_text = {};      // kReduction: the float overload (no swizzles on floats)
   std::string_view vector_compare = {};  // kMinMax: the componentwise comparison
+  // The vector overloads written on whole vectors (`@` vecN, `$` ivecN, `%` uvecN),
+  // each component computed as the float definition computes it; without, a vector
+  // overload calls the float one per component, which costs Mesa a call each.
+  std::string_view vector_text = {};
 };
 
 // Every helper, each after nothing in particular (definitions order them).

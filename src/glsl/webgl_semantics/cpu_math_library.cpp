@@ -20,16 +20,28 @@ const std::array<Helper, 33>& CpuMathHelpers() {
        Shape::kInternal,
        {},
        "float S(sin5)(float x) { float x2 = x * x; return ((74.43889 * x2 + -41.16937) * x2 + "
-       "6.2823086) * x; }"},
+       "6.2823086) * x; }",
+       {},
+       {},
+       "@ S(sin5)(@ x) { @ x2 = x * x; return ((74.43889 * x2 + -41.16937) * x2 + 6.2823086) * x; "
+       "}"},
       {"sin",
        Shape::kUnary,
        {"sin5"},
        "float S(sin)(float x) { float t = x * (-0.15915494 - Z) + 0.25; return S(sin5)(0.25 - "
-       "abs(t - roundEven(t))); }"},
+       "abs(t - roundEven(t))); }",
+       {},
+       {},
+       "@ S(sin)(@ x) { @ t = x * (-0.15915494 - Z) + 0.25; return S(sin5)(0.25 - abs(t - "
+       "roundEven(t))); }"},
       {"cos",
        Shape::kUnary,
        {"sin5"},
        "float S(cos)(float x) { float t = x * (0.15915494 - Z); return S(sin5)(0.25 - abs(t - "
+       "roundEven(t))); }",
+       {},
+       {},
+       "@ S(cos)(@ x) { @ t = x * (0.15915494 - Z); return S(sin5)(0.25 - abs(t - "
        "roundEven(t))); }"},
       {"tan",
        Shape::kUnary,
@@ -43,7 +55,14 @@ const std::array<Helper, 33>& CpuMathHelpers() {
        "int(roundEven(x0 - 0.5)); float f = x0 - float(i); float p = intBitsToFloat(989206789); "
        "p = p * f + intBitsToFloat(1007896582); p = p * f + intBitsToFloat(1030007331); p = p * f "
        "+ intBitsToFloat(1047915220); p = p * f + intBitsToFloat(1060205179); p = p * f + 1.0; "
-       "return intBitsToFloat((i + 127) << 23) * p; }"},
+       "return intBitsToFloat((i + 127) << 23) * p; }",
+       {},
+       {},
+       "@ S(exp2)(@ x) { @ x0 = max(min(x, 128.0), -126.99999); $ i = $(roundEven(x0 - 0.5)); @ f "
+       "= x0 - @(i); @ p = @(intBitsToFloat(989206789)); p = p * f + intBitsToFloat(1007896582); "
+       "p = p * f + intBitsToFloat(1030007331); p = p * f + intBitsToFloat(1047915220); p = p * f "
+       "+ intBitsToFloat(1060205179); p = p * f + 1.0; return intBitsToFloat((i + 127) << 23) * "
+       "p; }"},
       {"log2",
        Shape::kUnary,
        {},
@@ -51,19 +70,35 @@ const std::array<Helper, 33>& CpuMathHelpers() {
        "2139095040) >> 8u | 1065353216u); e = (e - 1.4960938) * 256.0; float m = "
        "intBitsToFloat(b & 8388607 | 1065353216); float p = (0.095428176 * m + 0.47779095) * m + "
        "0.19782813; float q = ((0.016618466 * m + 0.20350508) * m + 0.273829) * m + 0.04049669; "
-       "e += (m - 1.0) * (p / q); return b == 2139095040 ? x : e; }"},
+       "e += (m - 1.0) * (p / q); return b == 2139095040 ? x : e; }",
+       {},
+       {},
+       "@ S(log2)(@ x) { $ b = floatBitsToInt(x); @ e = uintBitsToFloat(%(b & 2139095040) >> 8u | "
+       "1065353216u); e = (e - 1.4960938) * 256.0; @ m = intBitsToFloat(b & 8388607 | "
+       "1065353216); @ p = (0.095428176 * m + 0.47779095) * m + 0.19782813; @ q = ((0.016618466 * "
+       "m + 0.20350508) * m + 0.273829) * m + 0.04049669; e += (m - 1.0) * (p / q); return "
+       "mix(e, x, equal(b, $(2139095040))); }"},
       {"exp",
        Shape::kUnary,
        {"exp2"},
-       "float S(exp)(float x) { return S(exp2)((1.442695 - Z) * x); }"},
+       "float S(exp)(float x) { return S(exp2)((1.442695 - Z) * x); }",
+       {},
+       {},
+       "@ S(exp)(@ x) { return S(exp2)((1.442695 - Z) * x); }"},
       {"log",
        Shape::kUnary,
        {"log2"},
-       "float S(log)(float x) { return (0.6931472 - Z) * S(log2)(x); }"},
+       "float S(log)(float x) { return (0.6931472 - Z) * S(log2)(x); }",
+       {},
+       {},
+       "@ S(log)(@ x) { return (0.6931472 - Z) * S(log2)(x); }"},
       {"pow",
        Shape::kBinary,
        {"exp2", "log2"},
-       "float S(pow)(float x, float y) { return S(exp2)(S(log2)(x) * y); }"},
+       "float S(pow)(float x, float y) { return S(exp2)(S(log2)(x) * y); }",
+       {},
+       {},
+       "@ S(pow)(@ x, @ y) { return S(exp2)(S(log2)(x) * y); }"},
       {"sinh",
        Shape::kUnary,
        {"exp"},
@@ -170,7 +205,11 @@ const std::array<Helper, 33>& CpuMathHelpers() {
       {"mix",
        Shape::kMix,
        {},
-       "float S(mix)(float x, float y, float a) { return a * (y - x) + x; }"},
+       "float S(mix)(float x, float y, float a) { return a * (y - x) + x; }",
+       {},
+       {},
+       "@ S(mix)(@ x, @ y, @ a) { return a * (y - x) + x; } @ S(mix)(@ x, @ y, float a) { return "
+       "a * (y - x) + x; }"},
       // dot: x0 * y0, then MulAdd(xi, yi, d) for each further component.
       {"dot",
        Shape::kReduction,

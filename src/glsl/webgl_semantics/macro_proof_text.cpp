@@ -20,7 +20,8 @@ bool IsNumericType(std::string_view word) {
 std::string MacroProofHelperText(std::string_view text, std::string_view swizzle_letters) {
   // Keywords and built-ins the helpers use; everything else gets the prefix.
   constexpr std::string_view kKept =
-      " float vec2 vec3 vec4 int uint uvec2 uvec3 uvec4 bool bvec2 bvec3 bvec4 return if else "
+      " float vec2 vec3 vec4 int ivec2 ivec3 ivec4 uint uvec2 uvec3 uvec4 bool bvec2 bvec3 bvec4 "
+      "return if else "
       "uniform highp true false abs sign roundEven floor sqrt min max clamp mix equal notEqual "
       "lessThan greaterThan "
       "intBitsToFloat floatBitsToInt uintBitsToFloat isinf mod dFdx dFdy gl_FragCoord ";

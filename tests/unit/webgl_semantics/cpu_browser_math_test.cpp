@@ -45,8 +45,8 @@ TEST(CpuBrowserMath, BuiltinCallsBecomeHelpersOfTheOverloadsCalled) {
                        "shaderport_exp(a) + shaderport_log2(a)); }"));
   EXPECT_TRUE(Contains(body, "uniform highp float shaderport_zero;"));
   EXPECT_TRUE(Contains(body,
-                       "highp vec3 shaderport_mix(highp vec3 shaderport_a0, highp vec3 "
-                       "shaderport_a1, highp float shaderport_a2)"));
+                       "highp vec3 shaderport_mix(highp vec3 shaderport_x, highp vec3 "
+                       "shaderport_y, highp float shaderport_a)"));
   // Parameters and results pass a select on the opaque zero, so that Mesa cannot mix
   // the caller's arithmetic into the helper's (and a constant 0.0 keeps its sign).
   EXPECT_TRUE(Contains(body,
@@ -60,11 +60,13 @@ TEST(CpuBrowserMath, BuiltinCallsBecomeHelpersOfTheOverloadsCalled) {
       << body;
   // Only the overloads called, and what they call: Mesa compiles every function given.
   EXPECT_TRUE(Contains(body, "highp float shaderport_sin(highp float shaderport_x)"));
-  EXPECT_TRUE(Contains(body, "highp vec3 shaderport_cos(highp vec3 shaderport_a0)"));
-  EXPECT_TRUE(Contains(body, "highp float shaderport_cos(highp float shaderport_x)"));
+  // cos(vec3) computes on the whole vector (its float overload is not needed).
+  EXPECT_TRUE(Contains(body, "highp vec3 shaderport_cos(highp vec3 shaderport_x)"));
+  EXPECT_TRUE(Contains(body, "highp vec3 shaderport_sin5(highp vec3 shaderport_x)"));
   for (const std::string_view unused :
-       {"highp vec2 shaderport_sin(", "highp vec4 shaderport_cos(", "shaderport_dot(highp vec2",
-        "shaderport_length(highp vec3", "highp vec2 shaderport_exp2("}) {
+       {"highp vec2 shaderport_sin(", "highp vec4 shaderport_cos(", "highp float shaderport_cos(",
+        "shaderport_dot(highp vec2", "shaderport_length(highp vec3",
+        "highp vec2 shaderport_exp2("}) {
     EXPECT_FALSE(Contains(body, unused)) << unused;
   }
 }
@@ -337,16 +339,20 @@ TEST(CpuBrowserMath, LibraryDefinesWhatItsHelpersCall) {
 
 TEST(CpuBrowserMath, LibraryDefinesOneOverloadWithWhatItCalls) {
   const std::string text =
-      CpuMathDefinitions({"pow(vec3,vec3)", "reflect(vec2,vec2)"}, false, false);
+      CpuMathDefinitions({"pow(vec3,vec3)", "reflect(vec2,vec2)", "atan(vec2,vec2)"}, false, false);
+  // pow(vec3) on whole vectors calls exp2 and log2 of vec3; atan(vec2) calls atan of
+  // floats per component; reflect calls dot of its own type.
   for (const std::string_view wanted :
-       {"highp vec3 shaderport_pow(highp vec3", "highp float shaderport_pow(highp float",
-        "highp float shaderport_exp2(highp float", "highp float shaderport_log2(highp float",
-        "highp vec2 shaderport_reflect(highp vec2", "highp float shaderport_dot(highp vec2"}) {
+       {"highp vec3 shaderport_pow(highp vec3", "highp vec3 shaderport_exp2(highp vec3",
+        "highp vec3 shaderport_log2(highp vec3", "highp vec2 shaderport_reflect(highp vec2",
+        "highp float shaderport_dot(highp vec2", "highp vec2 shaderport_atan(highp vec2",
+        "highp float shaderport_atan(highp float shaderport_y", "highp float shaderport_atan01("}) {
     EXPECT_TRUE(Contains(text, wanted)) << wanted;
   }
   for (const std::string_view unused :
-       {"highp vec2 shaderport_pow(", "highp vec3 shaderport_exp2(",
-        "highp float shaderport_dot(highp vec3", "highp vec3 shaderport_reflect("}) {
+       {"highp vec2 shaderport_pow(", "highp float shaderport_pow(", "highp float shaderport_exp2(",
+        "highp float shaderport_dot(highp vec3", "highp vec3 shaderport_reflect(",
+        "highp vec3 shaderport_atan("}) {
     EXPECT_FALSE(Contains(text, unused)) << unused;
   }
   // A signature no helper has stands for all overloads.
