@@ -56,7 +56,7 @@ bool IsZeroLiteral(const Expr* expr) {
 enum class DivisionRewrite : uint8_t {
   kNone,           // folded whole: both compilers divide exactly
   kReciprocal,     // `x * (1.0 / (c))`
-  kOpaqueDivisor,  // `x / (zero < 0.0 ? T(1.0) : (d))`: exact, and Mesa cannot fold d
+  kOpaqueDivisor,  // `x / mix((d), T(1.0), zero < 0.0)` (OpaqueSelect): Mesa cannot fold d
 };
 
 struct Division {
@@ -144,14 +144,20 @@ class MathRewriter {
   bool AddDivisions() {
     bool opaque = false;
     const std::string zero(kOpaqueZeroUniform);
-    for (const auto& [at, site] : divisions_) {
+    // Innermost first: a division inside another's divisor ends where that divisor ends,
+    // and its closing text must come first there.
+    for (auto entry = divisions_.rbegin(); entry != divisions_.rend(); ++entry) {
+      const DivisionSite& site = entry->second;
       if (!site.rewritable) continue;
       const Division& division = site.division;
       const SourceRange& divisor = division.divisor;
       if (division.rewrite == DivisionRewrite::kOpaqueDivisor) {
-        c_.edits.Insert(divisor.file, divisor.begin,
-                        "(" + zero + " < 0.0 ? " + division.divisor_type + "(1.0) : (");
-        c_.edits.Insert(divisor.file, divisor.end, "))");
+        // OpaqueSelect's text split around the divisor.
+        const std::string one = division.divisor_type + "(1.0)";
+        const std::string select = OpaqueSelect(division.divisor_type, zero, "(@)", one);
+        const size_t hole = select.find('@');
+        c_.edits.Insert(divisor.file, divisor.begin, select.substr(0, hole));
+        c_.edits.Insert(divisor.file, divisor.end, select.substr(hole + 1));
         ++c_.result.opaque_divisors;
         opaque = true;
         continue;

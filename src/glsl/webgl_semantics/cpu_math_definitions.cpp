@@ -102,7 +102,8 @@ std::string Componentwise(std::string_view name, int arity, int float_tail) {
   return out;
 }
 
-// Each parameter of each function in `text` starts with `p = zero < 0.0 ? -p : p;` and
+// Each parameter of each function in `text` starts with `p = zero < 0.0 ? -p : p;`
+// (written as OpaqueSelect, without a branch) and
 // each `return x;` becomes `return (x) - zero;`: in Chromium the helper's arithmetic
 // runs inside SwiftShader, out of reach of the SPIR-V optimiser, so Mesa must not mix
 // the caller's arithmetic into it either (it turns `(v * 0.61) * 78.233` into
@@ -115,7 +116,6 @@ std::string Componentwise(std::string_view name, int arity, int float_tail) {
 // caller's arithmetic exact anyway, and the selects made a quarter of the compile.
 std::string WithOpaqueParameters(std::string_view text, bool parameters) {
   constexpr std::string_view kReturn = "return ";
-  const std::string opaque = std::string(kOpaqueZeroUniform) + " < 0.0 ? -";
   std::string out;
   int depth = 0;
   for (size_t i = 0; i < text.size();) {
@@ -136,9 +136,12 @@ std::string WithOpaqueParameters(std::string_view text, bool parameters) {
         size_t end = list.find(',', begin);
         if (end == std::string_view::npos) end = list.size();
         const std::string_view parameter = list.substr(begin, end - begin);
-        const std::string name(parameter.substr(parameter.rfind(' ') + 1));
-        out.append(" ").append(name).append(" = ").append(opaque).append(name).append(" : ");
-        out.append(name).append(";");
+        const size_t space = parameter.rfind(' ');
+        const std::string name(parameter.substr(space + 1));
+        const size_t type_begin = parameter.find_first_not_of(' ');
+        const std::string_view type = parameter.substr(type_begin, space - type_begin);
+        out.append(" ").append(name).append(" = ");
+        out.append(OpaqueSelect(type, kOpaqueZeroUniform, name, "-" + name)).append(";");
         begin = end + 1;
       }
       i = brace + 1;

@@ -70,7 +70,7 @@ const std::array<Helper, 33>& CpuMathHelpers() {
        "2139095040) >> 8u | 1065353216u); e = (e - 1.4960938) * 256.0; float m = "
        "intBitsToFloat(b & 8388607 | 1065353216); float p = (0.095428176 * m + 0.47779095) * m + "
        "0.19782813; float q = ((0.016618466 * m + 0.20350508) * m + 0.273829) * m + 0.04049669; "
-       "e += (m - 1.0) * (p / q); return b == 2139095040 ? x : e; }",
+       "e += (m - 1.0) * (p / q); return mix(e, x, b == 2139095040); }",
        {},
        {},
        "@ S(log2)(@ x) { $ b = floatBitsToInt(x); @ e = uintBitsToFloat(%(b & 2139095040) >> 8u | "
@@ -275,6 +275,19 @@ const Helper* FindCpuMathHelper(std::string_view name) {
 bool HasCpuMathDefinition(std::string_view builtin) {
   const Helper* helper = FindCpuMathHelper(builtin);
   return helper != nullptr && (helper->shape != Shape::kInternal || builtin == "cross");
+}
+
+std::string OpaqueSelect(std::string_view type, std::string_view zero, std::string_view if_false,
+                         std::string_view if_true) {
+  const std::string condition = std::string(zero) + " < 0.0";
+  if (type == "float") {
+    return "mix(" + std::string(if_false) + ", " + std::string(if_true) + ", " + condition + ")";
+  }
+  if (type == "vec2" || type == "vec3" || type == "vec4") {
+    return "mix(" + std::string(if_false) + ", " + std::string(if_true) + ", b" +
+           std::string(type) + "(" + condition + "))";
+  }
+  return "(" + condition + " ? " + std::string(if_true) + " : " + std::string(if_false) + ")";
 }
 
 std::string CpuMathHelperName(std::string_view builtin) {

@@ -16,6 +16,13 @@ namespace shaderport::glsl {
 // so Mesa cannot turn `x / 3.0` into `x * (1.0 / 3.0)`, which rounds differently.
 inline constexpr std::string_view kOpaqueZeroUniform = "shaderport_zero";
 
+// `(zero < 0.0 ? if_true : if_false)` written as Mesa compiles it without a branch (its
+// front end turns every `?:` into an if/else, which costs the compile more than the
+// arithmetic): `mix(if_false, if_true, zero < 0.0)` for float and vecN `type`, `?:` for
+// other types. Always `if_false`, but the compiler cannot know.
+std::string OpaqueSelect(std::string_view type, std::string_view zero, std::string_view if_false,
+                         std::string_view if_true);
+
 // True for the built-ins this library redefines (sin, pow, dot, mix, ...).
 bool HasCpuMathDefinition(std::string_view builtin);
 

@@ -23,10 +23,11 @@ namespace {
 
 constexpr std::string_view kName = "shaderport_smoothstep";
 
-// `@` stands for the vector type of each overload.
+// `@` stands for the vector type of each overload. Selects are mix, not `?:` or `if`,
+// which Mesa's front end compiles as branches (a large part of a call-heavy pass's compile).
 constexpr std::string_view kScalarHelper =
-    "float shaderport_smoothstep(float a, float b, float x) { if (a == b) return x > a ? 1.0 : "
-    "0.0; float t = clamp((x - a) / (b - a), 0.0, 1.0); return t * t * (3.0 - 2.0 * t); } ";
+    "float shaderport_smoothstep(float a, float b, float x) { float t = clamp((x - a) / (b - a), "
+    "0.0, 1.0); return mix(t * t * (3.0 - 2.0 * t), float(x > a), a == b); } ";
 constexpr std::string_view kVectorHelpers =
     "@ shaderport_smoothstep(@ a, @ b, @ x) { @ t = clamp((x - a) / (b - a), 0.0, 1.0); t = t * "
     "t * (3.0 - 2.0 * t); return mix(t, @(greaterThan(x, a)), equal(a, b)); } "
@@ -37,13 +38,13 @@ constexpr std::string_view kOpaqueZero = "shaderport_edge_zero";
 
 // kScalarHelper and kVectorHelpers as built-ins: arguments and results opaque.
 constexpr std::string_view kOpaqueScalarHelper =
-    "float shaderport_smoothstep(float a, float b, float x) { a = Z < 0.0 ? -a : a; b = Z < 0.0 "
-    "? -b : b; x = Z < 0.0 ? -x : x; if (a == b) return x > a ? 1.0 : 0.0; float t = clamp((x - "
-    "a) / (b - a), 0.0, 1.0); return (t * t * (3.0 - 2.0 * t)) - Z; } ";
+    "float shaderport_smoothstep(float a, float b, float x) { a = mix(a, -a, Z < 0.0); b = mix(b, "
+    "-b, Z < 0.0); x = mix(x, -x, Z < 0.0); float t = clamp((x - a) / (b - a), 0.0, 1.0); return "
+    "mix((t * t * (3.0 - 2.0 * t)) - Z, float(x > a), a == b); } ";
 constexpr std::string_view kOpaqueVectorHelpers =
-    "@ shaderport_smoothstep(@ a, @ b, @ x) { a = Z < 0.0 ? -a : a; b = Z < 0.0 ? -b : b; x = Z "
-    "< 0.0 ? -x : x; @ t = clamp((x - a) / (b - a), 0.0, 1.0); t = t * t * (3.0 - 2.0 * t); "
-    "return mix(t, @(greaterThan(x, a)), equal(a, b)) - Z; } "
+    "@ shaderport_smoothstep(@ a, @ b, @ x) { a = mix(a, -a, b@(Z < 0.0)); b = mix(b, -b, b@(Z < "
+    "0.0)); x = mix(x, -x, b@(Z < 0.0)); @ t = clamp((x - a) / (b - a), 0.0, 1.0); t = t * t * "
+    "(3.0 - 2.0 * t); return mix(t, @(greaterThan(x, a)), equal(a, b)) - Z; } "
     "@ shaderport_smoothstep(float a, float b, @ x) { return shaderport_smoothstep(@(a), @(b), "
     "x); } ";
 

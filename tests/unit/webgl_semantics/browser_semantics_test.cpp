@@ -177,7 +177,10 @@ TEST(BrowserSemantics, SmoothstepIsRenamedInCallsAndMacroBodies) {
   EXPECT_NE(text.find("o = vec4(shaderport_smoothstep(vec3(0.2)"), std::string::npos);
   EXPECT_NE(
       text.find("highp float shaderport_smoothstep(highp float shaderport_a, highp float "
-                "shaderport_b, highp float shaderport_x) { if (shaderport_a == shaderport_b)"),
+                "shaderport_b, highp float shaderport_x) { highp float shaderport_t = "
+                "clamp((shaderport_x - shaderport_a) / (shaderport_b - shaderport_a), 0.0, 1.0); "
+                "return mix(shaderport_t * shaderport_t * (3.0 - 2.0 * shaderport_t), "
+                "float(shaderport_x > shaderport_a), shaderport_a == shaderport_b); }"),
       std::string::npos);
 }
 

@@ -49,14 +49,15 @@ TEST(CpuBrowserMath, BuiltinCallsBecomeHelpersOfTheOverloadsCalled) {
                        "shaderport_y, highp float shaderport_a)"));
   // Parameters and results pass a select on the opaque zero, so that Mesa cannot mix
   // the caller's arithmetic into the helper's (and a constant 0.0 keeps its sign).
-  EXPECT_TRUE(Contains(body,
-                       "highp float shaderport_dot(highp vec3 shaderport_x, highp vec3 "
-                       "shaderport_y) { shaderport_x = shaderport_zero < 0.0 ? -shaderport_x : "
-                       "shaderport_x; shaderport_y = shaderport_zero < 0.0 ? -shaderport_y : "
-                       "shaderport_y; highp float shaderport_d = shaderport_x.x * "
-                       "shaderport_y.x; shaderport_d = shaderport_x.y * shaderport_y.y + "
-                       "shaderport_d; shaderport_d = shaderport_x.z * shaderport_y.z + "
-                       "shaderport_d; return (shaderport_d) - shaderport_zero; }"))
+  EXPECT_TRUE(Contains(
+      body,
+      "highp float shaderport_dot(highp vec3 shaderport_x, highp vec3 "
+      "shaderport_y) { shaderport_x = mix(shaderport_x, -shaderport_x, "
+      "bvec3(shaderport_zero < 0.0)); shaderport_y = mix(shaderport_y, "
+      "-shaderport_y, bvec3(shaderport_zero < 0.0)); highp float shaderport_d = shaderport_x.x * "
+      "shaderport_y.x; shaderport_d = shaderport_x.y * shaderport_y.y + "
+      "shaderport_d; shaderport_d = shaderport_x.z * shaderport_y.z + "
+      "shaderport_d; return (shaderport_d) - shaderport_zero; }"))
       << body;
   // Only the overloads called, and what they call: Mesa compiles every function given.
   EXPECT_TRUE(Contains(body, "highp float shaderport_sin(highp float shaderport_x)"));
@@ -101,17 +102,20 @@ TEST(CpuBrowserMath, InvariantOutputsLeaveParametersPlain) {
   // mix keeps them: Mesa reshaped its arithmetic with the caller's (4sXcWj).
   const std::string mixed =
       Body(Apply("void main() { o = vec4(mix(gl_FragCoord.x, gl_FragCoord.y, 0.3)); }\n", options));
-  EXPECT_TRUE(Contains(mixed, "shaderport_a = shaderport_zero < 0.0 ? -shaderport_a : ")) << mixed;
+  EXPECT_TRUE(
+      Contains(mixed, "shaderport_a = mix(shaderport_a, -shaderport_a, shaderport_zero < 0.0);"))
+      << mixed;
   options.opaque_helper_arguments = true;
   const std::string opaque =
       Body(Apply("void main() { o = vec4(dot(gl_FragCoord.xy, gl_FragCoord.yx)); }\n", options));
-  EXPECT_TRUE(Contains(opaque, "{ shaderport_x = shaderport_zero < 0.0 ? -shaderport_x : "))
+  EXPECT_TRUE(Contains(
+      opaque, "{ shaderport_x = mix(shaderport_x, -shaderport_x, bvec2(shaderport_zero < 0.0));"))
       << opaque;
   options.opaque_helper_arguments = false;
   options.add_render_probe = false;  // a buffer pass: its branches reach no output
   EXPECT_TRUE(Contains(
       Body(Apply("void main() { o = vec4(dot(gl_FragCoord.xy, gl_FragCoord.yx)); }\n", options)),
-      "{ shaderport_x = shaderport_zero < 0.0 ? -shaderport_x : "));
+      "{ shaderport_x = mix(shaderport_x, -shaderport_x, bvec2(shaderport_zero < 0.0));"));
 }
 
 TEST(CpuBrowserMath, ConstantCallsAndGlobalInitializersKeepTheBuiltIn) {
@@ -173,7 +177,8 @@ TEST(CpuBrowserMath, DivisionByAConstantMultipliesByItsReciprocal) {
 TEST(CpuBrowserMath, OtherDivisorsAreHiddenFromTheDriversFolding) {
   // Mesa propagates g = 0.0 out of Init() and turns `x / 0.0` into NaN or garbage;
   // the select on the opaque zero keeps every divisor exact and its sign of zero.
-  // A matrix divisor and a literal zero are hidden too; integer divisions stay.
+  // A matrix divisor and a literal zero are hidden too; integer divisions stay. Float
+  // and vector divisors are selected by mix (Mesa compiles `?:` as a branch).
   const auto result = Apply(
       "float g; void Init() { g = 0.0; }\n"
       "void main() { Init(); float x = gl_FragCoord.x; int i = int(x) / 3;\n"
@@ -185,9 +190,9 @@ TEST(CpuBrowserMath, OtherDivisorsAreHiddenFromTheDriversFolding) {
             "float g; uniform highp float shaderport_zero; void Init() { g = 0.0; }\n"
             "void main() { Init(); float x = gl_FragCoord.x; int i = int(x) / 3;\n"
             "mat2 m = mat2(x) / (shaderport_zero < 0.0 ? mat2(1.0) : (mat2(1.5))); x /= "
-            "(shaderport_zero < 0.0 ? float(1.0) : (g)); o = vec4(x / (shaderport_zero < 0.0 ? "
-            "float(1.0) : (0.0)), m[0].x, float(i), 1.0 / (shaderport_zero < 0.0 ? float(1.0) : "
-            "(g))); }\n");
+            "mix((g), float(1.0), shaderport_zero < 0.0); o = vec4(x / mix((0.0), float(1.0), "
+            "shaderport_zero < 0.0), m[0].x, float(i), 1.0 / mix((g), float(1.0), shaderport_zero "
+            "< 0.0)); }\n");
 }
 
 TEST(CpuBrowserMath, UintToFloatConversionsRoundTwice) {
