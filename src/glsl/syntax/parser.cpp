@@ -248,6 +248,13 @@ void Parser::PlaceEmptyNodes() {
   // (`float a = ;`): move each empty node into its parent so ranges nest. A loop over
   // the preorder index (parents come before their children, so each parent is placed
   // before its children are) with the open ancestors by depth, not a second walk.
+  // Empty nodes come only from error recovery: most trees have none, and a scan of the
+  // node table is far cheaper than the walk.
+  bool any_empty = false;
+  for (uint32_t id = 0; id < tree_.NodeCount() && !any_empty; ++id) {
+    any_empty = !tree_.NodeAt(id).HasTokens();
+  }
+  if (!any_empty) return;
   std::vector<const Node*> ancestors;
   for (const PreorderEntry& entry : tree_.Preorder()) {
     ancestors.resize(entry.depth);
