@@ -152,7 +152,11 @@ class Parser {
   bool too_many_reported_ = false;
 };
 
-inline uint32_t Parser::Index(uint32_t ahead) const { return std::min(pos_ + ahead, end_index_); }
+// pos_ never passes end_index_ (only Advance moves it), so the current token needs no
+// clamp: most calls ask for it, with `ahead` a constant 0 that folds the test away.
+inline uint32_t Parser::Index(uint32_t ahead) const {
+  return ahead == 0 ? pos_ : std::min(pos_ + ahead, end_index_);
+}
 
 inline const PpToken& Parser::Tok(uint32_t ahead) const { return tokens_[Index(ahead)]; }
 
