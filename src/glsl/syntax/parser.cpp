@@ -30,6 +30,7 @@ Parser::Parser(const PreprocessResult& pp, const ParseOptions& options)
     tokens = &own_tokens_;
   }
   tokens_ = tokens->data();
+  current_ = tokens_;
   token_count_ = static_cast<uint32_t>(tokens->size());
   // Sized once and written in place (zero is a plain identifier's WordInfo).
   words_.resize(end_index_ + 1);

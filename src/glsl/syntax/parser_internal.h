@@ -140,6 +140,7 @@ class Parser {
   // The tokens read: pp_.tokens, or own_tokens_ when those lack an end of file. Every
   // index up to end_index_ (where Index() stops) is inside.
   const PpToken* tokens_ = nullptr;
+  const PpToken* current_ = nullptr;  // tokens_ + pos_: the token asked for most
   uint32_t token_count_ = 0;
   std::vector<PpToken> own_tokens_;
   std::vector<WordInfo> words_;
@@ -158,7 +159,9 @@ inline uint32_t Parser::Index(uint32_t ahead) const {
   return ahead == 0 ? pos_ : std::min(pos_ + ahead, end_index_);
 }
 
-inline const PpToken& Parser::Tok(uint32_t ahead) const { return tokens_[Index(ahead)]; }
+inline const PpToken& Parser::Tok(uint32_t ahead) const {
+  return ahead == 0 ? *current_ : tokens_[Index(ahead)];
+}
 
 inline std::string_view Parser::Text(uint32_t ahead) const { return Tok(ahead).text; }
 inline const WordInfo& Parser::Word(uint32_t ahead) const { return words_[Index(ahead)]; }
@@ -197,7 +200,10 @@ inline void Parser::FinishNode(Node* node) {
 }
 
 inline void Parser::Advance() {
-  if (pos_ < end_index_) ++pos_;
+  if (pos_ < end_index_) {
+    ++pos_;
+    ++current_;
+  }
 }
 
 inline bool Parser::Accept(Punct p) {
