@@ -56,7 +56,7 @@ bool Parser::Expect(Punct p, std::string_view context) {
 }
 
 Name Parser::TakeName() {
-  Name name{std::string(Text()), TokenRange(Index())};
+  Name name{std::string(Text()), Tok().expansion};
   if (Word().status == WordStatus::kReserved) {
     Error(name.range, "syntax/reserved-word",
           "'" + name.text + "' is a reserved word in GLSL ES " +
@@ -119,7 +119,7 @@ void Parser::ErrorAtToken(std::string_view rule, std::string message) {
   // One error per token: the first explains it, the rest would be cascades.
   if (last_error_index_ == Index()) return;
   last_error_index_ = Index();
-  Error(AtEnd() ? RangeOf(Index(), Index() - 1) : TokenRange(Index()), rule, std::move(message));
+  Error(AtEnd() ? RangeOf(Index(), Index() - 1) : Tok().expansion, rule, std::move(message));
 }
 
 void Parser::ErrorAfterPrevious(std::string_view rule, std::string message) {
@@ -134,7 +134,7 @@ bool Parser::TooDeep() {
   if (depth_ <= limits::kMaxSyntaxDepth) return false;
   if (!depth_reported_) {
     depth_reported_ = true;
-    Error(AtEnd() ? RangeOf(Index(), Index() - 1) : TokenRange(Index()), "syntax/nesting-too-deep",
+    Error(AtEnd() ? RangeOf(Index(), Index() - 1) : Tok().expansion, "syntax/nesting-too-deep",
           "nesting too deep: more than " + std::to_string(limits::kMaxSyntaxDepth) +
               " levels of parentheses, blocks or operators");
   }

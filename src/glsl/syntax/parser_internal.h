@@ -186,8 +186,9 @@ inline bool Parser::AtName(uint32_t ahead) const {
 }
 
 inline void Parser::FinishNode(Node* node) {
-  // The common case of RangeOf: tokens consumed, the first and last in one file.
-  if (pos_ > node->first_token && pos_ <= end_index_) {
+  // The common case of RangeOf: tokens consumed, the first and last in one file (pos_
+  // never passes end_index_).
+  if (pos_ > node->first_token) {
     const SourceRange& first = tokens_[node->first_token].expansion;
     const SourceRange& last = tokens_[pos_ - 1].expansion;
     if (first.file == last.file) {
