@@ -29,7 +29,7 @@ class Lexer {
     while (true) {
       p = LexTrivia(p);
       if (p >= text_.size()) break;
-      if (out_.tokens.size() >= limits::kMaxTokens) {
+      if (token_count_ >= limits::kMaxTokens) {
         Report("lex/too-many-tokens", p, text_.size(),
                "the file has more than " + std::to_string(limits::kMaxTokens) +
                    " tokens; the rest of it is not read");
@@ -39,10 +39,7 @@ class Lexer {
       }
       p = LexToken(p);
     }
-    Token eof;
-    eof.begin = eof.end = U32(text_.size());
-    eof.text = text_.substr(text_.size());
-    Finish(eof);
+    Finish(TokenKind::kEndOfFile, Punct::kNone, text_.size(), text_.size());
     return std::move(out_);
   }
 
@@ -92,11 +89,12 @@ class Lexer {
 
   // Lexes one token at `p` (not trivia); returns where it ends.
   size_t LexToken(size_t p) {
-    Token token;
+    TokenKind kind;
+    Punct punct = Punct::kNone;
     Cursor cursor(text_, p);
     const char c = text_[p];
     if (IsIdentifierStart(c)) {
-      token.kind = TokenKind::kIdentifier;
+      kind = TokenKind::kIdentifier;
       if (plain_) {
         size_t end = p + 1;
         while (end < text_.size() && IsIdentifierChar(text_[end])) ++end;
@@ -105,28 +103,25 @@ class Lexer {
         while (IsIdentifierChar(cursor.Ch())) cursor.Bump();
       }
     } else if (IsDigit(c) || (c == '.' && IsDigit(cursor.Peek(1)))) {
-      token.kind = LexNumber(cursor);
+      kind = LexNumber(cursor);
     } else if (c == '#' && at_line_start_) {
-      token.kind = TokenKind::kHash;
+      kind = TokenKind::kHash;
       cursor.Bump();
     } else if (int length = 0;
-               (token.punct = MatchPunctuator(c, PeekFrom(cursor, p, 1), PeekFrom(cursor, p, 2),
-                                              &length)) != Punct::kNone) {
-      token.kind = TokenKind::kPunctuator;
+               (punct = MatchPunctuator(c, PeekFrom(cursor, p, 1), PeekFrom(cursor, p, 2),
+                                        &length)) != Punct::kNone) {
+      kind = TokenKind::kPunctuator;
       if (plain_) {
         cursor.SetEnd(p + static_cast<size_t>(length));
       } else {
         for (int i = 0; i < length; ++i) cursor.Bump();
       }
     } else {
-      token.kind = TokenKind::kInvalid;
+      kind = TokenKind::kInvalid;
       cursor.SetEnd(p + InvalidLength(text_, p));
       ReportInvalid(p, cursor.End());
     }
-    token.begin = U32(p);
-    token.end = U32(cursor.End());
-    token.text = text_.substr(p, cursor.End() - p);
-    Finish(token);
+    Finish(kind, punct, p, cursor.End());
     return cursor.End();
   }
 
@@ -210,16 +205,23 @@ class Lexer {
     out_.diagnostics.push_back(std::move(d));
   }
 
-  // Attaches the pending trivia and line flags to `token` and stores it.
-  void Finish(Token& token) {
+  // Stores the token of bytes [begin, end) with the pending trivia and line flags,
+  // written in place (a token built aside and then copied cost a copy per token).
+  void Finish(TokenKind kind, Punct punct, size_t begin, size_t end) {
+    Token& token = out_.tokens.emplace_back();
+    ++token_count_;
+    token.kind = kind;
+    token.punct = punct;
+    token.begin = U32(begin);
+    token.end = U32(end);
     token.trivia_begin = trivia_used_;
     token.trivia_end = U32(out_.trivia.size());
     trivia_used_ = token.trivia_end;
     token.at_line_start = at_line_start_;
     token.leading_space = leading_space_;
+    token.text = text_.substr(begin, end - begin);
     at_line_start_ = false;
     leading_space_ = false;
-    out_.tokens.push_back(token);
   }
 
   const SourceFile& file_;
@@ -227,6 +229,7 @@ class Lexer {
   bool plain_;  // no backslash in the file
   LexedFile out_;
   uint32_t trivia_used_ = 0;
+  size_t token_count_ = 0;  // out_.tokens.size(), without a division per token
   bool at_line_start_ = true;
   bool leading_space_ = false;
 };

@@ -153,6 +153,10 @@ void AddPredefinedMacros(PpState& state, std::span<const std::string> predefined
         pp.kind = t.kind;
         pp.punct = t.punct;
         pp.text = stored.substr(t.begin, t.end - t.begin);
+        // Logical spelling, as for tokens of a file (the parser reads texts as they are).
+        if (pp.text.find('\\') != std::string_view::npos) {
+          pp.text = StoreLogicalSpelling(pp.text, state);
+        }
         pp.leading_space = t.leading_space;
         m.body.push_back(pp);  // spelling stays invalid: uses point at the macro name
         m.body_param.push_back(-1);

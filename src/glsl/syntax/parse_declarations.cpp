@@ -103,7 +103,7 @@ QualifierList Parser::ParseQualifiers() {
   QualifierList list;
   while (AtQualifierStart()) {
     Qualifier q;
-    q.range = TokenRange(Index());
+    q.range = Tok().expansion;
     if (AtRole(WordRole::kPrecisionQualifier)) {
       q.kind = QualifierKind::kPrecision;
       q.precision = PrecisionOf(Text());
@@ -168,7 +168,7 @@ TypeSpecifier* Parser::ParseTypeSpecifier(const QualifierList& qualifiers) {
   } else if (IsTypeName()) {
     type->name_kind =
         Word().role == WordRole::kType ? TypeNameKind::kBuiltin : TypeNameKind::kStruct;
-    type->name = {std::string(Text()), TokenRange(Index())};
+    type->name = {std::string(Text()), Tok().expansion};
     Advance();
   } else if (AtName()) {
     type->name_kind = TypeNameKind::kUnknown;

@@ -142,7 +142,7 @@ Expr* Parser::ParseExpression() {
     auto* node = tree_.Make<BinaryExpr>();
     node->first_token = first;
     node->op = BinaryOp::kComma;
-    node->op_range = TokenRange(Index());
+    node->op_range = Tok().expansion;
     node->lhs = lhs;
     Advance();
     node->rhs = ParseAssignment();
@@ -165,7 +165,7 @@ Expr* Parser::ParseAssignment() {
   auto* node = tree_.Make<AssignmentExpr>();
   node->first_token = first;
   node->op = *op;
-  node->op_range = TokenRange(Index());
+  node->op_range = Tok().expansion;
   node->lhs = lhs;
   Advance();
   node->rhs = ParseAssignment();
@@ -195,7 +195,7 @@ Expr* Parser::ParseBinary(int min_precedence) {
     auto* node = tree_.Make<BinaryExpr>();
     node->first_token = first;
     node->op = info->op;
-    node->op_range = TokenRange(Index());
+    node->op_range = Tok().expansion;
     node->lhs = lhs;
     Advance();
     node->rhs = ParseBinary(info->precedence + 1);
@@ -209,7 +209,7 @@ Expr* Parser::ParseUnary() {
   DepthGuard guard(*this);
   auto* node = Start<UnaryExpr>();
   node->op = *op;
-  node->op_range = TokenRange(Index());
+  node->op_range = Tok().expansion;
   Advance();
   if (TooDeep()) {
     node->operand = Start<ErrorExpr>();
@@ -239,7 +239,7 @@ Expr* Parser::ParsePostfix() {
     } else if (AtPunct(Punct::kDot)) {
       Advance();
       Name member = Tok().kind == TokenKind::kIdentifier
-                        ? Name{std::string(Text()), TokenRange(Index())}
+                        ? Name{std::string(Text()), Tok().expansion}
                         : ExpectName("a field name after '.'");
       if (Tok().kind == TokenKind::kIdentifier) Advance();
       if (AtPunct(Punct::kLeftParen)) {
@@ -261,7 +261,7 @@ Expr* Parser::ParsePostfix() {
       auto* node = tree_.Make<UnaryExpr>();
       node->first_token = first;
       node->op = AtPunct(Punct::kPlusPlus) ? UnaryOp::kPostIncrement : UnaryOp::kPostDecrement;
-      node->op_range = TokenRange(Index());
+      node->op_range = Tok().expansion;
       node->operand = expr;
       Advance();
       expr = Finish(node);

@@ -11,45 +11,34 @@ namespace shaderport::glsl {
 
 Parser::Parser(const PreprocessResult& pp, const ParseOptions& options)
     : pp_(pp), options_(options) {
-  const auto& tokens = pp_.tokens;
-  // Sized once and written in place (zero is an empty text and a plain identifier's
-  // WordInfo), then cut after the end of file: cheaper than two push_backs a token.
-  texts_.resize(tokens.size() + 1);
-  words_.resize(tokens.size() + 1);
-  // Tokens are a few bytes long: a loop is cheaper than a memchr call per token.
-  const auto has_backslash = [](std::string_view text) {
-    for (const char c : text) {
-      if (c == '\\') return true;
-    }
-    return false;
-  };
-  end_index_ = static_cast<uint32_t>(tokens.size());
-  for (uint32_t i = 0; i < tokens.size(); ++i) {
-    const PpToken& token = tokens[i];
-    if (token.kind == TokenKind::kEndOfFile) {
+  // Token texts are read as the preprocessor left them: it already removed the line
+  // continuations inside tokens (ConvertToPpToken, predefined macros, pastes), so the
+  // parser keeps no cleaned copy of its own.
+  const std::vector<PpToken>* tokens = &pp_.tokens;
+  end_index_ = static_cast<uint32_t>(tokens->size());
+  for (uint32_t i = 0; i < tokens->size(); ++i) {
+    if ((*tokens)[i].kind == TokenKind::kEndOfFile) {
       end_index_ = i;
       break;
     }
-    std::string_view text = token.text;
-    // A one-byte token has no backslash-newline to remove.
-    if (text.size() > 1 && has_backslash(text)) {
-      std::string clean;
-      for (size_t k = 0; k < text.size(); ++k) {
-        if (text[k] == '\\' && k + 1 < text.size() &&
-            (text[k + 1] == '\n' || text[k + 1] == '\r')) {
-          ++k;
-          if (text[k] == '\r' && k + 1 < text.size() && text[k + 1] == '\n') ++k;
-          continue;
-        }
-        clean.push_back(text[k]);
-      }
-      text = cleaned_.emplace_back(std::move(clean));
-    }
-    texts_[i] = text;
-    if (token.kind == TokenKind::kIdentifier) words_[i] = ClassifyWord(text, options_.version);
   }
-  texts_.resize(end_index_ + 1);
+  if (end_index_ == tokens->size()) {
+    // No end of file (a hand-made token list): a copy ending in one, so that every
+    // index up to end_index_ can be read without a bounds test.
+    own_tokens_ = pp_.tokens;
+    own_tokens_.emplace_back();
+    tokens = &own_tokens_;
+  }
+  tokens_ = tokens->data();
+  current_ = tokens_;
+  token_count_ = static_cast<uint32_t>(tokens->size());
+  // Sized once and written in place (zero is a plain identifier's WordInfo).
   words_.resize(end_index_ + 1);
+  for (uint32_t i = 0; i < end_index_; ++i) {
+    if (tokens_[i].kind == TokenKind::kIdentifier) {
+      words_[i] = ClassifyWord(tokens_[i].text, options_.version);
+    }
+  }
 }
 
 // ------------------------------------------------------------------ tokens
@@ -67,7 +56,7 @@ bool Parser::Expect(Punct p, std::string_view context) {
 }
 
 Name Parser::TakeName() {
-  Name name{std::string(Text()), TokenRange(Index())};
+  Name name{std::string(Text()), Tok().expansion};
   if (Word().status == WordStatus::kReserved) {
     Error(name.range, "syntax/reserved-word",
           "'" + name.text + "' is a reserved word in GLSL ES " +
@@ -130,7 +119,7 @@ void Parser::ErrorAtToken(std::string_view rule, std::string message) {
   // One error per token: the first explains it, the rest would be cascades.
   if (last_error_index_ == Index()) return;
   last_error_index_ = Index();
-  Error(AtEnd() ? RangeOf(Index(), Index() - 1) : TokenRange(Index()), rule, std::move(message));
+  Error(AtEnd() ? RangeOf(Index(), Index() - 1) : Tok().expansion, rule, std::move(message));
 }
 
 void Parser::ErrorAfterPrevious(std::string_view rule, std::string message) {
@@ -145,7 +134,7 @@ bool Parser::TooDeep() {
   if (depth_ <= limits::kMaxSyntaxDepth) return false;
   if (!depth_reported_) {
     depth_reported_ = true;
-    Error(AtEnd() ? RangeOf(Index(), Index() - 1) : TokenRange(Index()), "syntax/nesting-too-deep",
+    Error(AtEnd() ? RangeOf(Index(), Index() - 1) : Tok().expansion, "syntax/nesting-too-deep",
           "nesting too deep: more than " + std::to_string(limits::kMaxSyntaxDepth) +
               " levels of parentheses, blocks or operators");
   }
@@ -260,6 +249,13 @@ void Parser::PlaceEmptyNodes() {
   // (`float a = ;`): move each empty node into its parent so ranges nest. A loop over
   // the preorder index (parents come before their children, so each parent is placed
   // before its children are) with the open ancestors by depth, not a second walk.
+  // Empty nodes come only from error recovery: most trees have none, and a scan of the
+  // node table is far cheaper than the walk.
+  bool any_empty = false;
+  for (uint32_t id = 0; id < tree_.NodeCount() && !any_empty; ++id) {
+    any_empty = !tree_.NodeAt(id).HasTokens();
+  }
+  if (!any_empty) return;
   std::vector<const Node*> ancestors;
   for (const PreorderEntry& entry : tree_.Preorder()) {
     ancestors.resize(entry.depth);

@@ -3,7 +3,6 @@
 #pragma once
 
 #include <algorithm>
-#include <deque>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -59,7 +58,7 @@ class Parser {
   void FinishNodeSlow(Node* node);
   SourceRange RangeOf(uint32_t first, uint32_t last) const;
   SourceRange TokenRange(uint32_t index) const {
-    return index < pp_.tokens.size() ? pp_.tokens[index].expansion : SourceRange{};
+    return index < token_count_ ? tokens_[index].expansion : SourceRange{};
   }
 
   // ---- diagnostics and recovery (parser.cpp)
@@ -138,9 +137,13 @@ class Parser {
   DiagnosticList diagnostics_;
   uint32_t pos_ = 0;
   uint32_t end_index_ = 0;  // index of the kEndOfFile token
+  // The tokens read: pp_.tokens, or own_tokens_ when those lack an end of file. Every
+  // index up to end_index_ (where Index() stops) is inside.
+  const PpToken* tokens_ = nullptr;
+  const PpToken* current_ = nullptr;  // tokens_ + pos_: the token asked for most
+  uint32_t token_count_ = 0;
+  std::vector<PpToken> own_tokens_;
   std::vector<WordInfo> words_;
-  std::deque<std::string> cleaned_;                        // spellings with continuations removed
-  std::vector<std::string_view> texts_;                    // per token
   std::vector<std::pair<std::string, bool>> scope_names_;  // (name, is struct)
   std::vector<size_t> scope_marks_;
   uint32_t depth_ = 0;
@@ -150,17 +153,17 @@ class Parser {
   bool too_many_reported_ = false;
 };
 
-// The end of input, for lookahead past the last token.
-inline constexpr PpToken kPastEndToken{};
-
-inline uint32_t Parser::Index(uint32_t ahead) const { return std::min(pos_ + ahead, end_index_); }
-
-inline const PpToken& Parser::Tok(uint32_t ahead) const {
-  const uint32_t i = Index(ahead);
-  return i < pp_.tokens.size() ? pp_.tokens[i] : kPastEndToken;
+// pos_ never passes end_index_ (only Advance moves it), so the current token needs no
+// clamp: most calls ask for it, with `ahead` a constant 0 that folds the test away.
+inline uint32_t Parser::Index(uint32_t ahead) const {
+  return ahead == 0 ? pos_ : std::min(pos_ + ahead, end_index_);
 }
 
-inline std::string_view Parser::Text(uint32_t ahead) const { return texts_[Index(ahead)]; }
+inline const PpToken& Parser::Tok(uint32_t ahead) const {
+  return ahead == 0 ? *current_ : tokens_[Index(ahead)];
+}
+
+inline std::string_view Parser::Text(uint32_t ahead) const { return Tok(ahead).text; }
 inline const WordInfo& Parser::Word(uint32_t ahead) const { return words_[Index(ahead)]; }
 
 inline bool Parser::AtPunct(Punct p, uint32_t ahead) const {
@@ -183,10 +186,11 @@ inline bool Parser::AtName(uint32_t ahead) const {
 }
 
 inline void Parser::FinishNode(Node* node) {
-  // The common case of RangeOf: tokens consumed, the first and last in one file.
-  if (pos_ > node->first_token && pos_ <= end_index_) {
-    const SourceRange& first = pp_.tokens[node->first_token].expansion;
-    const SourceRange& last = pp_.tokens[pos_ - 1].expansion;
+  // The common case of RangeOf: tokens consumed, the first and last in one file (pos_
+  // never passes end_index_).
+  if (pos_ > node->first_token) {
+    const SourceRange& first = tokens_[node->first_token].expansion;
+    const SourceRange& last = tokens_[pos_ - 1].expansion;
     if (first.file == last.file) {
       node->last_token = pos_ - 1;
       node->range = {first.file, first.begin, std::max(first.begin, last.end)};
@@ -197,7 +201,10 @@ inline void Parser::FinishNode(Node* node) {
 }
 
 inline void Parser::Advance() {
-  if (pos_ < end_index_) ++pos_;
+  if (pos_ < end_index_) {
+    ++pos_;
+    ++current_;
+  }
 }
 
 inline bool Parser::Accept(Punct p) {
