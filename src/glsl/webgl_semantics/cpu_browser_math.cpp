@@ -18,6 +18,7 @@
 // A name spelled in a macro body is renamed only when every use of it may be.
 #include <map>
 #include <optional>
+#include <ranges>
 #include <set>
 #include <utility>
 
@@ -146,8 +147,8 @@ class MathRewriter {
     const std::string zero(kOpaqueZeroUniform);
     // Innermost first: a division inside another's divisor ends where that divisor ends,
     // and its closing text must come first there.
-    for (auto entry = divisions_.rbegin(); entry != divisions_.rend(); ++entry) {
-      const DivisionSite& site = entry->second;
+    for (const auto& entry : std::views::reverse(divisions_)) {
+      const DivisionSite& site = entry.second;
       if (!site.rewritable) continue;
       const Division& division = site.division;
       const SourceRange& divisor = division.divisor;
@@ -202,10 +203,15 @@ class MathRewriter {
     signature += '(';
     for (size_t i = 0; i < call.arguments.size(); ++i) {
       const Type& type = c_.model.TypeOf(call.arguments[i]->id);
-      if (type.IsUnknown() || type.IsArray()) return std::string(call.callee.text);
-      signature += (i > 0 ? "," : "") + Spell(type);
+      if (type.IsUnknown() || type.IsArray()) {
+        signature.resize(call.callee.text.size());
+        return signature;
+      }
+      if (i > 0) signature += ',';
+      signature += Spell(type);
     }
-    return signature + ')';
+    signature += ')';
+    return signature;
   }
 
   // clamp(x, lo, hi) with x and one bound constant: the SPIR-V optimiser answers

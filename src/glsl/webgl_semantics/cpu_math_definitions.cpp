@@ -155,23 +155,6 @@ std::string WithOpaqueParameters(std::string_view text, bool parameters) {
   return out;
 }
 
-// Componentwise min and max on whole vectors: one comparison and one select, each
-// component as the float overload computes it.
-std::string VectorMinMax(const Helper& helper) {
-  std::string out;
-  const std::string name = "S(" + std::string(helper.builtin) + ")";
-  for (const std::string_view type : kVectors) {
-    const std::string vec(type);
-    const std::string flip =
-        "notEqual(" + std::string(helper.vector_compare) + "(a0, b), b" + vec + "(Z < 0.0))";
-    out += vec + " " + name + "(" + vec + " a0, " + vec + " a1) { " + vec +
-           " b = a1; return mix(b, a0, " + flip + "); } ";
-    out += vec + " " + name + "(" + vec + " a0, float a1) { " + vec + " b = " + vec +
-           "(a1); return mix(b, a0, " + flip + "); } ";
-  }
-  return out;
-}
-
 // The vector overloads of `helper.vector_text` for vec2, vec3 and vec4.
 std::string WholeVectorOverloads(const Helper& helper) {
   std::string out;
@@ -287,11 +270,8 @@ std::vector<Overload> Overloads(const Helper& helper, bool opaque_parameters) {
       AddVectorOverloads(helper, 2, 0, opaque_parameters, out);
       break;
     case Shape::kMinMax:
-      AddFunctions(
-          helper,
-          WithOpaqueParameters(Spell(std::string(helper.text) + " " + VectorMinMax(helper)),
-                               opaque_parameters),
-          false, out);
+      AddFunctions(helper, WithOpaqueParameters(Spell(helper.text), opaque_parameters), false, out);
+      AddVectorOverloads(helper, 2, 1, opaque_parameters, out);
       break;
     case Shape::kMix:
       // Always opaque: without, Mesa still reshaped mix's arithmetic with the caller's

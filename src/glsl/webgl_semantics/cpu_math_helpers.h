@@ -28,8 +28,7 @@ struct Helper {
   // float definition; for kReduction/kGeometric: `@` is the type, `#` the body part
   // that repeats per component (see ForSize).
   std::string_view text;
-  std::string_view float_text = {};      // kReduction: the float overload (no swizzles on floats)
-  std::string_view vector_compare = {};  // kMinMax: the componentwise comparison
+  std::string_view float_text = {};  // kReduction: the float overload (no swizzles on floats)
   // The vector overloads written on whole vectors (`@` vecN, `$` ivecN, `%` uvecN),
   // each component computed as the float definition computes it; without, a vector
   // overload calls the float one per component, which costs Mesa a call each.

@@ -22,7 +22,6 @@ const std::array<Helper, 33>& CpuMathHelpers() {
        "float S(sin5)(float x) { float x2 = x * x; return ((74.43889 * x2 + -41.16937) * x2 + "
        "6.2823086) * x; }",
        {},
-       {},
        "@ S(sin5)(@ x) { @ x2 = x * x; return ((74.43889 * x2 + -41.16937) * x2 + 6.2823086) * x; "
        "}"},
       {"sin",
@@ -31,7 +30,6 @@ const std::array<Helper, 33>& CpuMathHelpers() {
        "float S(sin)(float x) { float t = x * (-0.15915494 - Z) + 0.25; return S(sin5)(0.25 - "
        "abs(t - roundEven(t))); }",
        {},
-       {},
        "@ S(sin)(@ x) { @ t = x * (-0.15915494 - Z) + 0.25; return S(sin5)(0.25 - abs(t - "
        "roundEven(t))); }"},
       {"cos",
@@ -39,7 +37,6 @@ const std::array<Helper, 33>& CpuMathHelpers() {
        {"sin5"},
        "float S(cos)(float x) { float t = x * (0.15915494 - Z); return S(sin5)(0.25 - abs(t - "
        "roundEven(t))); }",
-       {},
        {},
        "@ S(cos)(@ x) { @ t = x * (0.15915494 - Z); return S(sin5)(0.25 - abs(t - "
        "roundEven(t))); }"},
@@ -57,7 +54,6 @@ const std::array<Helper, 33>& CpuMathHelpers() {
        "+ intBitsToFloat(1047915220); p = p * f + intBitsToFloat(1060205179); p = p * f + 1.0; "
        "return intBitsToFloat((i + 127) << 23) * p; }",
        {},
-       {},
        "@ S(exp2)(@ x) { @ x0 = max(min(x, 128.0), -126.99999); $ i = $(roundEven(x0 - 0.5)); @ f "
        "= x0 - @(i); @ p = @(intBitsToFloat(989206789)); p = p * f + intBitsToFloat(1007896582); "
        "p = p * f + intBitsToFloat(1030007331); p = p * f + intBitsToFloat(1047915220); p = p * f "
@@ -72,7 +68,6 @@ const std::array<Helper, 33>& CpuMathHelpers() {
        "0.19782813; float q = ((0.016618466 * m + 0.20350508) * m + 0.273829) * m + 0.04049669; "
        "e += (m - 1.0) * (p / q); return mix(e, x, b == 2139095040); }",
        {},
-       {},
        "@ S(log2)(@ x) { $ b = floatBitsToInt(x); @ e = uintBitsToFloat(%(b & 2139095040) >> 8u | "
        "1065353216u); e = (e - 1.4960938) * 256.0; @ m = intBitsToFloat(b & 8388607 | "
        "1065353216); @ p = (0.095428176 * m + 0.47779095) * m + 0.19782813; @ q = ((0.016618466 * "
@@ -83,20 +78,17 @@ const std::array<Helper, 33>& CpuMathHelpers() {
        {"exp2"},
        "float S(exp)(float x) { return S(exp2)((1.442695 - Z) * x); }",
        {},
-       {},
        "@ S(exp)(@ x) { return S(exp2)((1.442695 - Z) * x); }"},
       {"log",
        Shape::kUnary,
        {"log2"},
        "float S(log)(float x) { return (0.6931472 - Z) * S(log2)(x); }",
        {},
-       {},
        "@ S(log)(@ x) { return (0.6931472 - Z) * S(log2)(x); }"},
       {"pow",
        Shape::kBinary,
        {"exp2", "log2"},
        "float S(pow)(float x, float y) { return S(exp2)(S(log2)(x) * y); }",
-       {},
        {},
        "@ S(pow)(@ x, @ y) { return S(exp2)(S(log2)(x) * y); }"},
       {"sinh",
@@ -189,24 +181,28 @@ const std::array<Helper, 33>& CpuMathHelpers() {
       // is NaN (min(1.0, NaN) is NaN, llvmpipe gives 1.0). The comparison is xored
       // with an opaque false: Mesa turns `a < b ? a : b` back into its own fmin. A
       // select by mix, not `?:`, which Mesa compiles as a branch first (a tenth of the
-      // AO template's compile); vectors compare all components at once (Componentwise).
+      // AO template's compile); vectors compare all components at once.
       {"min",
        Shape::kMinMax,
        {},
        "float S(min)(float a, float b) { return mix(b, a, (a < b) != (Z < 0.0)); }",
        {},
-       "lessThan"},
+       "@ S(min)(@ a0, @ a1) { return mix(a1, a0, notEqual(lessThan(a0, a1), b@(Z < 0.0))); } @ "
+       "S(min)(@ a0, float a1) { @ b = @(a1); return mix(b, a0, notEqual(lessThan(a0, b), b@(Z < "
+       "0.0))); }"},
       {"max",
        Shape::kMinMax,
        {},
        "float S(max)(float a, float b) { return mix(b, a, (a > b) != (Z < 0.0)); }",
        {},
-       "greaterThan"},
+       "@ S(max)(@ a0, @ a1) { return mix(a1, a0, notEqual(greaterThan(a0, a1), b@(Z < 0.0))); } @ "
+       "S(max)(@ a0, float a1) { @ b = @(a1); return mix(b, a0, notEqual(greaterThan(a0, b), b@(Z "
+       "< "
+       "0.0))); }"},
       {"mix",
        Shape::kMix,
        {},
        "float S(mix)(float x, float y, float a) { return a * (y - x) + x; }",
-       {},
        {},
        "@ S(mix)(@ x, @ y, @ a) { return a * (y - x) + x; } @ S(mix)(@ x, @ y, float a) { return "
        "a * (y - x) + x; }"},
