@@ -18,7 +18,6 @@
 // A name spelled in a macro body is renamed only when every use of it may be.
 #include <map>
 #include <optional>
-#include <ranges>
 #include <set>
 #include <utility>
 
@@ -147,8 +146,10 @@ class MathRewriter {
     const std::string zero(kOpaqueZeroUniform);
     // Innermost first: a division inside another's divisor ends where that divisor ends,
     // and its closing text must come first there.
-    for (const auto& entry : std::views::reverse(divisions_)) {
-      const DivisionSite& site = entry.second;
+    // (Not std::views::reverse: clang 14 cannot build it with libstdc++ 12.)
+    for (auto entry = divisions_.rbegin(); entry != divisions_.rend();  // NOLINT
+         ++entry) {
+      const DivisionSite& site = entry->second;
       if (!site.rewritable) continue;
       const Division& division = site.division;
       const SourceRange& divisor = division.divisor;
