@@ -148,20 +148,21 @@ const std::array<Helper, 33>& CpuMathHelpers() {
        "float S(atan01)(float x) { float x2 = x * x; return x + x * (x2 * (-0.33333147 + x2 * "
        "(0.19993551 + x2 * (-0.142089 + x2 * (0.10656264 + x2 * (-0.07528964 + x2 * "
        "(0.042909615 + x2 * (-0.016165737 + x2 * 0.0028662258)))))))); }"},
-      // atan(y_over_x) and atan(y, x): the same name, told apart by arity.
+      // atan(y_over_x) and atan(y, x): the same name, told apart by arity. Selects by
+      // mix (every operand is computed anyway; `?:` costs Mesa a branch each).
       {"atan",
        Shape::kUnary,
        {"atan01"},
        "float S(atan)(float x) { float a = abs(x); bool o = !(a < 1.0); float t = "
-       "S(atan01)(o ? 1.0 / a : a); float r = o ? 1.5707964 - t : t; return "
+       "S(atan01)(mix(a, 1.0 / a, o)); float r = mix(t, 1.5707964 - t, o); return "
        "intBitsToFloat(floatBitsToInt(r) ^ (floatBitsToInt(x) & int(0x80000000u))); }"
-       " float S(atan)(float y, float x) { bool s = y < 0.0; float theta = s ? -3.1415927 : "
-       "0.0; float x0 = intBitsToFloat((floatBitsToInt(y) & int(0x80000000u)) ^ "
-       "floatBitsToInt(x)); float y0 = abs(y); bool q = x0 < 0.0; theta += q ? 1.5707964 : 0.0; "
-       "float x1 = q ? y0 : x0; float y1 = q ? -x0 : y0; bool o = !(y1 < x1); float x2 = o ? y1 "
-       ": x1; float y2 = o ? x1 : y1; bool inf_y = isinf(y2); float t = S(atan01)(y2 / x2); "
-       "theta += (x2 != 0.0 && !inf_y) ? (o ? 1.5707964 - t : t) : (inf_y ? 0.7853982 : 0.0); "
-       "return (s && q && o && !inf_y) ? -t : theta; }"},
+       " float S(atan)(float y, float x) { bool s = y < 0.0; float theta = mix(0.0, -3.1415927, "
+       "s); float x0 = intBitsToFloat((floatBitsToInt(y) & int(0x80000000u)) ^ "
+       "floatBitsToInt(x)); float y0 = abs(y); bool q = x0 < 0.0; theta += mix(0.0, 1.5707964, "
+       "q); float x1 = mix(x0, y0, q); float y1 = mix(y0, -x0, q); bool o = !(y1 < x1); float x2 "
+       "= mix(x1, y1, o); float y2 = mix(y1, x1, o); bool inf_y = isinf(y2); float t = "
+       "S(atan01)(y2 / x2); theta += mix(mix(0.0, 0.7853982, inf_y), mix(t, 1.5707964 - t, o), "
+       "x2 != 0.0 && !inf_y); return mix(theta, -t, s && q && o && !inf_y); }"},
       // SwiftShader's dFdx is coarse, the top row's difference for the whole 2x2 quad
       // (v1 - v0 in every lane); llvmpipe's is per row. In the odd row, v - dFdy(v) is
       // the even row's value, exactly when the difference is. Its dFdy is already
