@@ -195,6 +195,24 @@ TEST(CpuBrowserMath, OtherDivisorsAreHiddenFromTheDriversFolding) {
             "< 0.0)); }\n");
 }
 
+TEST(CpuBrowserMath, NestedDivisionsCloseInnermostFirst) {
+  // The inner division ends where the outer divisor ends: its closing text goes first.
+  const auto result = Apply(
+      "float g; void Init() { g = 0.0; }\n"
+      "void main() { Init(); float x = gl_FragCoord.x; x /= gl_FragCoord.y / 2.0;\n"
+      "x /= gl_FragCoord.y / g; o = vec4(x); }\n",
+      MathOnly());
+  const std::string body = Body(result);
+  EXPECT_TRUE(Contains(body,
+                       "x /= mix((gl_FragCoord.y * (1.0 / (2.0))), float(1.0), shaderport_zero < "
+                       "0.0);"))
+      << body;
+  EXPECT_TRUE(Contains(body,
+                       "x /= mix((gl_FragCoord.y / mix((g), float(1.0), shaderport_zero < 0.0)), "
+                       "float(1.0), shaderport_zero < 0.0);"))
+      << body;
+}
+
 TEST(CpuBrowserMath, UintToFloatConversionsRoundTwice) {
   const auto result = Apply(
       "void main() { uvec3 h = uvec3(gl_FragCoord.xyz) * 1664525u; uint k = 7u;\n"
