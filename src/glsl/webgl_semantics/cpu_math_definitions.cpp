@@ -102,9 +102,9 @@ std::string Componentwise(std::string_view name, int arity, int float_tail) {
   return out;
 }
 
-// Each parameter of each function in `text` starts with `p = zero < 0.0 ? -p : p;`
-// (written as OpaqueSelect, without a branch) and
-// each `return x;` becomes `return (x) - zero;`: in Chromium the helper's arithmetic
+// Each parameter of each function in `text` starts with `p = mix(p, -p, zero < 0.0);`
+// (OpaqueSelect: `-p` where the always-0 uniform is negative, which Mesa cannot rule
+// out) and each `return x;` becomes `return (x) - zero;`: in Chromium the helper's arithmetic
 // runs inside SwiftShader, out of reach of the SPIR-V optimiser, so Mesa must not mix
 // the caller's arithmetic into it either (it turns `(v * 0.61) * 78.233` into
 // `v * 47.72`, `v * a + v * b` into `v * (a + b)`, `(p * x) * k` into `(p * k) * x`).
@@ -223,9 +223,11 @@ void AddFunctions(const Helper& helper, const std::string& text, bool componentw
   }
 }
 
-// The vector overloads: on whole vectors where the helper has them, else componentwise.
-void AddVectorOverloads(const Helper& helper, int arity, int float_tail, bool opaque_parameters,
-                        std::vector<Overload>& out) {
+// The float overload and the vector overloads: on whole vectors where the helper has
+// them, else componentwise (with `float_tail` trailing float parameters too).
+void AddFloatAndVectorOverloads(const Helper& helper, int arity, int float_tail,
+                                bool opaque_parameters, std::vector<Overload>& out) {
+  AddFunctions(helper, WithOpaqueParameters(Spell(helper.text), opaque_parameters), false, out);
   if (!helper.vector_text.empty()) {
     AddFunctions(helper, WithOpaqueParameters(WholeVectorOverloads(helper), opaque_parameters),
                  false, out);
@@ -259,26 +261,22 @@ std::vector<Overload> Overloads(const Helper& helper, bool opaque_parameters) {
       break;
     }
     case Shape::kUnary:
-      AddFunctions(helper, WithOpaqueParameters(Spell(helper.text), opaque_parameters), false, out);
-      AddVectorOverloads(helper, 1, 0, opaque_parameters, out);
+      AddFloatAndVectorOverloads(helper, 1, 0, opaque_parameters, out);
       if (helper.builtin == "atan") {
         AddFunctions(helper, Componentwise(helper.builtin, 2, 0), true, out);
       }
       break;
     case Shape::kBinary:
-      AddFunctions(helper, WithOpaqueParameters(Spell(helper.text), opaque_parameters), false, out);
-      AddVectorOverloads(helper, 2, 0, opaque_parameters, out);
+      AddFloatAndVectorOverloads(helper, 2, 0, opaque_parameters, out);
       break;
     case Shape::kMinMax:
-      AddFunctions(helper, WithOpaqueParameters(Spell(helper.text), opaque_parameters), false, out);
-      AddVectorOverloads(helper, 2, 1, opaque_parameters, out);
+      AddFloatAndVectorOverloads(helper, 2, 1, opaque_parameters, out);
       break;
     case Shape::kMix:
       // Always opaque: without, Mesa still reshaped mix's arithmetic with the caller's
       // (4sXcWj drew 23 of 64 blocks off Chromium's; the selects of the others made no
       // difference there).
-      AddFunctions(helper, WithOpaqueParameters(Spell(helper.text), true), false, out);
-      AddVectorOverloads(helper, 3, 1, true, out);
+      AddFloatAndVectorOverloads(helper, 3, 1, true, out);
       break;
     case Shape::kReduction:
     case Shape::kGeometric: {

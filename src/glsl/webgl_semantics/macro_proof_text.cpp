@@ -5,6 +5,7 @@
 #include <set>
 #include <string>
 
+#include "glsl/lex/lex_chars.h"
 #include "glsl/webgl_semantics/cpu_math_library.h"
 
 namespace shaderport::glsl {
@@ -78,28 +79,22 @@ std::string MacroProofHelperText(std::string_view text, std::string_view swizzle
 }
 
 std::string_view SwizzleLettersFreeOfMacros(std::span<const std::string_view> texts) {
+  // Blanks and line continuations, as the preprocessor reads a directive line.
+  const auto skip_blanks = [](std::string_view text, size_t i) {
+    for (i = SkipContinuations(text, i); i < text.size() && IsHorizontalSpace(text[i]);) {
+      i = SkipContinuations(text, i + 1);
+    }
+    return i;
+  };
   std::set<char> defined;
   for (const std::string_view text : texts) {
     for (size_t at = text.find('#'); at != std::string_view::npos; at = text.find('#', at + 1)) {
-      auto skip_blanks = [&](size_t i) {
-        while (i < text.size()) {
-          if (text[i] == ' ' || text[i] == '\t') {
-            ++i;
-          } else if (text.compare(i, 2, "\\\n") == 0) {
-            i += 2;
-          } else {
-            break;
-          }
-        }
-        return i;
-      };
-      size_t i = skip_blanks(at + 1);
+      size_t i = skip_blanks(text, at + 1);
       if (text.compare(i, 6, "define") != 0) continue;
-      i = skip_blanks(i + 6);
-      const bool one_letter =
-          i + 1 < text.size() && std::isalpha(static_cast<unsigned char>(text[i])) &&
-          !std::isalnum(static_cast<unsigned char>(text[i + 1])) && text[i + 1] != '_';
-      if (one_letter) defined.insert(text[i]);
+      i = skip_blanks(text, i + 6);
+      if (i >= text.size() || !IsIdentifierStart(text[i]) || text[i] == '_') continue;
+      const size_t next = SkipContinuations(text, i + 1);
+      if (next >= text.size() || !IsIdentifierChar(text[next])) defined.insert(text[i]);
     }
   }
   for (const std::string_view letters : {"xyzw", "rgba", "stpq"}) {

@@ -79,6 +79,11 @@ TEST(CpuBrowserMath, HelperSwizzlesAvoidLettersTheShaderDefines) {
   // `.x` would expand a user's `x`; `.r` is the same component.
   const std::string x = Body(Apply("#define x 1.0\n" + call, MathOnly()));
   EXPECT_TRUE(Contains(x, "shaderport_x.r * shaderport_x.r")) << x;
+  // A directive line continued with a backslash and CRLF, and a define at the very end.
+  const std::string continued = Body(Apply("#  define \\\r\nx 1.0\n" + call, MathOnly()));
+  EXPECT_TRUE(Contains(continued, "shaderport_x.r * shaderport_x.r")) << continued;
+  const std::string at_end = Body(Apply(call + "#define x", MathOnly()));
+  EXPECT_TRUE(Contains(at_end, "shaderport_x.r * shaderport_x.r")) << at_end;
   const std::string all =
       Body(Apply("#define x 1.0\n#  define g(a) a\n#define q 2\n" + call, MathOnly()));
   EXPECT_TRUE(Contains(all, "shaderport_x[0] * shaderport_x[0]")) << all;
