@@ -91,8 +91,11 @@ BrowserSemanticsResult ApplyBrowserSemantics(std::span<const SourceFile* const> 
   const SemanticModel model = Analyze(parsed.tree, analyze);
 
   EditCollector edits(preprocessed);
+  // Only the math helpers spell swizzles; other uses need not scan for defines.
   std::vector<std::string_view> texts;
-  for (const SourceFile* part : parts) texts.push_back(part->Text());
+  if (options.cpu_browser_math) {
+    for (const SourceFile* part : parts) texts.push_back(part->Text());
+  }
   SemanticsContext context{parsed.tree, model,  options, ParentsOf(parsed.tree),
                            edits,       result, nullptr, SwizzleLettersFreeOfMacros(texts)};
   std::optional<DriverFolding> folding;
