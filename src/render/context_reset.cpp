@@ -65,6 +65,7 @@ bool ResetContext(const GlFunctions& gl) {
   DeleteObjects(gl);
   gl.Disable(GL_DEPTH_TEST);
   gl.DepthFunc(GL_LESS);
+  gl.Disable(GL_BLEND);
   gl.ClearColor(0, 0, 0, 0);
   gl.PixelStorei(GL_PACK_ALIGNMENT, 4);
   gl.PixelStorei(GL_UNPACK_ALIGNMENT, 4);

@@ -70,7 +70,9 @@ ChannelOverrides OverridesFor(const PassChannels& channels,
 }
 
 // A second colour attachment for the render probe, when the program writes one at
-// location 1 (see RenderRequest::probe_output).
+// location 1 (see RenderRequest::probe_output). Two channels are all that is read
+// (.z only keeps conditions exact in Mesa's compiler); llvmpipe's code for storing
+// each channel is compiled with every shader.
 GLuint AttachProbe(const GlFunctions& gl, GLuint program, const RenderRequest& request,
                    GLsizei width, GLsizei height) {
   if (request.probe_output.empty() ||
@@ -80,7 +82,7 @@ GLuint AttachProbe(const GlFunctions& gl, GLuint program, const RenderRequest& r
   GLuint texture = 0;
   gl.GenTextures(1, &texture);
   gl.BindTexture(GL_TEXTURE_2D, texture);
-  gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, height, 0, GL_RGBA, GL_FLOAT, nullptr);
+  gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, width, height, 0, GL_RG, GL_FLOAT, nullptr);
   gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, texture, 0);
   gl.BindTexture(GL_TEXTURE_2D, 0);
   const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
@@ -168,6 +170,12 @@ RenderOutcome DrawRequest(const GlFunctions& gl, const RenderRequest& request) {
   if (user_vertex) mesh = UploadMeshForProgram(gl, program, MakeSphereMesh(32, 16));
   CollectGlErrors(gl, "setting up the vertex inputs", outcome);
   gl.Viewport(0, 0, width, height);
+  // Blending with GL's default factors (ONE, ZERO) writes the shader's bits unchanged
+  // (-0, denormals, NaN payloads and infinities pass through; tested), and llvmpipe
+  // then compiles one fragment function for a pass with a single colour target instead
+  // of two (it adds a copy for whole blocks when a target is "opaque"). Passes with
+  // the probe's second target compile once either way.
+  gl.Enable(GL_BLEND);
   std::vector<ProgramTextures> buffer_textures(buffer_programs.size());
   ProgramTextures textures;
   const int frames = std::max(request.frames, 1);

@@ -2,6 +2,10 @@
 // kind or a user PNG, and a generated mesh with matrices for vertex shaders.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cstdint>
+#include <cstring>
+
 #include "render/isolated_render.h"
 #include "render/png_io.h"
 #include "render/render_checks.h"
@@ -37,6 +41,21 @@ TEST(RenderInputs, ShaderToyUniformsAreDeterministicValues) {
   EXPECT_NEAR(p[1], 0.6f, 1e-6f);
   EXPECT_NEAR(p[2], 0.25f, 1e-6f);
   EXPECT_FLOAT_EQ(p[3], 1.0f);  // Image passes force alpha to 1
+}
+
+// The draw blends with GL's default factors (ONE, ZERO) so that llvmpipe compiles one
+// fragment function instead of two; the colour written must still be the shader's own
+// bits: negative zero, a denormal, a NaN with a payload, an infinity.
+TEST(RenderInputs, FloatOutputBitsPassThroughTheBlend) {
+  const std::string text =
+      "#version 300 es\nprecision highp float;\nout vec4 o;\n"
+      "void main() {\n  o = vec4(uintBitsToFloat(0x80000000u), uintBitsToFloat(1u),\n"
+      "           uintBitsToFloat(0x7fc00123u), uintBitsToFloat(0xff800000u));\n}\n";
+  const RenderOutcome outcome = RenderIsolated(FragmentRequest(text, 8), FastOptions());
+  ASSERT_EQ(outcome.status, RenderStatus::kOk) << outcome.fragment_log;
+  std::array<uint32_t, 4> bits{};
+  std::memcpy(bits.data(), At(outcome, 3, 5), sizeof(bits));
+  EXPECT_EQ(bits, (std::array<uint32_t, 4>{0x80000000u, 1u, 0x7fc00123u, 0xff800000u}));
 }
 
 TEST(RenderInputs, ProceduralChannelsOfEveryKindAreVaried) {
