@@ -90,6 +90,13 @@ GLuint AttachProbe(const GlFunctions& gl, GLuint program, const RenderRequest& r
   return texture;
 }
 
+void CountLoopIterations(float count, RenderOutcome& outcome) {
+  if (!(count > 0.0f)) return;  // not written (the clear sentinel is negative) or NaN
+  const auto iterations = static_cast<int64_t>(std::min(count, 1e12f));
+  outcome.max_loop_iterations = std::max(outcome.max_loop_iterations, iterations);
+  if (static_cast<uint64_t>(iterations) >= kLlvmpipeLoopCap) ++outcome.loop_capped_pixels;
+}
+
 void ReadProbe(const GlFunctions& gl, GLsizei width, GLsizei height, RenderOutcome& outcome) {
   std::vector<float> probe(static_cast<size_t>(width) * static_cast<size_t>(height) * 4);
   gl.ReadBuffer(GL_COLOR_ATTACHMENT1);
@@ -101,11 +108,24 @@ void ReadProbe(const GlFunctions& gl, GLsizei width, GLsizei height, RenderOutco
     // .y: 1 where the colour output was assigned; the clear sentinel where the
     // fragment was discarded (not this check's business).
     if (probe[i + 1] == 0.0f) ++outcome.unassigned_output_pixels;
-    const float count = probe[i];
-    if (!(count > 0.0f)) continue;  // not written (the clear sentinel is negative) or NaN
-    const auto iterations = static_cast<int64_t>(std::min(count, 1e12f));
-    outcome.max_loop_iterations = std::max(outcome.max_loop_iterations, iterations);
-    if (static_cast<uint64_t>(iterations) >= kLlvmpipeLoopCap) ++outcome.loop_capped_pixels;
+    CountLoopIterations(probe[i], outcome);
+  }
+}
+
+// The probe in the colour's alpha (RenderRequest::probe_in_alpha): the count where
+// the output was assigned, -1 - the count where it was not; alpha becomes 1 again.
+// A discarded fragment left the clear sentinel, alpha included.
+void ReadAlphaProbe(RenderOutcome& outcome) {
+  outcome.max_loop_iterations = 0;
+  outcome.unassigned_output_pixels = 0;
+  for (size_t i = 0; i + 3 < outcome.pixels.size(); i += 4) {
+    float* pixel = &outcome.pixels[i];
+    if (std::equal(kSentinel.begin(), kSentinel.end(), pixel)) continue;
+    const float alpha = pixel[3];
+    pixel[3] = 1.0f;
+    const bool assigned = alpha >= 0.0f;
+    if (!assigned) ++outcome.unassigned_output_pixels;
+    CountLoopIterations(assigned ? alpha : -1.0f - alpha, outcome);
   }
 }
 
@@ -220,6 +240,7 @@ RenderOutcome DrawRequest(const GlFunctions& gl, const RenderRequest& request) {
   gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
   gl.ReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, outcome.pixels.data());
   if (probe != 0) ReadProbe(gl, width, height, outcome);
+  if (request.probe_in_alpha) ReadAlphaProbe(outcome);
   CollectGlErrors(gl, "glReadPixels", outcome);
   outcome.status = RenderStatus::kOk;
   return outcome;  // the caller deletes what was made (ReusableContext)

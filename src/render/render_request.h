@@ -97,6 +97,10 @@ struct RenderRequest {
   // and whose .y is 1 where the colour output was assigned (added by the driver's
   // render text); empty or absent in the program: not read.
   std::string probe_output;
+  // Instead, the colour output's alpha carries the probe: the count where the output
+  // was assigned, -1 - the count where it was not. Read back, alpha is 1 again (the
+  // ShaderToy Image pass's own alpha, which the probe replaced).
+  bool probe_in_alpha = false;
 };
 
 struct RenderOptions {

@@ -125,6 +125,7 @@ std::string EncodeRequest(const RenderRequest& request) {
   PutInts(out, request.channel_buffers);
   PutPassChannels(out, request.channels);
   PutString(out, request.probe_output);
+  Put(out, static_cast<uint8_t>(request.probe_in_alpha));
   return out;
 }
 
@@ -158,7 +159,8 @@ std::optional<RenderRequest> DecodeRequest(const std::string& bytes) {
     pass.buffer = buffer;
   }
   if (!GetInts(in, request.channel_buffers) || !GetPassChannels(in, request.channels) ||
-      !in.GetString(request.probe_output) || in.at != bytes.size()) {
+      !in.GetString(request.probe_output) || !in.GetBool(request.probe_in_alpha) ||
+      in.at != bytes.size()) {
     return std::nullopt;
   }
   return request;

@@ -21,6 +21,7 @@ struct BrowserRenderTextOptions {
   // For text that goes through the SPIR-V optimiser (BrowserSemanticsOptions).
   bool opaque_helper_arguments = false;
   bool add_render_probe = false;  // loop counts and output writes (main fragment pass)
+  bool probe_in_alpha = false;    // ... in the output's alpha (main() sets alpha itself)
   bool vertex_stage = false;
 };
 
@@ -31,5 +32,14 @@ std::string BrowserRenderText(std::string_view text, const BrowserRenderTextOpti
 // The same, with the map from the edited text back to `text` (for the SPIR-V leg,
 // whose diagnostics must still reach the user's columns).
 EditResult BrowserRenderTextWithMap(std::string_view text, const BrowserRenderTextOptions& options);
+
+// The same, saying whether the probe went into the output's alpha (probe_in_alpha is
+// a request; a main() whose end cannot be edited keeps the second output).
+struct ProbedRenderText {
+  std::string text;
+  bool probe_in_alpha = false;
+};
+ProbedRenderText BrowserRenderTextWithProbe(std::string_view text,
+                                            const BrowserRenderTextOptions& options);
 
 }  // namespace shaderport::driver

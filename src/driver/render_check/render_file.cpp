@@ -86,9 +86,14 @@ void RenderPrepared(const PreparedShader& shader, const RenderFileOptions& optio
                               : BrowserRenderText(shader.vertex_text, semantics);
   semantics.vertex_stage = false;
   semantics.add_render_probe = true;
+  // Not through the SPIR-V optimiser: it drops the probe variable's stores of branch
+  // conditions as dead (an output's stores it keeps), and with them their exactness.
+  semantics.probe_in_alpha = shader.main_sets_alpha && !options.browser_optimiser;
   request.fullscreen_vertex = shader.fullscreen_vertex;
-  request.fragment_source = BrowserRenderText(shader.fragment_text, semantics);
+  ProbedRenderText fragment = BrowserRenderTextWithProbe(shader.fragment_text, semantics);
+  request.fragment_source = std::move(fragment.text);
   request.probe_output = std::string(glsl::kRenderProbeOutput);
+  request.probe_in_alpha = fragment.probe_in_alpha;
   for (size_t i = 0; i < 4; ++i) {
     request.inputs.channels[i].kind = KindOf(options.channel_types[i]);
     if (options.channel_images[i].empty()) continue;
@@ -160,6 +165,7 @@ void RenderSource(const SourceFile& file, const DetectedKind& kind,
     composed->Append(file.Text(), &file);
     composed->Append(validate::ShaderToyEpilogue(*pass), nullptr);
     shader.fragment_text = composed->Text();
+    shader.main_sets_alpha = *pass == validate::PassType::kImage;
     shader.map_line = [composed](render::ShaderStage, uint32_t line) {
       return composed->MapLine(line);
     };

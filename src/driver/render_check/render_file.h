@@ -65,6 +65,9 @@ struct PreparedShader {
   std::function<std::optional<SourceRange>(int pass, uint32_t)> map_buffer_line;
   SourceRange anchor;                // where picture-level findings point
   const SourceFile* user = nullptr;  // scanned for loops over llvmpipe's cap
+  // main() sets the output's alpha itself (a ShaderToy Image pass forces 1): the
+  // render probe can travel in it, and the draw needs one colour target.
+  bool main_sets_alpha = false;
 };
 void RenderPrepared(const PreparedShader& shader, const RenderFileOptions& options,
                     RenderFileResult& result);

@@ -164,6 +164,7 @@ RenderFileResult RenderShaderToyJson(std::string_view name, std::string_view jso
   auto [composed, code] = compose(*image, validate::PassType::kImage, image_inputs);
   PreparedShader prepared;
   prepared.fragment_text = composed->Text();
+  prepared.main_sets_alpha = true;  // the Image pass
   prepared.anchor = SourceRange{code->Id(), 0, 0};
   prepared.user = code;
   // An init-capture: clang before 16 cannot capture a structured binding by name.

@@ -41,6 +41,13 @@ std::optional<SourceRange> EditCollector::AfterOpeningBrace(const CompoundStatem
   return SourceRange{brace.spelling.file, brace.spelling.end, brace.spelling.end};
 }
 
+std::optional<SourceRange> EditCollector::BeforeClosingBrace(const CompoundStatement& body) const {
+  if (!body.HasTokens()) return std::nullopt;
+  const PpToken& brace = pp_.tokens[body.last_token];
+  if (brace.macro_use != kNoMacroUse || brace.text != "}") return std::nullopt;
+  return SourceRange{brace.spelling.file, brace.spelling.begin, brace.spelling.begin};
+}
+
 const FunctionDeclaration* FindMainDefinition(const SyntaxTree& tree) {
   for (const Node* node : tree.Root()->declarations) {
     const auto* function = node->As<FunctionDeclaration>();

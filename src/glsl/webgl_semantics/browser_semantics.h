@@ -19,9 +19,9 @@
 //    (source_order_arithmetic.cpp);
 //  - lines inside skipped #if groups are emptied (Mesa rejects a misspelled
 //    directive there; browsers skip it);
-// plus, on request, a probe written to a second fragment output, so that a render
-// can tell when llvmpipe's silent loop cap was reached and which pixels never
-// assigned the colour output.
+// plus, on request, a probe written to a second fragment output (or to the colour
+// output's alpha), so that a render can tell when llvmpipe's silent loop cap was
+// reached and which pixels never assigned the colour output.
 // See docs/browser-divergence.md ("Rendering") for each transform.
 #pragma once
 
@@ -38,6 +38,8 @@ namespace shaderport::glsl {
 // The fragment output (location 1) of the render probe: .x = loop body executions
 // of the pixel's invocation (what llvmpipe caps at 65535), .y = 1 where the colour
 // output was assigned; .z is a sink for branch conditions (source_order_arithmetic).
+// With probe_in_alpha it is a variable, and the end of main() writes the colour
+// output's alpha as .x where .y is 1 and -1 - .x where it is 0 (DecodeProbeAlpha).
 inline constexpr std::string_view kRenderProbeOutput = "shaderport_probe";
 
 struct BrowserSemanticsOptions {
@@ -62,6 +64,10 @@ struct BrowserSemanticsOptions {
   // ignore them, Mesa rejects a bad directive there.
   bool empty_inactive_lines = true;
   bool add_render_probe = false;  // fragment shaders only
+  // The probe travels in the colour output's alpha instead of a second output, for a
+  // main() that writes alpha itself (a ShaderToy Image pass forces it to 1): the render
+  // then has one colour target, which llvmpipe compiles once instead of twice.
+  bool probe_in_alpha = false;
   bool vertex_stage = false;
 };
 
@@ -70,6 +76,7 @@ struct BrowserSemanticsResult {
   std::vector<SourceMap> maps;        // per part: edited text -> the part as given
   bool applied = false;               // false: the text did not parse cleanly, left unchanged
   bool render_probe = false;          // the probe output was added
+  bool probe_in_alpha = false;        // ... as a variable written to the output's alpha
   bool tracks_output_writes = false;  // ... and its .y marks colour-output writes
   uint32_t initialized = 0;           // variables given a zero initial value
   uint32_t default_returns = 0;       // `return <zero>;` added at the end of functions

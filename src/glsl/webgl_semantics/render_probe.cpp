@@ -10,6 +10,12 @@
 //     (source_order_arithmetic.cpp); the render does not read it.
 // GLSL ES 3.00 needs explicit locations with several outputs, so the probe is only
 // added when the shader has exactly one output without a layout, which gets location 0.
+// With probe_in_alpha (a main() that sets alpha itself) the probe is a global
+// variable instead, and the end of main() writes it to the output's alpha (.x where
+// .y is 1, -1 - .x where it is 0): one colour target, so llvmpipe compiles the shader
+// once rather than twice (gl_renderer.cpp). Mesa still keeps the conditions exact: a
+// variable read into an invariant output becomes invariant, and so do the values
+// assigned to it.
 // Where a write cannot be marked (inside a macro), writes are not tracked (.y = 1).
 // Components are written by index ([0], [1]): the user's code may `#define x`.
 #include "glsl/sema/language.h"
@@ -90,6 +96,12 @@ Target FindTarget(const SemanticsContext& c, const VariableDeclaration& output) 
   return {c.model.SymbolAt(output.declarators[0]->id), c.tree.Root()};
 }
 
+// `out vec4 name;`: the only output the probe can share.
+bool IsPlainVec4(const VariableDeclaration& output) {
+  return output.type->name.text == "vec4" && output.type->array.empty() &&
+         output.declarators[0]->array.empty();
+}
+
 struct PendingEdit {
   SourceRange at;
   std::string text;
@@ -106,6 +118,7 @@ void AddRenderProbe(SemanticsContext& c, MainPrologue& prologue) {
   const auto output_span = c.edits.Span(*output);
   const auto declare_at = first_function ? c.edits.Span(*first_function) : std::nullopt;
   if (main == nullptr || !output_span || !declare_at) return;
+  const SourceRange declare = *declare_at;
   const std::string probe(kRenderProbeOutput);
 
   // Loops: count every body execution. Nothing is added when a loop cannot be counted.
@@ -183,14 +196,29 @@ void AddRenderProbe(SemanticsContext& c, MainPrologue& prologue) {
   for (auto* list : {&loop_begins, &write_begins, &write_ends, &loop_ends}) {
     for (PendingEdit& edit : *list) c.edits.Insert(edit.at.file, edit.at.begin, edit.text);
   }
-  c.edits.Insert(output_span->file, output_span->begin, "layout(location = 0) ");
   const bool exact = c.options.source_order_arithmetic;
   if (exact) ExposeBranchConditions(c, probe);
-  c.edits.Insert(declare_at->file, declare_at->begin,
-                 std::string(exact ? "invariant " : "") + "layout(location = 1) out highp vec4 " +
-                     probe + "; int " + std::string(kCounter) + " = 0; ");
-  prologue.statements.push_back(probe + " = vec4(0.0, " + (writes_complete ? "0.0" : "1.0") +
-                                ", 0.0, 0.0);");
+  const std::string initial =
+      "vec4(0.0, " + std::string(writes_complete ? "0.0" : "1.0") + ", 0.0, 0.0)";
+  const std::string counter = " int " + std::string(kCounter) + " = 0; ";
+  const auto main_end = c.options.probe_in_alpha && IsPlainVec4(*output)
+                            ? c.edits.BeforeClosingBrace(*main->body)
+                            : std::nullopt;
+  if (main_end) {
+    const std::string alpha = output->declarators[0]->name.text + "[3]";
+    c.edits.Insert(declare.file, declare.begin,
+                   "highp vec4 " + probe + " = " + initial + ";" + counter);
+    c.edits.Insert(
+        main_end->file, main_end->begin,
+        alpha + " = " + probe + "[1] != 0.0 ? " + probe + "[0] : -1.0 - " + probe + "[0]; ");
+    c.result.probe_in_alpha = true;
+  } else {
+    c.edits.Insert(output_span->file, output_span->begin, "layout(location = 0) ");
+    c.edits.Insert(declare.file, declare.begin,
+                   std::string(exact ? "invariant " : "") + "layout(location = 1) out highp vec4 " +
+                       probe + ";" + counter);
+    prologue.statements.push_back(probe + " = " + initial + ";");
+  }
   c.result.counted_loops = loops;
   c.result.tracks_output_writes = writes_complete;
   c.result.render_probe = true;

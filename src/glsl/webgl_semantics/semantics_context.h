@@ -28,6 +28,8 @@ class EditCollector {
   std::optional<SourceRange> Span(const Node& node) const;
   // Offset just after the `{` that opens a compound statement.
   std::optional<SourceRange> AfterOpeningBrace(const CompoundStatement& body) const;
+  // Offset of the `}` that closes it.
+  std::optional<SourceRange> BeforeClosingBrace(const CompoundStatement& body) const;
 
   void Insert(FileId file, uint32_t at, std::string text) {
     edits_[file].push_back({at, at, std::move(text)});

@@ -9,7 +9,8 @@
 // regrouped sums: every branch and loop condition is also assigned to the render
 // probe's spare channel (`(probe[2] = float(c)) != 0.0`, the same truth value; an
 // index, not `.z`, since the user's code may `#define z`), which
-// is declared invariant too.
+// is an invariant output too, or a variable Mesa makes invariant because it is read
+// into the colour output's alpha (render_probe.cpp).
 #include "glsl/sema/language.h"
 #include "glsl/syntax/visit.h"
 #include "glsl/webgl_semantics/semantics_context.h"

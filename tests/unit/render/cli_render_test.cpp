@@ -108,6 +108,27 @@ TEST_F(CliRender, ShaderToyJsonChannelsWithoutInputAreUnbound) {
   EXPECT_EQ(fed.pixels[2], 255);  // iChannelResolution[1].x is the stand-in's size
 }
 
+// An Image pass carries the render probe in its alpha (one colour target for llvmpipe):
+// pixels that never assign fragColor are still counted, and the picture's alpha is
+// the 1 that the site forces, not the probe.
+TEST_F(CliRender, ProbeInTheAlphaCountsUnassignedPixelsAndLeavesAlphaOne) {
+  const std::string shader = ::testing::TempDir() + "/render-unassigned.glsl";
+  const std::string png = ::testing::TempDir() + "/render-unassigned.png";
+  std::ofstream(shader) << "void mainImage(out vec4 c, in vec2 p) {\n"
+                           "  float s = 0.0;\n"
+                           "  for (int i = 0; i < 3; i++) s += 0.25;\n"
+                           "  if (p.x > 2.0) c = vec4(s, 0.5, 0.25, 0.5);\n}\n";
+  const CliRun run = RunCli("render --hermetic --size 8x8 -o " + png + " " + shader);
+  EXPECT_EQ(run.exit_code, 0) << run.output;
+  EXPECT_NE(run.output.find("16 of 64 pixels never assign the colour output"), std::string::npos)
+      << run.output;
+  ImageRgba8 image;
+  std::string error;
+  ASSERT_TRUE(ReadPng(png, image, error)) << error;
+  ASSERT_EQ(image.pixels.size(), 8u * 8u * 4u);
+  for (size_t i = 3; i < image.pixels.size(); i += 4) ASSERT_EQ(image.pixels[i], 255) << i;
+}
+
 // A warning (the measured loop cap) fails the run only with --fail-on warning.
 TEST_F(CliRender, FailOnWarningTurnsWarningsIntoAFailingExit) {
   const std::string shader =

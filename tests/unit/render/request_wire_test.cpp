@@ -27,6 +27,7 @@ RenderRequest EveryFieldSet() {
   request.buffer_passes.push_back({0, "", {-1, -1, -1, 1}});
   request.channel_buffers = {3, -1, 0, 1};
   request.probe_output = "shaderport_probe";
+  request.probe_in_alpha = true;
   return request;
 }
 
@@ -60,6 +61,7 @@ TEST(RequestWire, EveryFieldRoundTrips) {
   }
   EXPECT_EQ(got->channel_buffers, sent.channel_buffers);
   EXPECT_EQ(got->probe_output, sent.probe_output);
+  EXPECT_EQ(got->probe_in_alpha, sent.probe_in_alpha);
 }
 
 TEST(RequestWire, TruncatedOrExtendedMessagesAreRefused) {

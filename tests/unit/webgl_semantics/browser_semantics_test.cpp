@@ -107,6 +107,43 @@ TEST(BrowserSemantics, RenderProbeCountsLoopsAndMarksOutputWrites) {
             "if (s < 0.0) { o = vec4(s); shaderport_probe[1] = 1.0; } }\n");
 }
 
+// For a main() that sets alpha itself, the probe is a variable that the end of main()
+// writes to the output's alpha, so the render needs one colour target.
+TEST(BrowserSemantics, RenderProbeCanTravelInTheOutputsAlpha) {
+  BrowserSemanticsOptions options;
+  options.zero_initialize = false;
+  options.add_render_probe = true;
+  options.probe_in_alpha = true;
+  const auto result = Apply(
+      "void main() { float s = 0.0; for (int i = 0; i < 9; i++) s += 1.0;\n"
+      "if (s < 0.0) o = vec4(s); }\n",
+      options);
+  EXPECT_TRUE(result.render_probe);
+  EXPECT_TRUE(result.probe_in_alpha);
+  EXPECT_EQ(result.texts.front(),
+            "#version 300 es\nprecision highp float;\nprecision highp int;\nout vec4 o;\n"
+            "highp vec4 shaderport_probe = vec4(0.0, 0.0, 0.0, 0.0); int shaderport_loop_count = "
+            "0; void main() { float s = 0.0; for (int i = 0; i < 9; i++) { shaderport_probe[0] = "
+            "float(++shaderport_loop_count); s += 1.0; }\n"
+            "if (s < 0.0) { o = vec4(s); shaderport_probe[1] = 1.0; } o[3] = shaderport_probe[1] "
+            "!= 0.0 ? shaderport_probe[0] : -1.0 - shaderport_probe[0]; }\n");
+}
+
+// A main() whose end comes from a macro cannot take the alpha write: the probe keeps
+// its own output.
+TEST(BrowserSemantics, RenderProbeKeepsItsOutputWhenMainsEndIsAMacro) {
+  BrowserSemanticsOptions options;
+  options.zero_initialize = false;
+  options.add_render_probe = true;
+  options.probe_in_alpha = true;
+  const auto result = Apply("#define END }\nvoid main() { o = vec4(1.0); END\n", options);
+  EXPECT_TRUE(result.render_probe);
+  EXPECT_FALSE(result.probe_in_alpha);
+  EXPECT_NE(result.texts.front().find("layout(location = 1) out highp vec4 shaderport_probe;"),
+            std::string::npos)
+      << result.texts.front();
+}
+
 TEST(BrowserSemantics, RenderProbeMarksWritesOfMainImagesOutParameter) {
   BrowserSemanticsOptions options;
   options.zero_initialize = false;
