@@ -99,11 +99,10 @@ TEST(BrowserSemantics, RenderProbeCountsLoopsAndMarksOutputWrites) {
   EXPECT_EQ(result.texts.front(),
             "#version 300 es\nprecision highp float;\nprecision highp int;\n"
             "layout(location = 0) out vec4 o;\n"
-            "layout(location = 1) out highp vec4 shaderport_probe; int shaderport_loop_count = "
-            "0; void main() { shaderport_probe = vec4(0.0, 0.0, 0.0, 0.0); float s = 0.0; for "
-            "(int i = 0; i < 9; i++) { shaderport_probe[0] = float(++shaderport_loop_count); s += "
-            "1.0; }\n"
-            "while (s > 0.0) { shaderport_probe[0] = float(++shaderport_loop_count); s -= 2.0; } "
+            "layout(location = 1) out highp vec4 shaderport_probe; void main() { "
+            "shaderport_probe = vec4(0.0, 0.0, 0.0, 0.0); float s = 0.0; for (int i = 0; i < 9; "
+            "i++) { shaderport_probe[0] += 1.0; s += 1.0; }\n"
+            "while (s > 0.0) { shaderport_probe[0] += 1.0; s -= 2.0; } "
             "if (s < 0.0) { o = vec4(s); shaderport_probe[1] = 1.0; } }\n");
 }
 
@@ -122,9 +121,8 @@ TEST(BrowserSemantics, RenderProbeCanTravelInTheOutputsAlpha) {
   EXPECT_TRUE(result.probe_in_alpha);
   EXPECT_EQ(result.texts.front(),
             "#version 300 es\nprecision highp float;\nprecision highp int;\nout vec4 o;\n"
-            "highp vec4 shaderport_probe = vec4(0.0, 0.0, 0.0, 0.0); int shaderport_loop_count = "
-            "0; void main() { float s = 0.0; for (int i = 0; i < 9; i++) { shaderport_probe[0] = "
-            "float(++shaderport_loop_count); s += 1.0; }\n"
+            "highp vec4 shaderport_probe = vec4(0.0, 0.0, 0.0, 0.0); void main() { float s = 0.0; "
+            "for (int i = 0; i < 9; i++) { shaderport_probe[0] += 1.0; s += 1.0; }\n"
             "if (s < 0.0) { o = vec4(s); shaderport_probe[1] = 1.0; } o[3] = shaderport_probe[1] "
             "!= 0.0 ? shaderport_probe[0] : -1.0 - shaderport_probe[0]; }\n");
 }
@@ -155,11 +153,9 @@ TEST(BrowserSemantics, RenderProbeMarksWritesOfMainImagesOutParameter) {
       "void main() { vec4 c = vec4(0.0); mainImage(c, gl_FragCoord.xy); o = c; }\n",
       options);
   EXPECT_TRUE(result.tracks_output_writes);
-  EXPECT_NE(
-      result.texts.front().find(
-          "for (int i = 0; i < 2; i++) { shaderport_probe[0] = float(++shaderport_loop_count); "
-          "{ f.x += 1.0; shaderport_probe[1] = 1.0; } }"),
-      std::string::npos)
+  EXPECT_NE(result.texts.front().find("for (int i = 0; i < 2; i++) { shaderport_probe[0] += 1.0; "
+                                      "{ f.x += 1.0; shaderport_probe[1] = 1.0; } }"),
+            std::string::npos)
       << result.texts.front();
   EXPECT_NE(result.texts.front().find("if (p.x > 1.0) { paint(f); shaderport_probe[1] = 1.0; }"),
             std::string::npos);
@@ -325,12 +321,11 @@ TEST(BrowserSemantics, SourceOrderArithmeticMakesOutputsAndConditionsInvariant) 
   EXPECT_EQ(result.texts.front(),
             "#version 300 es\nprecision highp float;\nprecision highp int;\n"
             "invariant layout(location = 0) out vec4 o;\n"
-            "invariant layout(location = 1) out highp vec4 shaderport_probe; int "
-            "shaderport_loop_count = 0; void main() { shaderport_probe = vec4(0.0, 0.0, 0.0, "
-            "0.0); float s = 0.0; for (int i = 0; ((shaderport_probe[2] = float(i < 9 && s < "
-            "4.0)) != 0.0); i++) { shaderport_probe[0] = float(++shaderport_loop_count); s += "
-            "1.5; }\n"
-            "do { shaderport_probe[0] = float(++shaderport_loop_count); s -= 2.0; } while "
+            "invariant layout(location = 1) out highp vec4 shaderport_probe; void main() { "
+            "shaderport_probe = vec4(0.0, 0.0, 0.0, 0.0); float s = 0.0; for (int i = 0; "
+            "((shaderport_probe[2] = float(i < 9 && s < 4.0)) != 0.0); i++) { "
+            "shaderport_probe[0] += 1.0; s += 1.5; }\n"
+            "do { shaderport_probe[0] += 1.0; s -= 2.0; } while "
             "(((shaderport_probe[2] = float(s > 0.0)) != 0.0)); if (((shaderport_probe[2] = "
             "float(s < 0.0)) != 0.0)) { o = vec4(s); shaderport_probe[1] = 1.0; } }\n");
 }
