@@ -50,6 +50,10 @@ RenderFileResult RenderPortResult(const PortResult& result, const RenderFileOpti
     // Inputs an app's vertex shader would write are fed by a generated one.
     shader.vertex_text = FeederVertexShader(result.text);
     shader.fullscreen_vertex = true;
+    // The site shows an Image pass with alpha 1 whatever it writes (the port's main()
+    // forces it too), so the render probe can take the alpha.
+    shader.main_sets_alpha =
+        result.kind.dialect == Dialect::kShaderToy && result.kind.pass == ShaderToyPass::kImage;
   }
   // Mesa's lines are lines of the ported text; its source map leads back to the user's file.
   struct LineMap {
