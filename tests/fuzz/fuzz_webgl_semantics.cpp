@@ -55,7 +55,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   glsl::BrowserSemanticsOptions options;
   options.zero_out_parameters = true;
   options.add_render_probe = true;
-  options.cpu_browser_math = true;  // as render applies them
+  options.probe_in_alpha = size % 2 == 1;  // both places of the probe
+  options.cpu_browser_math = true;         // as render applies them
   options.source_order_arithmetic = true;
   const glsl::BrowserSemanticsResult result = glsl::ApplyBrowserSemantics(parts, options);
   Check(result.texts.size() == 1 && result.maps.size() == 1, "one text and map per part");

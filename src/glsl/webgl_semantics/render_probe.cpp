@@ -10,11 +10,11 @@
 //     (source_order_arithmetic.cpp); the render does not read it.
 // GLSL ES 3.00 needs explicit locations with several outputs, so the probe is only
 // added when the shader has exactly one output without a layout, which gets location 0.
-// With probe_in_alpha (a main() that sets alpha itself) the probe is a global
-// variable instead, and the end of main() writes it to the output's alpha (.x where
-// .y is 1, -1 - .x where it is 0): one colour target, so llvmpipe compiles the shader
-// once rather than twice (gl_renderer.cpp). Mesa still keeps the conditions exact: a
-// variable read into an invariant output becomes invariant, and so do the values
+// With probe_in_alpha (a main() that sets alpha itself and has no `return`) the probe
+// is a global variable instead, and the end of main() writes it to the output's alpha
+// (.x where .y is 1, -1 - .x where it is 0): one colour target, whose store llvmpipe
+// compiles into every shader (gl_renderer.cpp). Mesa still keeps the conditions exact:
+// a variable read into an invariant output becomes invariant, and so do the values
 // assigned to it.
 // Where a write cannot be marked (inside a macro), writes are not tracked (.y = 1).
 // Components are written by index ([0], [1]): the user's code may `#define x`.
@@ -98,6 +98,16 @@ Target FindTarget(const SemanticsContext& c, const VariableDeclaration& output) 
 bool IsPlainVec4(const VariableDeclaration& output) {
   return output.type->name.text == "vec4" && output.type->array.empty() &&
          output.declarators[0]->array.empty();
+}
+
+// A `return` in main() would skip the alpha write at its end.
+bool HasReturn(const Node& body) {
+  bool found = false;
+  VisitPreorder(body, [&](const Node& node, uint32_t) {
+    found = found || node.kind == NodeKind::kReturnStatement;
+    return !found;
+  });
+  return found;
 }
 
 struct PendingEdit {
@@ -200,7 +210,7 @@ void AddRenderProbe(SemanticsContext& c, MainPrologue& prologue) {
   if (exact) ExposeBranchConditions(c, probe);
   const std::string initial =
       "vec4(0.0, " + std::string(writes_complete ? "0.0" : "1.0") + ", 0.0, 0.0)";
-  const auto main_end = c.options.probe_in_alpha && IsPlainVec4(*output)
+  const auto main_end = c.options.probe_in_alpha && IsPlainVec4(*output) && !HasReturn(*main->body)
                             ? c.edits.BeforeClosingBrace(*main->body)
                             : std::nullopt;
   if (main_end) {

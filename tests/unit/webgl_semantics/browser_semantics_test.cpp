@@ -127,19 +127,22 @@ TEST(BrowserSemantics, RenderProbeCanTravelInTheOutputsAlpha) {
             "!= 0.0 ? shaderport_probe[0] : -1.0 - shaderport_probe[0]; }\n");
 }
 
-// A main() whose end comes from a macro cannot take the alpha write: the probe keeps
-// its own output.
-TEST(BrowserSemantics, RenderProbeKeepsItsOutputWhenMainsEndIsAMacro) {
+// A main() whose end comes from a macro, or that may return before its end, cannot take
+// the alpha write: the probe keeps its own output.
+TEST(BrowserSemantics, RenderProbeKeepsItsOutputWhenMainsEndIsNotReached) {
   BrowserSemanticsOptions options;
   options.zero_initialize = false;
   options.add_render_probe = true;
   options.probe_in_alpha = true;
-  const auto result = Apply("#define END }\nvoid main() { o = vec4(1.0); END\n", options);
-  EXPECT_TRUE(result.render_probe);
-  EXPECT_FALSE(result.probe_in_alpha);
-  EXPECT_NE(result.texts.front().find("layout(location = 1) out highp vec4 shaderport_probe;"),
-            std::string::npos)
-      << result.texts.front();
+  for (const char* main : {"#define END }\nvoid main() { o = vec4(1.0); END\n",
+                           "void main() { o = vec4(1.0); if (o.x > 0.5) return; o.y = 0.0; }\n"}) {
+    const auto result = Apply(main, options);
+    EXPECT_TRUE(result.render_probe) << main;
+    EXPECT_FALSE(result.probe_in_alpha) << main;
+    EXPECT_NE(result.texts.front().find("layout(location = 1) out highp vec4 shaderport_probe;"),
+              std::string::npos)
+        << result.texts.front();
+  }
 }
 
 TEST(BrowserSemantics, RenderProbeMarksWritesOfMainImagesOutParameter) {
