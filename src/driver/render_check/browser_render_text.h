@@ -34,7 +34,8 @@ std::string BrowserRenderText(std::string_view text, const BrowserRenderTextOpti
 EditResult BrowserRenderTextWithMap(std::string_view text, const BrowserRenderTextOptions& options);
 
 // The same, saying whether the probe went into the output's alpha (probe_in_alpha is
-// a request; a main() whose end cannot be edited keeps the second output).
+// a request; a main() that may return early, or whose end cannot be edited, keeps the
+// second output).
 struct ProbedRenderText {
   std::string text;
   bool probe_in_alpha = false;

@@ -39,7 +39,8 @@ namespace shaderport::glsl {
 // of the pixel's invocation (what llvmpipe caps at 65535), .y = 1 where the colour
 // output was assigned; .z is a sink for branch conditions (source_order_arithmetic).
 // With probe_in_alpha it is a variable, and the end of main() writes the colour
-// output's alpha as .x where .y is 1 and -1 - .x where it is 0 (DecodeProbeAlpha).
+// output's alpha as .x where .y is 1 and -1 - .x where it is 0 (decoded by
+// ReadAlphaProbe, src/render/gl_renderer.cpp).
 inline constexpr std::string_view kRenderProbeOutput = "shaderport_probe";
 
 struct BrowserSemanticsOptions {
@@ -66,7 +67,7 @@ struct BrowserSemanticsOptions {
   bool add_render_probe = false;  // fragment shaders only
   // The probe travels in the colour output's alpha instead of a second output, for a
   // main() that writes alpha itself (a ShaderToy Image pass forces it to 1): the render
-  // then has one colour target, which llvmpipe compiles once instead of twice.
+  // then has one colour target, and llvmpipe compiles the store of one, not two.
   bool probe_in_alpha = false;
   bool vertex_stage = false;
 };
