@@ -92,8 +92,9 @@ void RenderPrepared(const PreparedShader& shader, const RenderFileOptions& optio
   request.fullscreen_vertex = shader.fullscreen_vertex;
   ProbedRenderText fragment = BrowserRenderTextWithProbe(shader.fragment_text, semantics);
   request.fragment_source = std::move(fragment.text);
-  request.probe_output = std::string(glsl::kRenderProbeOutput);
+  // The probe is an output at location 1, or it rides in the colour's alpha.
   request.probe_in_alpha = fragment.probe_in_alpha;
+  if (!request.probe_in_alpha) request.probe_output = std::string(glsl::kRenderProbeOutput);
   for (size_t i = 0; i < 4; ++i) {
     request.inputs.channels[i].kind = KindOf(options.channel_types[i]);
     if (options.channel_images[i].empty()) continue;

@@ -13,8 +13,8 @@
 namespace shaderport::glsl {
 namespace {
 
-// `S(name)` -> `shaderport_name`, `Z` -> the opaque zero.
-std::string Spell(std::string_view text) {
+// The table's marks expanded: `S(name)` -> `shaderport_name`, `Z` -> the opaque zero.
+std::string ExpandMarks(std::string_view text) {
   std::string out;
   for (size_t i = 0; i < text.size(); ++i) {
     if (text[i] == 'Z' && (i + 1 == text.size() || text[i + 1] == ')' || text[i + 1] == ' ')) {
@@ -173,7 +173,7 @@ std::string WholeVectorOverloads(const Helper& helper) {
     }
     out.push_back(' ');
   }
-  return Spell(out);
+  return ExpandMarks(out);
 }
 
 // One function of a helper, with what it calls: (helper, type of its first parameter).
@@ -227,7 +227,8 @@ void AddFunctions(const Helper& helper, const std::string& text, bool componentw
 // them, else componentwise (with `float_tail` trailing float parameters too).
 void AddFloatAndVectorOverloads(const Helper& helper, int arity, int float_tail,
                                 bool opaque_parameters, std::vector<Overload>& out) {
-  AddFunctions(helper, WithOpaqueParameters(Spell(helper.text), opaque_parameters), false, out);
+  AddFunctions(helper, WithOpaqueParameters(ExpandMarks(helper.text), opaque_parameters), false,
+               out);
   if (!helper.vector_text.empty()) {
     AddFunctions(helper, WithOpaqueParameters(WholeVectorOverloads(helper), opaque_parameters),
                  false, out);
@@ -240,13 +241,13 @@ std::vector<Overload> Overloads(const Helper& helper, bool opaque_parameters) {
   std::vector<Overload> out;
   switch (helper.shape) {
     case Shape::kInternal:
-      AddFunctions(helper, Spell(helper.text), false, out);
+      AddFunctions(helper, ExpandMarks(helper.text), false, out);
       if (!helper.vector_text.empty()) {
         AddFunctions(helper, WholeVectorOverloads(helper), false, out);
       }
       break;
     case Shape::kFromUint: {
-      AddFunctions(helper, Spell(helper.text), false, out);
+      AddFunctions(helper, ExpandMarks(helper.text), false, out);
       std::string vectors;
       for (size_t v = 0; v < kVectors.size(); ++v) {
         const std::string type(kVectors[v]);
@@ -281,11 +282,12 @@ std::vector<Overload> Overloads(const Helper& helper, bool opaque_parameters) {
     case Shape::kReduction:
     case Shape::kGeometric: {
       std::string text = WithOpaqueParameters(
-          Spell(helper.float_text.empty() ? ForSize(helper.text, "float", 1) : helper.float_text),
+          ExpandMarks(helper.float_text.empty() ? ForSize(helper.text, "float", 1)
+                                                : helper.float_text),
           opaque_parameters);
       for (size_t v = 0; v < kVectors.size(); ++v) {
         text += " " + WithOpaqueParameters(
-                          Spell(ForSize(helper.text, kVectors[v], static_cast<int>(v) + 2)),
+                          ExpandMarks(ForSize(helper.text, kVectors[v], static_cast<int>(v) + 2)),
                           opaque_parameters);
       }
       AddFunctions(helper, text, false, out);

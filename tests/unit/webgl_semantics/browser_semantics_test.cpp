@@ -13,6 +13,14 @@ namespace {
 using testing_support::Apply;
 using testing_support::Body;
 
+// The render probe without zero-initialisation, whose edits would crowd the texts.
+BrowserSemanticsOptions ProbeOnly() {
+  BrowserSemanticsOptions options;
+  options.zero_initialize = false;
+  options.add_render_probe = true;
+  return options;
+}
+
 TEST(BrowserSemantics, ZeroInitializesLocalsOfEveryType) {
   const auto result = Apply(
       "struct S { float a; ivec2 b; };\n"
@@ -86,9 +94,7 @@ TEST(BrowserSemantics, MacroUsesAreWrappedWholeOrLeftAlone) {
 }
 
 TEST(BrowserSemantics, RenderProbeCountsLoopsAndMarksOutputWrites) {
-  BrowserSemanticsOptions options;
-  options.zero_initialize = false;
-  options.add_render_probe = true;
+  BrowserSemanticsOptions options = ProbeOnly();
   const auto result = Apply(
       "void main() { float s = 0.0; for (int i = 0; i < 9; i++) s += 1.0;\n"
       "while (s > 0.0) { s -= 2.0; } if (s < 0.0) o = vec4(s); }\n",
@@ -109,9 +115,7 @@ TEST(BrowserSemantics, RenderProbeCountsLoopsAndMarksOutputWrites) {
 // For a main() that sets alpha itself, the probe is a variable that the end of main()
 // writes to the output's alpha, so the render needs one colour target.
 TEST(BrowserSemantics, RenderProbeCanTravelInTheOutputsAlpha) {
-  BrowserSemanticsOptions options;
-  options.zero_initialize = false;
-  options.add_render_probe = true;
+  BrowserSemanticsOptions options = ProbeOnly();
   options.probe_in_alpha = true;
   const auto result = Apply(
       "void main() { float s = 0.0; for (int i = 0; i < 9; i++) s += 1.0;\n"
@@ -130,9 +134,7 @@ TEST(BrowserSemantics, RenderProbeCanTravelInTheOutputsAlpha) {
 // A main() whose end comes from a macro, or that may return before its end, cannot take
 // the alpha write: the probe keeps its own output.
 TEST(BrowserSemantics, RenderProbeKeepsItsOutputWhenMainsEndIsNotReached) {
-  BrowserSemanticsOptions options;
-  options.zero_initialize = false;
-  options.add_render_probe = true;
+  BrowserSemanticsOptions options = ProbeOnly();
   options.probe_in_alpha = true;
   for (const char* main : {"#define END }\nvoid main() { o = vec4(1.0); END\n",
                            "void main() { o = vec4(1.0); if (o.x > 0.5) return; o.y = 0.0; }\n"}) {
@@ -146,9 +148,7 @@ TEST(BrowserSemantics, RenderProbeKeepsItsOutputWhenMainsEndIsNotReached) {
 }
 
 TEST(BrowserSemantics, RenderProbeMarksWritesOfMainImagesOutParameter) {
-  BrowserSemanticsOptions options;
-  options.zero_initialize = false;
-  options.add_render_probe = true;
+  BrowserSemanticsOptions options = ProbeOnly();
   const auto result = Apply(
       "void paint(out vec4 c) { c = vec4(1.0); }\n"
       "void mainImage(out vec4 f, vec2 p) { for (int i = 0; i < 2; i++) f.x += 1.0;\n"
@@ -183,9 +183,7 @@ TEST(BrowserSemantics, VertexShadersZeroTheirOutputsAndPosition) {
 // Regression: a golfed loop whose header writes the output (`for (p = ...; ...; p *= ...)`)
 // was wrapped in braces inside the for header, which does not compile.
 TEST(BrowserSemantics, RenderProbeMarksOutputWritesInAForHeader) {
-  BrowserSemanticsOptions options;
-  options.zero_initialize = false;
-  options.add_render_probe = true;
+  BrowserSemanticsOptions options = ProbeOnly();
   const auto result = Apply(
       "void mainImage(out vec4 p, vec2 f) { for (p = vec4(f, 1, 0); f.x-- > 0.; p *= .9) "
       "p = (p + p.z) * .1; }\n"
@@ -311,9 +309,7 @@ TEST(BrowserSemantics, PartsAreEditedSeparately) {
 
 }  // namespace
 TEST(BrowserSemantics, SourceOrderArithmeticMakesOutputsAndConditionsInvariant) {
-  BrowserSemanticsOptions options;
-  options.zero_initialize = false;
-  options.add_render_probe = true;
+  BrowserSemanticsOptions options = ProbeOnly();
   options.source_order_arithmetic = true;
   const auto result = Apply(
       "void main() { float s = 0.0; for (int i = 0; i < 9 && s < 4.0; i++) s += 1.5;\n"
@@ -349,9 +345,7 @@ TEST(BrowserSemantics, SourceOrderArithmeticWithoutTheProbeOnlyMakesOutputsInvar
 // Golfed code defines one-letter macros (`#define z Z`, `#define x ...`): the probe's
 // writes must not spell a component name that such a macro would replace.
 TEST(BrowserSemantics, ProbeWritesSurviveMacrosNamedLikeComponents) {
-  BrowserSemanticsOptions options;
-  options.zero_initialize = false;
-  options.add_render_probe = true;
+  BrowserSemanticsOptions options = ProbeOnly();
   options.source_order_arithmetic = true;
   const auto result = Apply(
       "#define x 2.0\n#define y 3.0\n#define z broken(\n"
