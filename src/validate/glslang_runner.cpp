@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "base/large_stack.h"
+#include "validate/precise_pass.h"
 
 namespace shaderport::validate {
 
@@ -34,10 +35,12 @@ void RunOnThisThread(std::span<const GlslangPart> parts, Stage stage, int defaul
   const EShLanguage language = stage == Stage::kVertex ? EShLangVertex : EShLangFragment;
   std::vector<const char*> texts, names;
   std::vector<int> lengths;
+  std::vector<std::string_view> views;
   for (const GlslangPart& part : parts) {
     texts.push_back(part.text.data());
     lengths.push_back(static_cast<int>(part.text.size()));
     names.push_back(part.name.c_str());
+    views.push_back(part.text);
   }
   glslang::TShader shader(language);
   shader.setStringsWithLengthsAndNames(texts.data(), lengths.data(), names.data(),
@@ -46,7 +49,12 @@ void RunOnThisThread(std::span<const GlslangPart> parts, Stage stage, int defaul
   shader.setEnvClient(glslang::EShClientNone, static_cast<glslang::EShTargetClientVersion>(0));
   shader.setEnvTarget(glslang::EShTargetNone, static_cast<glslang::EShTargetLanguageVersion>(0));
   const auto messages = static_cast<EShMessages>(EShMsgCascadingErrors);
-  run.compiled = shader.parse(GetDefaultResources(), default_version, false, messages);
+  {
+    // Validation reads no tree, so glslang's `precise` pass is wasted work when
+    // the text cannot use the keyword (precise_pass.h).
+    const PrecisePassSkip skip(views);
+    run.compiled = shader.parse(GetDefaultResources(), default_version, false, messages);
+  }
   run.compile_log = shader.getInfoLog();
   if (link && run.compiled) {
     glslang::TProgram program;
