@@ -158,9 +158,9 @@ class IndexRangeRule final : public rule::Rule {
       }
     });
     const webgl::ConstantRules constant_rules{model.version, nullptr};
-    glsl::VisitPreorder(context.Tree(), [&](const glsl::Node& node, uint32_t) {
+    glsl::ForEachNodeOf(context.Tree(), {glsl::NodeKind::kIndexExpr}, [&](const glsl::Node& node) {
       const auto* index = node.As<glsl::IndexExpr>();
-      if (index == nullptr || index->base == nullptr || index->index == nullptr) return true;
+      if (index->base == nullptr || index->index == nullptr) return;
       const glsl::Type& base = model.TypeOf(index->base->id);
       int size = 0;
       std::string noun;
@@ -174,25 +174,24 @@ class IndexRangeRule final : public rule::Rule {
         size = base.rows;
         noun = "components";
       }
-      if (size <= 0) return true;
+      if (size <= 0) return;
       const glsl::Type& index_type = model.TypeOf(index->index->id);
-      if (!index_type.IsIntegral() || !index_type.IsScalar()) return true;
-      if (webgl::IsConstantExpression(model, *index->index, constant_rules)) return true;
+      if (!index_type.IsIntegral() || !index_type.IsScalar()) return;
+      if (webgl::IsConstantExpression(model, *index->index, constant_rules)) return;
       const double last = size - 1;
       // Past the int range the arithmetic would wrap: that range is not known.
       auto outside = [&](const Range& r) {
         return r.Finite() && r.lo <= r.hi && r.lo >= -2147483648.0 && r.hi <= 4294967295.0 &&
                (r.lo < 0.0 || r.hi > last);
       };
-      if (!outside(ranges.Of(index->index))) return true;
+      if (!outside(ranges.Of(index->index))) return;
       // Only now the guards around the index, which are slower to find.
       const Overrides narrowed = guards.At(*index);
       ranges.SetOverrides(&narrowed);
       const Range range = ranges.Of(index->index);
       ranges.SetOverrides(nullptr);
-      if (!outside(range)) return true;
+      if (!outside(range)) return;
       Report(context, *index, base, size, noun, range, written.contains(index->id));
-      return true;
     });
   }
 

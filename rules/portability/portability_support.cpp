@@ -109,7 +109,9 @@ std::optional<std::vector<int>> SwizzleComponents(std::string_view name) {
 
 void ForEachWrittenExpr(const rule::RuleContext& context, const glsl::Node& start,
                         const std::function<void(const glsl::Expr& target)>& fn) {
-  glsl::VisitPreorder(context.Tree(), start, [&](const glsl::Node& node, uint32_t) {
+  constexpr glsl::NodeKinds kWriters = {glsl::NodeKind::kAssignmentExpr, glsl::NodeKind::kUnaryExpr,
+                                        glsl::NodeKind::kCallExpr};
+  glsl::ForEachNodeOf(context.Tree(), start, kWriters, [&](const glsl::Node& node) {
     if (const auto* assignment = node.As<glsl::AssignmentExpr>()) {
       if (assignment->lhs != nullptr) fn(*assignment->lhs);
     } else if (const auto* unary = node.As<glsl::UnaryExpr>()) {
@@ -124,7 +126,6 @@ void ForEachWrittenExpr(const rule::RuleContext& context, const glsl::Node& star
         }
       }
     }
-    return true;
   });
 }
 

@@ -190,20 +190,21 @@ class FunctionAnalysis {
       if (!parameter->qualifiers.Has(glsl::QualifierKind::kOut) && !(probe_ && inout)) continue;
       AddSlot(model_.SymbolAt(parameter->id), nullptr, parameter);
     }
-    glsl::VisitPreorder(context_.Tree(), *function_.body, [&](const glsl::Node& node, uint32_t) {
-      const auto* declaration = node.As<glsl::VariableDeclaration>();
-      if (declaration == nullptr) return true;
-      if (!declaration->qualifiers.Has(glsl::QualifierKind::kConst)) {
-        for (const glsl::Declarator* declarator : declaration->declarators) {
-          if (declarator == nullptr || declarator->initializer != nullptr ||
-              declarator->name.Empty()) {
-            continue;
-          }
-          AddSlot(model_.SymbolAt(declarator->id), declarator, nullptr);
-        }
-      }
-      return false;  // a struct defined here has fields, not variables
-    });
+    constexpr glsl::NodeKinds kDeclarations = {glsl::NodeKind::kVariableDeclaration};
+    glsl::ForEachNodeOf(context_.Tree(), *function_.body, kDeclarations,
+                        [&](const glsl::Node& node) {
+                          const auto* declaration = node.As<glsl::VariableDeclaration>();
+                          if (!declaration->qualifiers.Has(glsl::QualifierKind::kConst)) {
+                            for (const glsl::Declarator* declarator : declaration->declarators) {
+                              if (declarator == nullptr || declarator->initializer != nullptr ||
+                                  declarator->name.Empty()) {
+                                continue;
+                              }
+                              AddSlot(model_.SymbolAt(declarator->id), declarator, nullptr);
+                            }
+                          }
+                          return false;  // a struct defined here has fields, not variables
+                        });
   }
 
   int SlotOf(const glsl::Expr& identifier) const {

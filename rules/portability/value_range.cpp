@@ -46,10 +46,8 @@ Range Compare(glsl::BinaryOp op, const Range& a, const Range& b) {
 
 ValueRanges::ValueRanges(const rule::RuleContext& context)
     : context_(context), model_(context.Model()) {
-  glsl::VisitPreorder(context.Tree(), [&](const glsl::Node& node, uint32_t) {
-    if (const auto* loop = node.As<glsl::ForStatement>()) AddLoop(*loop);
-    return true;
-  });
+  glsl::ForEachNodeOf(context.Tree(), {glsl::NodeKind::kForStatement},
+                      [&](const glsl::Node& node) { AddLoop(*node.As<glsl::ForStatement>()); });
 }
 
 // The range of `expr`, with `overrides` for the variables a guard narrowed.

@@ -36,7 +36,10 @@ class BlockLayoutRule final : public rule::Rule {
   }
 
   void Run(rule::RuleContext& context) const override {
-    glsl::VisitPreorder(context.Tree(), [&](const glsl::Node& node, uint32_t) {
+    constexpr glsl::NodeKinds kQualified = {glsl::NodeKind::kInterfaceBlock,
+                                            glsl::NodeKind::kQualifierDeclaration,
+                                            glsl::NodeKind::kVariableDeclaration};
+    glsl::ForEachNodeOf(context.Tree(), kQualified, [&](const glsl::Node& node) {
       if (const auto* block = node.As<glsl::InterfaceBlock>()) {
         CheckQualifiers(context, block->qualifiers);
       } else if (const auto* declaration = node.As<glsl::QualifierDeclaration>()) {
@@ -44,7 +47,6 @@ class BlockLayoutRule final : public rule::Rule {
       } else if (const auto* variable = node.As<glsl::VariableDeclaration>()) {
         CheckQualifiers(context, variable->qualifiers);
       }
-      return !node.IsExpr();
     });
   }
 };

@@ -44,10 +44,15 @@ class ExpressionComplexityRule final : public rule::Rule {
     if (tree.Root() != nullptr && !tree.Preorder().empty()) {
       // Every node up to the first too deep one is visited: a plain loop over the index
       // (the root's entry is the first, at depth 0).
-      for (const glsl::PreorderEntry& entry : tree.Preorder()) {
-        if (!entry.node->IsExpr()) statement = entry.node;
-        if (entry.depth <= kMaxDepth) continue;
-        ReportTooDeep(context, statement != nullptr ? statement->range : entry.node->range);
+      // The kind table says which nodes are statements without reading the nodes.
+      const std::span<const glsl::PreorderEntry> order = tree.Preorder();
+      const std::span<const glsl::NodeKind> kinds = tree.PreorderKinds();
+      size_t statement_at = order.size();
+      for (size_t i = 0; i < order.size(); ++i) {
+        if (kinds[i] < glsl::NodeKind::kIdentifierExpr) statement_at = i;
+        if (order[i].depth <= kMaxDepth) continue;
+        ReportTooDeep(context, statement_at != order.size() ? order[statement_at].node->range
+                                                            : order[i].node->range);
         return;
       }
       return;

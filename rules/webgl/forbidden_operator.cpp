@@ -35,14 +35,14 @@ class ForbiddenOperatorRule final : public rule::Rule {
   void Run(rule::RuleContext& context) const override {
     const bool strict_ternary = webgl::IsEssl100(context) || webgl::InWebgl2(context);
     // Only the two kinds are looked at: the test stays inline in the walk, the rest not.
-    glsl::VisitPreorder(context.Tree(), [&](const glsl::Node& node, uint32_t) {
+    constexpr glsl::NodeKinds kOperators = {glsl::NodeKind::kConditionalExpr,
+                                            glsl::NodeKind::kBinaryExpr};
+    glsl::ForEachNodeOf(context.Tree(), kOperators, [&](const glsl::Node& node) {
       if (node.kind == glsl::NodeKind::kConditionalExpr) {
         CheckConditional(context, *node.As<glsl::ConditionalExpr>(), strict_ternary);
-      } else if (node.kind == glsl::NodeKind::kBinaryExpr &&
-                 node.As<glsl::BinaryExpr>()->op == glsl::BinaryOp::kComma) {
+      } else if (node.As<glsl::BinaryExpr>()->op == glsl::BinaryOp::kComma) {
         CheckSequence(context, *node.As<glsl::BinaryExpr>());
       }
-      return true;
     });
   }
 

@@ -34,15 +34,16 @@ CallGraph BuildCallGraph(const rule::RuleContext& context) {
     const uint32_t caller = model.SymbolAt(function->id);
     if (caller == glsl::kNoSymbol) continue;
     std::vector<Call>& calls = graph[caller];
-    glsl::VisitPreorder(context.Tree(), *function->body, [&](const glsl::Node& node, uint32_t) {
-      const auto* call = node.As<glsl::CallExpr>();
-      if (call == nullptr || call->call_kind != glsl::CallKind::kFunction) return true;
-      const uint32_t callee = model.SymbolAt(call->id);
-      if (callee != glsl::kNoSymbol && model.symbols[callee].kind == glsl::SymbolKind::kFunction) {
-        calls.push_back({callee, call});
-      }
-      return true;
-    });
+    glsl::ForEachNodeOf(context.Tree(), *function->body, {glsl::NodeKind::kCallExpr},
+                        [&](const glsl::Node& node) {
+                          const auto* call = node.As<glsl::CallExpr>();
+                          if (call->call_kind != glsl::CallKind::kFunction) return;
+                          const uint32_t callee = model.SymbolAt(call->id);
+                          if (callee != glsl::kNoSymbol &&
+                              model.symbols[callee].kind == glsl::SymbolKind::kFunction) {
+                            calls.push_back({callee, call});
+                          }
+                        });
   }
   return graph;
 }

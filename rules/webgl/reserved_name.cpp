@@ -45,7 +45,11 @@ class ReservedNameRule final : public rule::Rule {
   }
 
   void Run(rule::RuleContext& context) const override {
-    glsl::VisitPreorder(context.Tree(), [&](const glsl::Node& node, uint32_t) {
+    constexpr glsl::NodeKinds kNamed = {
+        glsl::NodeKind::kDeclarator, glsl::NodeKind::kParameterDeclaration,
+        glsl::NodeKind::kFunctionDeclaration, glsl::NodeKind::kStructSpecifier,
+        glsl::NodeKind::kInterfaceBlock};
+    glsl::ForEachNodeOf(context.Tree(), kNamed, [&](const glsl::Node& node) {
       if (const auto* declarator = node.As<glsl::Declarator>())
         CheckName(context, declarator->name);
       if (const auto* parameter = node.As<glsl::ParameterDeclaration>()) {
@@ -61,7 +65,6 @@ class ReservedNameRule final : public rule::Rule {
         CheckName(context, block->block_name);
         CheckName(context, block->instance_name);
       }
-      return true;
     });
   }
 };

@@ -12,6 +12,7 @@ SyntaxTree& SyntaxTree::operator=(SyntaxTree&& other) noexcept {
   destructors_ = std::exchange(other.destructors_, {});
   root_ = std::exchange(other.root_, nullptr);
   preorder_ = std::exchange(other.preorder_, {});
+  preorder_kinds_ = std::exchange(other.preorder_kinds_, {});
   preorder_index_ = std::exchange(other.preorder_index_, {});
   return *this;
 }
@@ -24,6 +25,7 @@ void SyntaxTree::DestroyNodes() {
   nodes_.clear();
   root_ = nullptr;
   preorder_.clear();
+  preorder_kinds_.clear();
   preorder_index_.clear();
   arena_.reset();  // releases every block at once
 }

@@ -525,6 +525,9 @@ class SyntaxTree {
   /// that the many walks over one tree (every WebGL rule makes one) are a loop over
   /// an array instead of a traversal each. Empty before IndexPreorder().
   std::span<const PreorderEntry> Preorder() const { return preorder_; }
+  /// The kind of each node of Preorder(), at the same index: walks that look at a few
+  /// kinds scan this small table and read only the nodes they want.
+  std::span<const NodeKind> PreorderKinds() const { return preorder_kinds_; }
   /// The index of node `id` in Preorder(), or kNotInPreorder (not reachable from
   /// the root, or no index yet).
   static constexpr uint32_t kNotInPreorder = UINT32_MAX;
@@ -567,6 +570,7 @@ class SyntaxTree {
   std::vector<Destructor> destructors_;  // the nodes whose type has a destructor to run
   TranslationUnit* root_ = nullptr;
   std::vector<PreorderEntry> preorder_;
+  std::vector<NodeKind> preorder_kinds_;
   std::vector<uint32_t> preorder_index_;  // by node id
 };
 

@@ -15,14 +15,22 @@ Parser::Parser(const PreprocessResult& pp, const ParseOptions& options)
   // continuations inside tokens (ConvertToPpToken, predefined macros, pastes), so the
   // parser keeps no cleaned copy of its own.
   const std::vector<PpToken>* tokens = &pp_.tokens;
-  end_index_ = static_cast<uint32_t>(tokens->size());
-  for (uint32_t i = 0; i < tokens->size(); ++i) {
-    if ((*tokens)[i].kind == TokenKind::kEndOfFile) {
+  const auto size = static_cast<uint32_t>(tokens->size());
+  // One pass finds the end of file and classifies the words before it (a token is
+  // larger than a cache line's share: a second pass would read them all again).
+  // Sized once and written in place (zero is a plain identifier's WordInfo).
+  words_.resize(size + 1);
+  end_index_ = size;
+  for (uint32_t i = 0; i < size; ++i) {
+    const PpToken& token = (*tokens)[i];
+    if (token.kind == TokenKind::kIdentifier) {
+      words_[i] = ClassifyWord(token.text, options_.version);
+    } else if (token.kind == TokenKind::kEndOfFile) {
       end_index_ = i;
       break;
     }
   }
-  if (end_index_ == tokens->size()) {
+  if (end_index_ == size) {
     // No end of file (a hand-made token list): a copy ending in one, so that every
     // index up to end_index_ can be read without a bounds test.
     own_tokens_ = pp_.tokens;
@@ -32,13 +40,6 @@ Parser::Parser(const PreprocessResult& pp, const ParseOptions& options)
   tokens_ = tokens->data();
   current_ = tokens_;
   token_count_ = static_cast<uint32_t>(tokens->size());
-  // Sized once and written in place (zero is a plain identifier's WordInfo).
-  words_.resize(end_index_ + 1);
-  for (uint32_t i = 0; i < end_index_; ++i) {
-    if (tokens_[i].kind == TokenKind::kIdentifier) {
-      words_[i] = ClassifyWord(tokens_[i].text, options_.version);
-    }
-  }
 }
 
 // ------------------------------------------------------------------ tokens
@@ -91,6 +92,7 @@ SourceRange Parser::RangeOf(uint32_t first, uint32_t last) const {
 }
 
 void Parser::FinishNodeSlow(Node* node) {
+  took_slow_finish_ = true;
   bool empty = pos_ <= node->first_token;
   node->last_token = empty ? node->first_token - 1 : pos_ - 1;
   node->range = RangeOf(node->first_token, node->last_token);
@@ -249,8 +251,9 @@ void Parser::PlaceEmptyNodes() {
   // (`float a = ;`): move each empty node into its parent so ranges nest. A loop over
   // the preorder index (parents come before their children, so each parent is placed
   // before its children are) with the open ancestors by depth, not a second walk.
-  // Empty nodes come only from error recovery: most trees have none, and a scan of the
-  // node table is far cheaper than the walk.
+  // Empty nodes come only from error recovery, through FinishNodeSlow: most trees
+  // never take it, and then not even the scan of the node table is needed.
+  if (!took_slow_finish_) return;
   bool any_empty = false;
   for (uint32_t id = 0; id < tree_.NodeCount() && !any_empty; ++id) {
     any_empty = !tree_.NodeAt(id).HasTokens();

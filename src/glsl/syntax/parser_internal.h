@@ -151,6 +151,9 @@ class Parser {
   uint32_t last_error_index_ = UINT32_MAX;
   size_t error_count_ = 0;
   bool too_many_reported_ = false;
+  // Set by the slow path of FinishNode, the only place a node can end up with no
+  // tokens: PlaceEmptyNodes has nothing to do in a tree that never took it.
+  bool took_slow_finish_ = false;
 };
 
 // pos_ never passes end_index_ (only Advance moves it), so the current token needs no

@@ -14,10 +14,12 @@ namespace shaderport::glsl {
 // vectors that grow.
 [[gnu::flatten]] void SyntaxTree::IndexPreorder() {
   preorder_.clear();
+  preorder_kinds_.clear();
   preorder_index_.assign(nodes_.size(), kNotInPreorder);
   if (root_ == nullptr) return;
   const size_t capacity = nodes_.size() + 1;  // + 1: a root made outside the tree
   preorder_.resize(capacity);
+  preorder_kinds_.resize(capacity);
   const auto stack = std::make_unique_for_overwrite<PreorderItem[]>(capacity);
   // Indices of the entries whose subtree is still open, deepest last: an entry's subtree
   // ends where the next node no deeper than it is placed.
@@ -39,6 +41,7 @@ namespace shaderport::glsl {
     }
     preorder_index_[item.node->id] = index;
     preorder_[index] = {item.node, item.depth, 0};
+    preorder_kinds_[index] = item.node->kind;
     open[open_size++] = index;
     const size_t first = stack_size;
     ForEachChild(*item.node, [&](const Node& child) {
@@ -54,10 +57,12 @@ namespace shaderport::glsl {
   if (overflow) return IndexSharedPreorder();
   for (size_t i = 0; i < open_size; ++i) preorder_[open[i]].end = count;
   preorder_.resize(count);
+  preorder_kinds_.resize(count);
 }
 
 void SyntaxTree::IndexSharedPreorder() {
   preorder_.clear();
+  preorder_kinds_.clear();
   preorder_index_.assign(nodes_.size(), kNotInPreorder);
   std::vector<PreorderItem> stack{{root_, 0}};
   std::vector<uint32_t> open;
@@ -71,6 +76,7 @@ void SyntaxTree::IndexSharedPreorder() {
     }
     preorder_index_[item.node->id] = index;
     preorder_.push_back({item.node, item.depth, 0});
+    preorder_kinds_.push_back(item.node->kind);
     open.push_back(index);
     const size_t first = stack.size();
     ForEachChild(*item.node, [&](const Node& child) { stack.push_back({&child, item.depth + 1}); });

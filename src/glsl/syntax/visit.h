@@ -11,7 +11,9 @@
 #include <algorithm>
 #include <cstdint>
 #include <functional>
+#include <initializer_list>
 #include <span>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -73,6 +75,69 @@ void VisitPreorder(const SyntaxTree& tree, const Node& start, Fn&& fn) {
 template <class Fn>
 void VisitPreorder(const Node& start, Fn&& fn) {
   visit_detail::WalkWithStack(start, fn);
+}
+
+/// A set of node kinds, for the walks that look at a few kinds only.
+class NodeKinds {
+ public:
+  constexpr NodeKinds(std::initializer_list<NodeKind> kinds) {
+    for (NodeKind kind : kinds) bits_ |= uint64_t{1} << static_cast<unsigned>(kind);
+  }
+  constexpr bool Has(NodeKind kind) const {
+    return ((bits_ >> static_cast<unsigned>(kind)) & 1u) != 0;
+  }
+
+ private:
+  static_assert(static_cast<unsigned>(NodeKind::kErrorExpr) < 64);
+  uint64_t bits_ = 0;
+};
+
+namespace visit_detail {
+
+// fn(node) for a node of a wanted kind; true to go on into its subtree. An `fn` that
+// returns nothing always goes on.
+template <class Fn>
+bool CallOnMatch(Fn& fn, const Node& node) {
+  if constexpr (std::is_same_v<std::invoke_result_t<Fn&, const Node&>, bool>) {
+    return fn(node);
+  } else {
+    fn(node);
+    return true;
+  }
+}
+
+}  // namespace visit_detail
+
+/// Calls `fn(node)` on every node of one of `kinds` in the subtree of `start` (a node
+/// of `tree`, itself included), in preorder; an `fn` that returns false skips the
+/// node's subtree. With the tree's index this scans its kind table and reads no
+/// other node: most rules look at a few kinds, and reading every node of a large
+/// tree for each of them misses the cache node after node.
+template <class Fn>
+void ForEachNodeOf(const SyntaxTree& tree, const Node& start, NodeKinds kinds, Fn&& fn) {
+  const uint32_t at = tree.PreorderIndexOf(start.id);
+  if (at == SyntaxTree::kNotInPreorder || tree.Preorder()[at].node != &start) {
+    auto filtered = [&](const Node& node, uint32_t) {
+      return !kinds.Has(node.kind) || visit_detail::CallOnMatch(fn, node);
+    };
+    visit_detail::WalkWithStack(start, filtered);
+    return;
+  }
+  const std::span<const PreorderEntry> order = tree.Preorder();
+  const std::span<const NodeKind> kind_of = tree.PreorderKinds();
+  for (uint32_t i = at, end = order[at].end; i < end;) {
+    if (!kinds.Has(kind_of[i])) {
+      ++i;
+    } else {
+      i = visit_detail::CallOnMatch(fn, *order[i].node) ? i + 1 : order[i].end;
+    }
+  }
+}
+
+/// Same over the whole tree.
+template <class Fn>
+void ForEachNodeOf(const SyntaxTree& tree, NodeKinds kinds, Fn&& fn) {
+  if (tree.Root() != nullptr) ForEachNodeOf(tree, *tree.Root(), kinds, fn);
 }
 
 /// Calls `fn` on every node after all its children (children in source order):
