@@ -5,23 +5,27 @@
 # user+system CPU seconds and wall seconds are reported, with peak memory.
 # Run on demand (issue: speed), never in CI.
 #
-#   bench/check_vs_glslang.sh [-n PASSES] [-r RUNS] [-j JOBS] [-l LOOP_FILES] BINARY
+#   bench/check_vs_glslang.sh [-n PASSES] [-r RUNS] [-j JOBS] [-l LOOP_FILES] [-c CPU] BINARY
 #
 #   -n  ShaderToy passes from ../shared (default 1000; corpus/ files are added)
 #   -r  alternating rounds (default 5)
 #   -j  also time `check -j JOBS` against JOBS glslangValidator processes (default 2)
 #   -l  files for the per-file loop, scaled to the whole set (default 100)
+#   -c  run the one-process commands (check -j 1, glslangValidator batched, the loop)
+#       on this CPU only (taskset): on a shared VM the CPUs can differ in speed, and
+#       the scheduler's choice then outweighs the difference between the tools
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(dirname "$here")
-count=1000 rounds=5 jobs=2 loop_files=100
-while getopts "n:r:j:l:" option; do
+count=1000 rounds=5 jobs=2 loop_files=100 cpu=""
+while getopts "n:r:j:l:c:" option; do
   case $option in
     n) count=$OPTARG ;;
     r) rounds=$OPTARG ;;
     j) jobs=$OPTARG ;;
     l) loop_files=$OPTARG ;;
-    *) sed -n '2,13p' "$0" >&2; exit 2 ;;
+    c) cpu=$OPTARG ;;
+    *) sed -n '2,16p' "$0" >&2; exit 2 ;;
   esac
 done
 shift $((OPTIND - 1))
@@ -54,13 +58,15 @@ glslang_loop() {
 }
 export -f glslang_pair glslang_loop 2>/dev/null || true
 
+pin=()
+[[ -n $cpu ]] && pin=(taskset -c "$cpu")
 for ((r = 0; r < rounds; r++)); do
-  measure check1 "$binary" check -j 1 --no-cache "${raw[@]}"
-  measure glslang1 glslangValidator "${wrapped[@]}"
+  measure check1 "${pin[@]}" "$binary" check -j 1 --no-cache "${raw[@]}"
+  measure glslang1 "${pin[@]}" glslangValidator "${wrapped[@]}"
   measure checkj "$binary" check -j "$jobs" --no-cache "${raw[@]}"
   measure glslangj bash -c "$(declare -p wrapped n); $(declare -f glslang_pair); glslang_pair"
 done
-measure loop bash -c "$(declare -p wrapped n loop_files); $(declare -f glslang_loop); glslang_loop"
+measure loop "${pin[@]}" bash -c "$(declare -p wrapped n loop_files); $(declare -f glslang_loop); glslang_loop"
 
 median() {  # FILE COLUMN
   sort -n -k"$2" "$1" | awk -v c="$2" '{ v[NR] = $c } END { print v[int((NR + 1) / 2)] }'
@@ -69,7 +75,7 @@ row() {  # LABEL NAME
   printf '%-40s %8s %8s %8s\n' "$1" "$(median "$work/$2" 1)" "$(median "$work/$2" 2)" \
     "$(median "$work/$2" 3)"
 }
-echo "$n passes ($count ShaderToy passes from the shared corpus plus corpus/), $rounds alternating rounds, medians"
+echo "$n passes ($count ShaderToy passes from the shared corpus plus corpus/), $rounds alternating rounds, medians${cpu:+, one-process runs on CPU $cpu}"
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)"
 printf '%-40s %8s %8s %8s\n' command cpu_s wall_s peak_KiB
 row "shaderport check -j 1" check1

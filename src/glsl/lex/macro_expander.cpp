@@ -29,13 +29,32 @@ class Expander {
       : state_(state), in_if_(in_if), depth_(depth) {}
 
   std::vector<ExpToken> Run(std::vector<ExpToken> input) {
-    stack_.push_back({std::move(input), 0, nullptr});
-    ExpToken t;
-    while (Next(&t)) Step(std::move(t));
+    Drain(std::move(input));
     return std::move(out_);
   }
 
+  void RunInto(std::vector<ExpToken> input, std::vector<PpToken>& out) {
+    direct_ = &out;
+    Drain(std::move(input));
+  }
+
  private:
+  void Drain(std::vector<ExpToken> input) {
+    stack_.push_back({std::move(input), 0, nullptr});
+    ExpToken t;
+    while (Next(&t)) Step(std::move(t));
+  }
+
+  // A finished token: into the caller's token list when given one (nothing reads the
+  // output back while expanding), else into the result.
+  void Emit(ExpToken&& t) {
+    if (direct_ != nullptr) {
+      direct_->push_back(t.token);
+    } else {
+      out_.push_back(std::move(t));
+    }
+  }
+
   bool Next(ExpToken* t) {
     while (!stack_.empty()) {
       Context& c = stack_.back();
@@ -59,7 +78,7 @@ class Expander {
 
   void Step(ExpToken t) {
     if (t.token.kind != TokenKind::kIdentifier || t.no_expand || state_.expansion_exhausted) {
-      out_.push_back(std::move(t));
+      Emit(std::move(t));
       return;
     }
     if (in_if_ && t.token.text == "defined") {
@@ -68,12 +87,12 @@ class Expander {
     }
     Macro* macro = state_.FindMutable(t.token.text);
     if (!macro) {
-      out_.push_back(std::move(t));
+      Emit(std::move(t));
       return;
     }
     if (macro->disabled > 0) {
       t.no_expand = true;  // a macro never expands inside its own expansion
-      out_.push_back(std::move(t));
+      Emit(std::move(t));
       return;
     }
     if (depth_ + stack_.size() > limits::kMaxMacroDepth) {
@@ -83,7 +102,7 @@ class Expander {
                       "macro expansion nested more than " + std::to_string(limits::kMaxMacroDepth) +
                           " levels deep");
       }
-      out_.push_back(std::move(t));
+      Emit(std::move(t));
       return;
     }
     if (!macro->function_like) {
@@ -92,7 +111,7 @@ class Expander {
     }
     const ExpToken* after = Peek();
     if (!after || after->token.punct != Punct::kLeftParen) {
-      out_.push_back(std::move(t));  // a function-like macro name without '(' is a plain name
+      Emit(std::move(t));  // a function-like macro name without '(' is a plain name
       return;
     }
     Call(std::move(t), *macro);
@@ -124,7 +143,7 @@ class Expander {
                     "'defined' must be followed by a macro name or '(' name ')'");
     }
     value.token.text = defined ? "1" : "0";
-    out_.push_back(std::move(value));
+    Emit(std::move(value));
   }
 
   void Call(ExpToken name, Macro& macro) {
@@ -142,11 +161,11 @@ class Expander {
         state_.Report(Severity::kError, "preprocessor/unterminated-macro-call",
                       Cover(name.token.expansion, open.token.expansion),
                       "the arguments of macro '" + macro.name + "' have no closing ')'");
-        out_.push_back(std::move(name));
-        out_.push_back(std::move(open));
+        Emit(std::move(name));
+        Emit(std::move(open));
         for (size_t i = 0; i < args.size(); ++i) {
-          if (i > 0) out_.push_back(std::move(separators[i - 1]));
-          for (auto& a : args[i]) out_.push_back(std::move(a));
+          if (i > 0) Emit(std::move(separators[i - 1]));
+          for (auto& a : args[i]) Emit(std::move(a));
         }
         return;
       }
@@ -168,7 +187,7 @@ class Expander {
                     Cover(name.token.expansion, t.token.expansion),
                     "macro '" + macro.name + "' takes " + std::to_string(macro.params.size()) +
                         " argument(s) but " + std::to_string(args.size()) + " were given");
-      out_.push_back(std::move(name));
+      Emit(std::move(name));
       return;
     }
     Substitute(name, macro, std::move(args), std::move(t));
@@ -233,7 +252,7 @@ class Expander {
     state_.expanded_tokens += produced.size() + 1;
     if (state_.expanded_tokens > limits::kMaxExpandedTokens || state_.expansion_exhausted) {
       ReportTooLarge(expansion);
-      out_.push_back(name);
+      Emit(ExpToken(name));
       return;
     }
     ++macro.disabled;
@@ -329,6 +348,7 @@ class Expander {
   uint32_t argument_of_use_ = kNoMacroUse;
   std::vector<Context> stack_;
   std::vector<ExpToken> out_;
+  std::vector<PpToken>* direct_ = nullptr;
 };
 
 }  // namespace
@@ -336,6 +356,10 @@ class Expander {
 std::vector<ExpToken> ExpandMacros(PpState& state, std::vector<ExpToken> input,
                                    bool in_if_expression, uint32_t depth) {
   return Expander(state, in_if_expression, depth).Run(std::move(input));
+}
+
+void ExpandMacrosInto(PpState& state, std::vector<ExpToken> input, std::vector<PpToken>& out) {
+  Expander(state, false, 0).RunInto(std::move(input), out);
 }
 
 }  // namespace shaderport::glsl

@@ -14,6 +14,10 @@ namespace shaderport::glsl {
 std::vector<ExpToken> ExpandMacros(PpState& state, std::vector<ExpToken> input,
                                    bool in_if_expression, uint32_t depth = 0);
 
+// The same outside #if, appending the expanded tokens to `out`: the text of a file
+// goes straight into the preprocessor's output, with no list of expanded tokens between.
+void ExpandMacrosInto(PpState& state, std::vector<ExpToken> input, std::vector<PpToken>& out);
+
 // Joins two tokens into one with `##`; false (and no change) when the result is not one token.
 bool PasteTokens(PpState& state, const PpToken& left, const PpToken& right, PpToken* pasted);
 

@@ -123,9 +123,7 @@ void PpDriver::FlushText(std::span<const Token> text) {
   for (++i; i < text.size(); ++i) {
     input.push_back({ToPpToken(*file_, text[i], state_, file_has_backslash_), false});
   }
-  std::vector<ExpToken> expanded = ExpandMacros(state_, std::move(input), false);
-  ReserveMore(out, expanded.size());
-  for (ExpToken& t : expanded) out.push_back(t.token);
+  ExpandMacrosInto(state_, std::move(input), out);
 }
 
 void PpDriver::AddLexDiagnostics(const LexedFile& lexed, size_t first_region) {
