@@ -1,6 +1,7 @@
 #include "glsl/lex/macro_expander.h"
 
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 
@@ -33,9 +34,16 @@ class Expander {
     return std::move(out_);
   }
 
-  void RunInto(std::vector<ExpToken> input, std::vector<PpToken>& out) {
+  // Expands lexed tokens of `file`, each converted when first read, into `out`.
+  void RunInto(const SourceFile& file, std::span<const Token> source, bool file_has_backslash,
+               std::vector<PpToken>& out) {
     direct_ = &out;
-    Drain(std::move(input));
+    source_file_ = &file;
+    source_ = source;
+    source_has_backslash_ = file_has_backslash;
+    source_levels_ = 1;  // the source counts as the level a list of input tokens would be
+    ExpToken t;
+    while (Next(&t)) Step(std::move(t));
   }
 
  private:
@@ -43,6 +51,29 @@ class Expander {
     stack_.push_back({std::move(input), 0, nullptr});
     ExpToken t;
     while (Next(&t)) Step(std::move(t));
+  }
+
+  // Open levels of input: macro expansions, and the input below them.
+  size_t Levels() const { return stack_.size() + source_levels_; }
+
+  // The next token of the lazily converted source, if any is left.
+  bool NextFromSource(ExpToken* t) {
+    if (source_peeked_) {
+      *t = std::move(*source_peeked_);
+      source_peeked_.reset();
+      return true;
+    }
+    if (source_next_ == source_.size()) return false;
+    *t = {ToPpToken(*source_file_, source_[source_next_++], state_, source_has_backslash_), false};
+    return true;
+  }
+
+  const ExpToken* PeekSource() {
+    if (!source_peeked_ && source_next_ < source_.size()) {
+      source_peeked_ = ExpToken{
+          ToPpToken(*source_file_, source_[source_next_++], state_, source_has_backslash_), false};
+    }
+    return source_peeked_ ? &*source_peeked_ : nullptr;
   }
 
   // A finished token: into the caller's token list when given one (nothing reads the
@@ -65,15 +96,15 @@ class Expander {
       if (c.macro) --c.macro->disabled;
       stack_.pop_back();
     }
-    return false;
+    return NextFromSource(t);
   }
 
   // The next token without reading it; looks through finished contexts.
-  const ExpToken* Peek() const {
+  const ExpToken* Peek() {
     for (auto it = stack_.rbegin(); it != stack_.rend(); ++it) {
       if (it->next < it->tokens.size()) return &it->tokens[it->next];
     }
-    return nullptr;
+    return PeekSource();
   }
 
   void Step(ExpToken t) {
@@ -95,7 +126,7 @@ class Expander {
       Emit(std::move(t));
       return;
     }
-    if (depth_ + stack_.size() > limits::kMaxMacroDepth) {
+    if (depth_ + Levels() > limits::kMaxMacroDepth) {
       if (!state_.reported_macro_depth) {
         state_.reported_macro_depth = true;
         state_.Report(Severity::kError, "preprocessor/macro-too-deep", t.token.expansion,
@@ -272,12 +303,11 @@ class Expander {
     // Each nested pre-expansion holds a copy of its argument: cap the nesting (real code
     // nests a few calls deep) and charge the copy, so memory stays bounded. Arguments past
     // the cap are substituted as written and expanded when the body is rescanned.
-    if (arg_nesting_ >= kMaxArgumentNesting ||
-        depth_ + stack_.size() + 1 > limits::kMaxMacroDepth) {
+    if (arg_nesting_ >= kMaxArgumentNesting || depth_ + Levels() + 1 > limits::kMaxMacroDepth) {
       return arg;
     }
     state_.expanded_tokens += arg.size();
-    Expander nested(state_, in_if_, depth_ + static_cast<uint32_t>(stack_.size()) + 1);
+    Expander nested(state_, in_if_, depth_ + static_cast<uint32_t>(Levels()) + 1);
     nested.arg_nesting_ = arg_nesting_ + 1;
     nested.argument_of_use_ = use_id;
     return nested.Run(arg);
@@ -349,6 +379,13 @@ class Expander {
   std::vector<Context> stack_;
   std::vector<ExpToken> out_;
   std::vector<PpToken>* direct_ = nullptr;
+  // RunInto's source: lexed tokens converted one at a time, below every context.
+  const SourceFile* source_file_ = nullptr;
+  std::span<const Token> source_;
+  size_t source_next_ = 0;
+  bool source_has_backslash_ = false;
+  size_t source_levels_ = 0;
+  std::optional<ExpToken> source_peeked_;  // converted by Peek, not yet read
 };
 
 }  // namespace
@@ -358,8 +395,9 @@ std::vector<ExpToken> ExpandMacros(PpState& state, std::vector<ExpToken> input,
   return Expander(state, in_if_expression, depth).Run(std::move(input));
 }
 
-void ExpandMacrosInto(PpState& state, std::vector<ExpToken> input, std::vector<PpToken>& out) {
-  Expander(state, false, 0).RunInto(std::move(input), out);
+void ExpandMacrosInto(PpState& state, const SourceFile& file, std::span<const Token> source,
+                      bool file_has_backslash, std::vector<PpToken>& out) {
+  Expander(state, false, 0).RunInto(file, source, file_has_backslash, out);
 }
 
 }  // namespace shaderport::glsl

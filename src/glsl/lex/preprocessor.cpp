@@ -104,26 +104,21 @@ void PpDriver::FlushText(std::span<const Token> text) {
   // A name's first character is the same with or without line continuations (a token
   // never starts with one), so MayBeMacro can test the lexed text before converting.
   size_t i = 0;
-  PpToken first_use;
   for (; i < text.size(); ++i) {
     const Token& t = text[i];
     PpToken& converted = out.emplace_back();
     ConvertToPpToken(converted, *file_, t, state_, file_has_backslash_);
     if (t.kind == TokenKind::kIdentifier && state_.MayBeMacro(t.text) &&
         state_.Find(converted.text) != nullptr) {
-      first_use = converted;
       out.pop_back();
       break;
     }
   }
   if (i == text.size()) return;
-  std::vector<ExpToken> input;
-  input.reserve(text.size() - i);
-  input.push_back({first_use, false});
-  for (++i; i < text.size(); ++i) {
-    input.push_back({ToPpToken(*file_, text[i], state_, file_has_backslash_), false});
-  }
-  ExpandMacrosInto(state_, std::move(input), out);
+  // From the first use on, the expander reads the lexed tokens itself (the first use
+  // is converted again there, which only stores its spelling twice when it holds a
+  // line continuation).
+  ExpandMacrosInto(state_, *file_, text.subspan(i), file_has_backslash_, out);
 }
 
 void PpDriver::AddLexDiagnostics(const LexedFile& lexed, size_t first_region) {

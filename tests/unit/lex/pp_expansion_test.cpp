@@ -86,6 +86,14 @@ TEST(PpExpansion, ExponentialMacroStopsQuickly) {
   EXPECT_LT(seconds, 20.0);
 }
 
+TEST(PpExpansion, ARescanTakesItsArgumentsFromTheTextThatFollows) {
+  // The expander reads the file's tokens as it goes: an expansion that ends in a
+  // function-like macro's name takes the '(' and arguments that come after the use.
+  auto r = RunPp("#define F G\n#define G(x) [x]\nint a; F(1) F\n(2) F\n");
+  EXPECT_EQ(Joined(r.result), "int a ; [ 1 ] [ 2 ] G");
+  EXPECT_TRUE(r.result.diagnostics.empty());
+}
+
 TEST(PpExpansion, DeepMacroChainIsCut) {
   std::string text;
   for (int i = 0; i < 1000; ++i) {
