@@ -55,8 +55,11 @@ void PpDriver::RunFile(const SourceFile& file, size_t index, const LexedFile* gi
     const ConditionalGroup& g = groups_.back();
     state_.Report(Severity::kError, "preprocessor/unterminated-conditional", g.directive,
                   "this conditional has no #endif");
+    // Only the group that started the skipping ends a skipped region here: a taken group
+    // skipped nothing, and skip_begin_ may still hold another group's (or file's) start.
+    const bool was_active = Active();
     groups_.pop_back();
-    if (Active()) {
+    if (!was_active && Active()) {
       state_.result.inactive_regions.push_back(
           {file.Id(), skip_begin_, static_cast<uint32_t>(file.Text().size())});
     }

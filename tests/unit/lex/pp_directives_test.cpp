@@ -239,5 +239,21 @@ TEST(PpDirectives, EveryRuleIdIsInTheCatalog) {
   }
 }
 
+TEST(PpDirectives, AnUnterminatedTakenGroupSkipsNothing) {
+  // Only a group that was skipping ends a skipped region at the end of the file.
+  auto taken = RunPp("#if 1\nint a;\n");
+  EXPECT_EQ(RuleIds(taken.result), V{"preprocessor/unterminated-conditional"});
+  EXPECT_TRUE(taken.result.inactive_regions.empty());
+  // A skipping group in the first file must not lend its start to the second file's.
+  auto two = RunPp(std::vector<std::string>{"#ifdef\n", "#if 2"});
+  for (const SourceRange& region : two.result.inactive_regions) {
+    EXPECT_LE(region.begin, region.end);
+    EXPECT_LE(region.end, two.sources->Get(region.file).Text().size());
+  }
+  auto skipped = RunPp("#if 0\nint a;\n");
+  ASSERT_EQ(skipped.result.inactive_regions.size(), 1u);
+  EXPECT_EQ(skipped.result.inactive_regions[0].begin, 5u);
+  EXPECT_EQ(skipped.result.inactive_regions[0].end, 13u);
+}
 }  // namespace
 }  // namespace shaderport::glsl
