@@ -43,14 +43,14 @@ class Expander {
     source_has_backslash_ = file_has_backslash;
     source_levels_ = 1;  // the source counts as the level a list of input tokens would be
     ExpToken t;
-    while (Next(&t)) Step(std::move(t));
+    while (Next(&t)) Step(t);
   }
 
  private:
   void Drain(std::vector<ExpToken> input) {
     stack_.push_back({std::move(input), 0, nullptr});
     ExpToken t;
-    while (Next(&t)) Step(std::move(t));
+    while (Next(&t)) Step(t);
   }
 
   // Open levels of input: macro expansions, and the input below them.
@@ -59,7 +59,7 @@ class Expander {
   // The next token of the lazily converted source, if any is left.
   bool NextFromSource(ExpToken* t) {
     if (source_peeked_) {
-      *t = std::move(*source_peeked_);
+      *t = *source_peeked_;
       source_peeked_.reset();
       return true;
     }
@@ -78,11 +78,11 @@ class Expander {
 
   // A finished token: into the caller's token list when given one (nothing reads the
   // output back while expanding), else into the result.
-  void Emit(ExpToken&& t) {
+  void Emit(const ExpToken& t) {
     if (direct_ != nullptr) {
       direct_->push_back(t.token);
     } else {
-      out_.push_back(std::move(t));
+      out_.push_back(t);
     }
   }
 
@@ -90,7 +90,7 @@ class Expander {
     while (!stack_.empty()) {
       Context& c = stack_.back();
       if (c.next < c.tokens.size()) {
-        *t = std::move(c.tokens[c.next++]);
+        *t = c.tokens[c.next++];
         return true;
       }
       if (c.macro) --c.macro->disabled;
@@ -109,7 +109,7 @@ class Expander {
 
   void Step(ExpToken t) {
     if (t.token.kind != TokenKind::kIdentifier || t.no_expand || state_.expansion_exhausted) {
-      Emit(std::move(t));
+      Emit(t);
       return;
     }
     if (in_if_ && t.token.text == "defined") {
@@ -118,12 +118,12 @@ class Expander {
     }
     Macro* macro = state_.FindMutable(t.token.text);
     if (!macro) {
-      Emit(std::move(t));
+      Emit(t);
       return;
     }
     if (macro->disabled > 0) {
       t.no_expand = true;  // a macro never expands inside its own expansion
-      Emit(std::move(t));
+      Emit(t);
       return;
     }
     if (depth_ + Levels() > limits::kMaxMacroDepth) {
@@ -133,7 +133,7 @@ class Expander {
                       "macro expansion nested more than " + std::to_string(limits::kMaxMacroDepth) +
                           " levels deep");
       }
-      Emit(std::move(t));
+      Emit(t);
       return;
     }
     if (!macro->function_like) {
@@ -142,10 +142,10 @@ class Expander {
     }
     const ExpToken* after = Peek();
     if (!after || after->token.punct != Punct::kLeftParen) {
-      Emit(std::move(t));  // a function-like macro name without '(' is a plain name
+      Emit(t);  // a function-like macro name without '(' is a plain name
       return;
     }
-    Call(std::move(t), *macro);
+    Call(t, *macro);
   }
 
   // `defined X` or `defined ( X )` inside #if.
@@ -174,7 +174,7 @@ class Expander {
                     "'defined' must be followed by a macro name or '(' name ')'");
     }
     value.token.text = defined ? "1" : "0";
-    Emit(std::move(value));
+    Emit(value);
   }
 
   void Call(ExpToken name, Macro& macro) {
@@ -192,11 +192,11 @@ class Expander {
         state_.Report(Severity::kError, "preprocessor/unterminated-macro-call",
                       Cover(name.token.expansion, open.token.expansion),
                       "the arguments of macro '" + macro.name + "' have no closing ')'");
-        Emit(std::move(name));
-        Emit(std::move(open));
+        Emit(name);
+        Emit(open);
         for (size_t i = 0; i < args.size(); ++i) {
-          if (i > 0) Emit(std::move(separators[i - 1]));
-          for (auto& a : args[i]) Emit(std::move(a));
+          if (i > 0) Emit(separators[i - 1]);
+          for (auto& a : args[i]) Emit(a);
         }
         return;
       }
@@ -218,7 +218,7 @@ class Expander {
                     Cover(name.token.expansion, t.token.expansion),
                     "macro '" + macro.name + "' takes " + std::to_string(macro.params.size()) +
                         " argument(s) but " + std::to_string(args.size()) + " were given");
-      Emit(std::move(name));
+      Emit(name);
       return;
     }
     Substitute(name, macro, std::move(args), std::move(t));
@@ -249,7 +249,7 @@ class Expander {
         if (!body.token.spelling.Valid()) body.token.spelling = name.token.spelling;
         body.token.in_macro_body = true;
         const bool paste = body.token.punct == Punct::kHashHash;
-        pieces.push_back({std::move(body), paste, false});
+        pieces.push_back({body, paste, false});
         continue;
       }
       const bool next_to_paste =
@@ -266,7 +266,7 @@ class Expander {
       for (size_t k = 0; k < arg->size(); ++k) {
         ExpToken a = (*arg)[k];
         if (k == 0) a.token.leading_space = macro.body[i].leading_space;
-        pieces.push_back({std::move(a), false, false});
+        pieces.push_back({a, false, false});
       }
     }
     std::vector<ExpToken> produced = ApplyPastes(std::move(pieces), expansion);
@@ -329,7 +329,7 @@ class Expander {
       Piece& left = joined.back();
       if (piece.placemarker) continue;
       if (left.placemarker) {
-        left = std::move(piece);
+        left = piece;
         continue;
       }
       PpToken pasted;
