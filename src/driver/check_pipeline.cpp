@@ -12,6 +12,7 @@
 #include "driver/check_shard.h"
 #include "driver/config/config_lookup.h"
 #include "driver/input_files.h"
+#include "driver/largest_first.h"
 #include "driver/parallel_for.h"
 #include "render/isolated_render.h"
 
@@ -116,15 +117,20 @@ CheckRun RunCheck(const CheckOptions& options) {
   std::vector<bool> keep_text(jobs.size(), !options.release_clean_texts || options.render);
   for (const auto& [vertex, fragment] : programs) keep_text[vertex] = keep_text[fragment] = true;
   std::vector<FileReport> reports(jobs.size());
-  ParallelFor(jobs.size(), options.jobs, [&](size_t i) {
-    reports[i] = cache ? cache->Check(i, sources) : CheckFile(jobs[i], options, sources);
-    const FileReport& report = reports[i];
-    if (!keep_text[i] && jobs[i].source == nullptr && report.file != nullptr &&
-        report.diagnostics.empty()) {
-      sources.ReleaseText(report.file->Id());
-    }
-    if (!options.render) file_done();
-  });
+  // Several jobs take the largest files first; one job keeps the input order.
+  const std::vector<size_t> order = options.jobs != 1 ? LargestFirst(jobs) : std::vector<size_t>{};
+  ParallelFor(
+      jobs.size(), options.jobs,
+      [&](size_t i) {
+        reports[i] = cache ? cache->Check(i, sources) : CheckFile(jobs[i], options, sources);
+        const FileReport& report = reports[i];
+        if (!keep_text[i] && jobs[i].source == nullptr && report.file != nullptr &&
+            report.diagnostics.empty()) {
+          sources.ReleaseText(report.file->Id());
+        }
+        if (!options.render) file_done();
+      },
+      order);
   if (cache) cache->Finish();
   // Programs link once both stages are checked (before renders, whose findings
   // must not stop a link).
