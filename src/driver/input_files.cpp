@@ -5,8 +5,9 @@
 #include <algorithm>
 #include <array>
 #include <fstream>
-#include <set>
+#include <string>
 #include <system_error>
+#include <unordered_set>
 
 namespace shaderport::driver {
 
@@ -73,9 +74,11 @@ std::vector<fs::path> WalkDirectory(const fs::path& root, std::vector<std::strin
 
 InputSet WalkInputs(const std::vector<fs::path>& paths, const KeepWalkedFile& keep) {
   InputSet result;
-  std::set<fs::path> seen;
-  auto add = [&](InputFile file) {
-    if (seen.insert(file.path.lexically_normal()).second) result.files.push_back(std::move(file));
+  // Normal forms as strings: for normalised paths, equal strings are equal paths, and a
+  // hashed string is far cheaper than comparing paths component by component.
+  std::unordered_set<std::string> seen;
+  auto add = [&](InputFile file, const fs::path& normal) {
+    if (seen.insert(normal.native()).second) result.files.push_back(std::move(file));
   };
   for (const fs::path& path : paths) {
     std::error_code error;
@@ -88,12 +91,13 @@ InputSet WalkInputs(const std::vector<fs::path>& paths, const KeepWalkedFile& ke
       continue;
     }
     if (!fs::is_directory(status)) {
-      add({path, path.lexically_normal(), true});
+      const fs::path normal = path.lexically_normal();
+      add({path, normal, true}, normal);
       continue;
     }
     for (const fs::path& file : WalkDirectory(path, result.errors)) {
       if (keep && !keep(file)) continue;
-      add({file, file.lexically_relative(path), false});
+      add({file, file.lexically_relative(path), false}, file.lexically_normal());
     }
   }
   return result;
