@@ -61,6 +61,8 @@ def main():
     parser.add_argument("-n", "--passes", type=int, default=1000)
     parser.add_argument("--max-jobs", type=int, default=32)
     args = parser.parse_args()
+    if shutil.which("valgrind") is None:
+        sys.exit("parallel_scaling_sim: needs valgrind (tools/install-deps.sh --bench)")
     here = os.path.dirname(os.path.abspath(__file__))
     root = os.path.dirname(here)
     shared = os.environ.get("SHADERPORT_SHARED_DIR", os.path.join(root, "..", "shared"))

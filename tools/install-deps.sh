@@ -5,6 +5,8 @@
 #   tools/install-deps.sh           everything the build and the test suite need
 #   tools/install-deps.sh --build   only what building and installing the
 #                                   executable needs (the GitHub Action uses this)
+#   tools/install-deps.sh --bench   what building needs, and the profiler the
+#                                   on-demand benchmarks use (bench/, not CI)
 set -euo pipefail
 
 build_packages=(
@@ -26,10 +28,15 @@ test_packages=(
   chromium
 )
 
+# bench/parallel_scaling_sim.py counts instructions per file with callgrind.
+bench_packages=(valgrind)
+
 packages=("${build_packages[@]}")
-if [[ "${1:-}" != "--build" ]]; then
-  packages+=("${test_packages[@]}")
-fi
+case "${1:-}" in
+  --build) ;;
+  --bench) packages+=("${bench_packages[@]}") ;;
+  *) packages+=("${test_packages[@]}") ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do

@@ -42,13 +42,16 @@ class Expander {
     source_ = source;
     source_has_backslash_ = file_has_backslash;
     source_levels_ = 1;  // the source counts as the level a list of input tokens would be
-    ExpToken t;
-    while (Next(&t)) Step(t);
+    StepThroughInput();
   }
 
  private:
   void Drain(std::vector<ExpToken> input) {
     stack_.push_back({std::move(input), 0, nullptr});
+    StepThroughInput();
+  }
+
+  void StepThroughInput() {
     ExpToken t;
     while (Next(&t)) Step(t);
   }
@@ -64,16 +67,18 @@ class Expander {
       return true;
     }
     if (source_next_ == source_.size()) return false;
-    *t = {ToPpToken(*source_file_, source_[source_next_++], state_, source_has_backslash_), false};
+    *t = ConvertNextSourceToken();
     return true;
   }
 
   const ExpToken* PeekSource() {
-    if (!source_peeked_ && source_next_ < source_.size()) {
-      source_peeked_ = ExpToken{
-          ToPpToken(*source_file_, source_[source_next_++], state_, source_has_backslash_), false};
-    }
+    if (!source_peeked_ && source_next_ < source_.size()) source_peeked_ = ConvertNextSourceToken();
     return source_peeked_ ? &*source_peeked_ : nullptr;
+  }
+
+  ExpToken ConvertNextSourceToken() {
+    return {ToPpToken(*source_file_, source_[source_next_++], state_, source_has_backslash_),
+            false};
   }
 
   // A finished token: into the caller's token list when given one (nothing reads the
