@@ -53,7 +53,28 @@ class Expander {
 
   void StepThroughInput() {
     ExpToken t;
-    while (Next(&t)) Step(t);
+    while (true) {
+      if (direct_ != nullptr && stack_.empty() && !source_peeked_) CopyPlainSourceTokens();
+      if (!Next(&t)) return;
+      Step(t);
+    }
+  }
+
+  // With no expansion open, the source's tokens up to the next name of a defined macro
+  // go to the output as they are (what Step would do): converted in place there, as
+  // building each one aside and copying it twice cost more than the conversion.
+  void CopyPlainSourceTokens() {
+    while (source_next_ < source_.size()) {
+      const Token& token = source_[source_next_];
+      PpToken& converted = direct_->emplace_back();
+      ConvertToPpToken(converted, *source_file_, token, state_, source_has_backslash_);
+      if (token.kind == TokenKind::kIdentifier && !state_.expansion_exhausted &&
+          state_.Find(converted.text) != nullptr) {
+        direct_->pop_back();  // Step expands it
+        return;
+      }
+      ++source_next_;
+    }
   }
 
   // Open levels of input: macro expansions, and the input below them.
@@ -208,12 +229,12 @@ class Expander {
       if (t.token.punct == Punct::kLeftParen) ++nesting;
       if (t.token.punct == Punct::kRightParen && --nesting == 0) break;
       if (t.token.punct == Punct::kComma && nesting == 1) {
-        separators.push_back(std::move(t));
+        separators.push_back(t);
         args.emplace_back();
         continue;
       }
       state_.expanded_tokens++;  // collecting arguments copies tokens: count them too
-      args.back().push_back(std::move(t));
+      args.back().push_back(t);
     }
     // `F()` passes no argument to a macro without parameters, and one empty argument
     // to a macro with one parameter (real ShaderToy code writes `D( )`).
@@ -226,7 +247,7 @@ class Expander {
       Emit(name);
       return;
     }
-    Substitute(name, macro, std::move(args), std::move(t));
+    Substitute(name, macro, std::move(args), t);
   }
 
   void Substitute(const ExpToken& name, Macro& macro, std::vector<std::vector<ExpToken>> args,
@@ -274,7 +295,7 @@ class Expander {
         pieces.push_back({a, false, false});
       }
     }
-    std::vector<ExpToken> produced = ApplyPastes(std::move(pieces), expansion);
+    std::vector<ExpToken> produced = ApplyPastes(pieces, expansion);
     for (ExpToken& p : produced) {
       p.token.expansion = expansion;
       // Argument tokens that an earlier macro made keep that macro's use (the innermost
@@ -318,16 +339,16 @@ class Expander {
     return nested.Run(arg);
   }
 
-  std::vector<ExpToken> ApplyPastes(std::vector<Piece> pieces, SourceRange expansion) {
+  std::vector<ExpToken> ApplyPastes(const std::vector<Piece>& pieces, SourceRange expansion) {
     std::vector<Piece> joined;
     bool pending = false;
-    for (Piece& piece : pieces) {
+    for (const Piece& piece : pieces) {
       if (piece.paste_operator) {
         pending = !joined.empty();
         continue;
       }
       if (!pending) {
-        joined.push_back(std::move(piece));
+        joined.push_back(piece);
         continue;
       }
       pending = false;
@@ -344,13 +365,13 @@ class Expander {
         state_.Report(Severity::kError, "preprocessor/invalid-token-paste", expansion,
                       "pasting '" + std::string(left.token.token.text) + "' and '" +
                           std::string(piece.token.token.text) + "' does not give a valid token");
-        joined.push_back(std::move(piece));
+        joined.push_back(piece);
       }
     }
     std::vector<ExpToken> out;
     out.reserve(joined.size());
     for (Piece& p : joined) {
-      if (!p.placemarker) out.push_back(std::move(p.token));
+      if (!p.placemarker) out.push_back(p.token);
     }
     return out;
   }
