@@ -1,6 +1,7 @@
 #include "validate/precise_pass.h"
 
 #include <atomic>
+#include <string>
 
 namespace glslang {
 class TIntermediate;
@@ -14,9 +15,48 @@ std::atomic<uint64_t> skipped_precise_passes{0};
 
 }  // namespace
 
+namespace {
+
+// `text` with its line continuations (a backslash right before "\n", "\r\n" or "\r")
+// removed, as glslang joins lines before it scans words.
+std::string JoinContinuedLines(std::string_view text) {
+  std::string joined;
+  joined.reserve(text.size());
+  for (size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\\' && i + 1 < text.size() && (text[i + 1] == '\n' || text[i + 1] == '\r')) {
+      i += text[i + 1] == '\r' && i + 2 < text.size() && text[i + 2] == '\n' ? 2 : 1;
+      continue;
+    }
+    joined += text[i];
+  }
+  return joined;
+}
+
+bool IsLetterOrUnderscore(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+}
+
+// Whether `word` occurs where glslang could scan it as a token of its own: not after a
+// letter or '_' and not before a letter, digit or '_'. A digit before it still counts
+// ("1precise" scans as 1 and precise), so this errs towards running the pass.
+bool MayHoldWord(std::string_view text, std::string_view word) {
+  for (size_t at = text.find(word); at != std::string_view::npos; at = text.find(word, at + 1)) {
+    const size_t after = at + word.size();
+    const bool joined_before = at > 0 && IsLetterOrUnderscore(text[at - 1]);
+    const bool joined_after = after < text.size() && (IsLetterOrUnderscore(text[after]) ||
+                                                      (text[after] >= '0' && text[after] <= '9'));
+    if (!joined_before && !joined_after) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 bool CannotSpellPrecise(std::string_view text) {
-  return text.find("precise") == std::string_view::npos &&
-         text.find("##") == std::string_view::npos && text.find('\\') == std::string_view::npos;
+  // Token pasting can assemble the word from any pieces.
+  if (text.find("##") != std::string_view::npos) return false;
+  if (text.find('\\') == std::string_view::npos) return !MayHoldWord(text, "precise");
+  return !MayHoldWord(JoinContinuedLines(text), "precise");
 }
 
 PrecisePassSkip::PrecisePassSkip(std::span<const std::string_view> texts)

@@ -12,8 +12,9 @@
 
 namespace shaderport::validate {
 
-// True when glslang cannot scan the keyword `precise` out of `text`: the word is not
-// in it, and no token pasting (`##`) or line continuation could assemble it.
+// True when glslang cannot scan the keyword `precise` out of `text`: the word does not
+// stand alone in it once continued lines are joined ("imprecise" and "precise_x" are
+// other words; comments are not told apart), and it holds no token pasting (`##`).
 bool CannotSpellPrecise(std::string_view text);
 
 // While alive, glslang parses on this thread skip the pass when every text of

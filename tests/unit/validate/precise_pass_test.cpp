@@ -18,10 +18,21 @@ TEST(PrecisePassTest, OnlyTextsThatCannotFormTheKeywordSkipIt) {
   EXPECT_TRUE(CannotSpellPrecise("void main() { float x = a * b; }"));
   EXPECT_TRUE(CannotSpellPrecise(""));
   EXPECT_FALSE(CannotSpellPrecise("precise float x;"));
-  EXPECT_FALSE(CannotSpellPrecise("// imprecise comment"));
+  EXPECT_FALSE(CannotSpellPrecise("// a precise comment"));  // comments are not told apart
+  // Other words that contain it cannot become the keyword.
+  EXPECT_TRUE(CannotSpellPrecise("// imprecise comment"));
+  EXPECT_TRUE(CannotSpellPrecise("float precise_x = precise2;"));
+  // A digit before it ends a number: "1precise" scans as 1 and precise.
+  EXPECT_FALSE(CannotSpellPrecise("x = 1precise;"));
+  EXPECT_FALSE(CannotSpellPrecise("(precise)"));
   // Token pasting and line continuations can assemble the word from pieces.
   EXPECT_FALSE(CannotSpellPrecise("#define P(a, b) a##b\nP(pre, cise) float x;"));
   EXPECT_FALSE(CannotSpellPrecise("pre\\\ncise float x;"));
+  EXPECT_FALSE(CannotSpellPrecise("pre\\\r\ncise float x;"));
+  EXPECT_FALSE(CannotSpellPrecise("x\\\n precise float y;"));
+  // Continued lines that do not form it: a multi-line macro.
+  EXPECT_TRUE(CannotSpellPrecise("#define F(x) \\\n  (x * 2.0)\nfloat y = F(1.0);"));
+  EXPECT_TRUE(CannotSpellPrecise("im\\\nprecise"));
 }
 
 constexpr std::string_view kPlain =
