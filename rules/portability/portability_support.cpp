@@ -1,5 +1,7 @@
 #include "rules/portability/portability_support.h"
 
+#include <array>
+
 #include "glsl/sema/builtins.h"
 #include "glsl/syntax/visit.h"
 
@@ -39,36 +41,56 @@ ArgumentUse AnyBuiltinOverload(std::string_view name, size_t index) {
 
 }  // namespace
 
-ArgumentUse ArgumentUseOf(const rule::RuleContext& context, const glsl::CallExpr& call,
-                          size_t index) {
-  if (call.call_kind != glsl::CallKind::kFunction) return ArgumentUse::kRead;
+ArgumentUses::ArgumentUses(const rule::RuleContext& context, const glsl::CallExpr& call)
+    : call_(call) {
+  if (call.call_kind != glsl::CallKind::kFunction) {
+    callee_ = Callee::kNotAFunction;
+    return;
+  }
   const glsl::SemanticModel& model = context.Model();
   if (const auto found = model.builtin_calls.find(call.id); found != model.builtin_calls.end()) {
-    const glsl::BuiltinFunction* overload = found->second;
-    if (overload == nullptr) return AnyBuiltinOverload(call.callee.text, index);
-    if (index >= overload->params.size()) return ArgumentUse::kRead;
-    return FromQualifier(overload->params[index].qualifier);
+    overload_ = found->second;
+    callee_ = overload_ != nullptr ? Callee::kOverload : Callee::kAnyOverload;
+    return;
   }
   const uint32_t symbol = model.SymbolAt(call.id);
   if (symbol == glsl::kNoSymbol || symbol >= model.symbols.size()) {
-    return glsl::IsBuiltinFunctionName(call.callee.text)
-               ? AnyBuiltinOverload(call.callee.text, index)
-               : ArgumentUse::kUnknown;
+    callee_ =
+        glsl::IsBuiltinFunctionName(call.callee.text) ? Callee::kAnyOverload : Callee::kUnknown;
+    return;
   }
   const glsl::Symbol& function = model.symbols[symbol];
   if (function.kind == glsl::SymbolKind::kBuiltinFunction) {
-    return AnyBuiltinOverload(call.callee.text, index);
+    callee_ = Callee::kAnyOverload;
+    return;
   }
-  if (function.kind != glsl::SymbolKind::kFunction) return ArgumentUse::kUnknown;
+  if (function.kind != glsl::SymbolKind::kFunction) return;
   const uint32_t node = function.declaration;
-  if (node == glsl::kNoNode || node >= context.Tree().NodeCount()) return ArgumentUse::kUnknown;
-  const auto* declaration = context.Tree().NodeAt(node).As<glsl::FunctionDeclaration>();
-  if (declaration == nullptr) return ArgumentUse::kUnknown;
-  if (index >= declaration->parameters.size()) return ArgumentUse::kRead;
-  const glsl::QualifierList& qualifiers = declaration->parameters[index]->qualifiers;
-  if (qualifiers.Has(glsl::QualifierKind::kInOut)) return ArgumentUse::kReadWrite;
-  if (qualifiers.Has(glsl::QualifierKind::kOut)) return ArgumentUse::kWrite;
-  return ArgumentUse::kRead;
+  if (node == glsl::kNoNode || node >= context.Tree().NodeCount()) return;
+  declaration_ = context.Tree().NodeAt(node).As<glsl::FunctionDeclaration>();
+  if (declaration_ != nullptr) callee_ = Callee::kDeclaration;
+}
+
+ArgumentUse ArgumentUses::Of(size_t index) const {
+  switch (callee_) {
+    case Callee::kNotAFunction:
+      return ArgumentUse::kRead;
+    case Callee::kOverload:
+      if (index >= overload_->params.size()) return ArgumentUse::kRead;
+      return FromQualifier(overload_->params[index].qualifier);
+    case Callee::kAnyOverload:
+      return AnyBuiltinOverload(call_.callee.text, index);
+    case Callee::kDeclaration: {
+      if (index >= declaration_->parameters.size()) return ArgumentUse::kRead;
+      const glsl::QualifierList& qualifiers = declaration_->parameters[index]->qualifiers;
+      if (qualifiers.Has(glsl::QualifierKind::kInOut)) return ArgumentUse::kReadWrite;
+      if (qualifiers.Has(glsl::QualifierKind::kOut)) return ArgumentUse::kWrite;
+      return ArgumentUse::kRead;
+    }
+    case Callee::kUnknown:
+      break;
+  }
+  return ArgumentUse::kUnknown;
 }
 
 const glsl::IdentifierExpr* ChainRoot(const glsl::Expr* expr) {
@@ -93,7 +115,7 @@ const glsl::IdentifierExpr* ChainRoot(const glsl::Expr* expr) {
 }
 
 std::optional<std::vector<int>> SwizzleComponents(std::string_view name) {
-  static constexpr std::string_view kSets[] = {"xyzw", "rgba", "stpq"};
+  static constexpr std::array<std::string_view, 3> kSets = {"xyzw", "rgba", "stpq"};
   if (name.empty() || name.size() > 4) return std::nullopt;
   for (std::string_view set : kSets) {
     std::vector<int> components;
@@ -119,9 +141,10 @@ void ForEachWrittenExpr(const rule::RuleContext& context, const glsl::Node& star
         fn(*unary->operand);
       }
     } else if (const auto* call = node.As<glsl::CallExpr>()) {
+      if (call->call_kind != glsl::CallKind::kFunction || call->arguments.empty()) return;
+      const ArgumentUses uses(context, *call);
       for (size_t i = 0; i < call->arguments.size(); ++i) {
-        if (call->arguments[i] != nullptr &&
-            ArgumentUseOf(context, *call, i) != ArgumentUse::kRead) {
+        if (call->arguments[i] != nullptr && uses.Of(i) != ArgumentUse::kRead) {
           fn(*call->arguments[i]);
         }
       }

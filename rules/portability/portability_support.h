@@ -22,10 +22,33 @@ const glsl::Expr* Unparenthesized(const glsl::Expr* expr);
 // unknown (an unresolved call, whose argument may be written).
 enum class ArgumentUse : uint8_t { kRead, kWrite, kReadWrite, kUnknown };
 
-// The use of argument `index` of `call`, from the user function's parameter
-// qualifiers or the built-in overload's (modf's second parameter is out).
-ArgumentUse ArgumentUseOf(const rule::RuleContext& context, const glsl::CallExpr& call,
-                          size_t index);
+// How `call` passes each argument, from the user function's parameter qualifiers or
+// the built-in overload's (modf's second parameter is out). The callee is looked up
+// once, on construction: rules ask about every argument of a call in turn.
+class ArgumentUses {
+ public:
+  ArgumentUses(const rule::RuleContext& context, const glsl::CallExpr& call);
+  ArgumentUse Of(size_t index) const;
+
+ private:
+  enum class Callee : uint8_t {
+    kNotAFunction,  // a constructor or method: reads its arguments
+    kOverload,      // a resolved built-in overload
+    kAnyOverload,   // an unresolved built-in: any overload's qualifiers
+    kDeclaration,   // a user function
+    kUnknown,       // unresolved: any argument may be written
+  };
+  const glsl::CallExpr& call_;
+  Callee callee_ = Callee::kUnknown;
+  const glsl::BuiltinFunction* overload_ = nullptr;
+  const glsl::FunctionDeclaration* declaration_ = nullptr;
+};
+
+// The use of argument `index` of `call` (ArgumentUses for one argument).
+inline ArgumentUse ArgumentUseOf(const rule::RuleContext& context, const glsl::CallExpr& call,
+                                 size_t index) {
+  return ArgumentUses(context, call).Of(index);
+}
 
 // The identifier an access chain starts from, through parentheses, `.member` and
 // `[index]`: `(a[i]).xy` gives `a`. nullptr when the chain starts elsewhere (a call...).

@@ -41,7 +41,6 @@ namespace shaderport::rules {
 namespace {
 
 using portability::ArgumentUse;
-using portability::ArgumentUseOf;
 
 constexpr std::string_view kId = "portability/uninitialized-read";
 constexpr std::string_view kWhatHappens =
@@ -400,9 +399,10 @@ class FunctionAnalysis {
     }
     // In arguments are evaluated in order; out arguments are written when the call returns.
     std::vector<Access> written;
+    const portability::ArgumentUses uses(context_, *call);
     for (size_t i = 0; i < call->arguments.size(); ++i) {
       const glsl::Expr* argument = call->arguments[i];
-      ArgumentUse use = ArgumentUseOf(context_, *call, i);
+      ArgumentUse use = uses.Of(i);
       if (use == ArgumentUse::kRead) {
         Eval(argument, depth + 1);
         continue;
