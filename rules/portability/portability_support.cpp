@@ -141,7 +141,6 @@ void ForEachWrittenExpr(const rule::RuleContext& context, const glsl::Node& star
         fn(*unary->operand);
       }
     } else if (const auto* call = node.As<glsl::CallExpr>()) {
-      if (call->call_kind != glsl::CallKind::kFunction || call->arguments.empty()) return;
       const ArgumentUses uses(context, *call);
       for (size_t i = 0; i < call->arguments.size(); ++i) {
         if (call->arguments[i] != nullptr && uses.Of(i) != ArgumentUse::kRead) {

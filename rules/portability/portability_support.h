@@ -44,12 +44,6 @@ class ArgumentUses {
   const glsl::FunctionDeclaration* declaration_ = nullptr;
 };
 
-// The use of argument `index` of `call` (ArgumentUses for one argument).
-inline ArgumentUse ArgumentUseOf(const rule::RuleContext& context, const glsl::CallExpr& call,
-                                 size_t index) {
-  return ArgumentUses(context, call).Of(index);
-}
-
 // The identifier an access chain starts from, through parentheses, `.member` and
 // `[index]`: `(a[i]).xy` gives `a`. nullptr when the chain starts elsewhere (a call...).
 const glsl::IdentifierExpr* ChainRoot(const glsl::Expr* expr);

@@ -3,6 +3,8 @@
 #include <atomic>
 #include <string>
 
+#include "glsl/lex/lex_chars.h"
+
 namespace glslang {
 class TIntermediate;
 }
@@ -13,27 +15,19 @@ namespace {
 thread_local bool skip_precise_pass = false;
 std::atomic<uint64_t> skipped_precise_passes{0};
 
-}  // namespace
-
-namespace {
-
 // `text` with its line continuations (a backslash right before "\n", "\r\n" or "\r")
 // removed, as glslang joins lines before it scans words.
 std::string JoinContinuedLines(std::string_view text) {
   std::string joined;
   joined.reserve(text.size());
   for (size_t i = 0; i < text.size(); ++i) {
-    if (text[i] == '\\' && i + 1 < text.size() && (text[i + 1] == '\n' || text[i + 1] == '\r')) {
-      i += text[i + 1] == '\r' && i + 2 < text.size() && text[i + 2] == '\n' ? 2 : 1;
+    if (const size_t continuation = glsl::ContinuationLength(text, i)) {
+      i += continuation - 1;
       continue;
     }
     joined += text[i];
   }
   return joined;
-}
-
-bool IsLetterOrUnderscore(char c) {
-  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
 }
 
 // Whether `word` occurs where glslang could scan it as a token of its own: not after a
@@ -42,9 +36,8 @@ bool IsLetterOrUnderscore(char c) {
 bool MayHoldWord(std::string_view text, std::string_view word) {
   for (size_t at = text.find(word); at != std::string_view::npos; at = text.find(word, at + 1)) {
     const size_t after = at + word.size();
-    const bool joined_before = at > 0 && IsLetterOrUnderscore(text[at - 1]);
-    const bool joined_after = after < text.size() && (IsLetterOrUnderscore(text[after]) ||
-                                                      (text[after] >= '0' && text[after] <= '9'));
+    const bool joined_before = at > 0 && glsl::IsIdentifierStart(text[at - 1]);
+    const bool joined_after = after < text.size() && glsl::IsIdentifierChar(text[after]);
     if (!joined_before && !joined_after) return true;
   }
   return false;

@@ -62,7 +62,9 @@ class Expander {
 
   // With no expansion open, the source's tokens up to the next name of a defined macro
   // go to the output as they are (what Step would do): converted in place there, as
-  // building each one aside and copying it twice cost more than the conversion.
+  // building each one aside and copying it twice cost more than the conversion. Most
+  // runs of code use no macro, or only late. A macro name is converted again when Step
+  // reads it, which only stores its spelling twice when it holds a line continuation.
   void CopyPlainSourceTokens() {
     while (source_next_ < source_.size()) {
       const Token& token = source_[source_next_];
@@ -309,7 +311,7 @@ class Expander {
     state_.expanded_tokens += produced.size() + 1;
     if (state_.expanded_tokens > limits::kMaxExpandedTokens || state_.expansion_exhausted) {
       ReportTooLarge(expansion);
-      Emit(ExpToken(name));
+      Emit(name);
       return;
     }
     ++macro.disabled;

@@ -101,27 +101,7 @@ void PpDriver::FlushText(std::span<const Token> text) {
   seen_code_ = true;
   auto& out = state_.result.tokens;
   ReserveMore(out, text.size());
-  // The expander passes every token before the first use of a defined macro through
-  // unchanged: those go straight to the output, and only the rest is expanded (most
-  // runs of code use no macro, or only late).
-  // A name's first character is the same with or without line continuations (a token
-  // never starts with one), so MayBeMacro can test the lexed text before converting.
-  size_t i = 0;
-  for (; i < text.size(); ++i) {
-    const Token& t = text[i];
-    PpToken& converted = out.emplace_back();
-    ConvertToPpToken(converted, *file_, t, state_, file_has_backslash_);
-    if (t.kind == TokenKind::kIdentifier && state_.MayBeMacro(t.text) &&
-        state_.Find(converted.text) != nullptr) {
-      out.pop_back();
-      break;
-    }
-  }
-  if (i == text.size()) return;
-  // From the first use on, the expander reads the lexed tokens itself (the first use
-  // is converted again there, which only stores its spelling twice when it holds a
-  // line continuation).
-  ExpandMacrosInto(state_, *file_, text.subspan(i), file_has_backslash_, out);
+  ExpandMacrosInto(state_, *file_, text, file_has_backslash_, out);
 }
 
 void PpDriver::AddLexDiagnostics(const LexedFile& lexed, size_t first_region) {
