@@ -25,10 +25,14 @@ const rule::Rule& TypingIntLiteralForFloatRule();  // typing/int-literal-for-flo
 const rule::Rule& TypingNonConstantGlobalInitializerRule();  // typing/non-constant-global-initializer
 const rule::Rule& TypingScalarToVectorRule();  // typing/scalar-to-vector
 const rule::Rule& WebglBlockLayoutRule();  // webgl/block-layout
+const rule::Rule& WebglCallDepthRule();  // webgl/call-depth
 const rule::Rule& WebglExpressionComplexityRule();  // webgl/expression-complexity
+const rule::Rule& WebglExtensionPlacementRule();  // webgl/extension-placement
 const rule::Rule& WebglForbiddenOperatorRule();  // webgl/forbidden-operator
+const rule::Rule& WebglFragmentOutputLocationsRule();  // webgl/fragment-output-locations
 const rule::Rule& WebglFragDataAndColorRule();  // webgl/frag-data-and-color
 const rule::Rule& WebglIndexExpressionRule();  // webgl/index-expression
+const rule::Rule& WebglInterpolationQualifierRule();  // webgl/interpolation-qualifier
 const rule::Rule& WebglInvariantRule();  // webgl/invariant
 const rule::Rule& WebglLoopFormRule();  // webgl/loop-form
 const rule::Rule& WebglLoopIndexWriteRule();  // webgl/loop-index-write
@@ -36,6 +40,8 @@ const rule::Rule& WebglRecursionRule();  // webgl/recursion
 const rule::Rule& WebglReservedNameRule();  // webgl/reserved-name
 const rule::Rule& WebglStructInSignatureRule();  // webgl/struct-in-signature
 const rule::Rule& WebglStructNestingRule();  // webgl/struct-nesting
+const rule::Rule& WebglUndefinedFunctionRule();  // webgl/undefined-function
+const rule::Rule& WebglVariableSizeRule();  // webgl/variable-size
 const rule::Rule& WebglVersionRule();  // webgl/version
 const rule::Rule& Webgl2ExtensionsRule();  // webgl2/extensions
 const rule::Rule& Webgl2FragOutputsRule();  // webgl2/frag-outputs

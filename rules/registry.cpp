@@ -25,10 +25,14 @@ std::vector<const rule::Rule*> BuildRegistry() {
       &TypingNonConstantGlobalInitializerRule(),  // typing/non-constant-global-initializer
       &TypingScalarToVectorRule(),  // typing/scalar-to-vector
       &WebglBlockLayoutRule(),  // webgl/block-layout
+      &WebglCallDepthRule(),  // webgl/call-depth
       &WebglExpressionComplexityRule(),  // webgl/expression-complexity
+      &WebglExtensionPlacementRule(),  // webgl/extension-placement
       &WebglForbiddenOperatorRule(),  // webgl/forbidden-operator
+      &WebglFragmentOutputLocationsRule(),  // webgl/fragment-output-locations
       &WebglFragDataAndColorRule(),  // webgl/frag-data-and-color
       &WebglIndexExpressionRule(),  // webgl/index-expression
+      &WebglInterpolationQualifierRule(),  // webgl/interpolation-qualifier
       &WebglInvariantRule(),  // webgl/invariant
       &WebglLoopFormRule(),  // webgl/loop-form
       &WebglLoopIndexWriteRule(),  // webgl/loop-index-write
@@ -36,6 +40,8 @@ std::vector<const rule::Rule*> BuildRegistry() {
       &WebglReservedNameRule(),  // webgl/reserved-name
       &WebglStructInSignatureRule(),  // webgl/struct-in-signature
       &WebglStructNestingRule(),  // webgl/struct-nesting
+      &WebglUndefinedFunctionRule(),  // webgl/undefined-function
+      &WebglVariableSizeRule(),  // webgl/variable-size
       &WebglVersionRule(),  // webgl/version
       &Webgl2ExtensionsRule(),  // webgl2/extensions
       &Webgl2FragOutputsRule(),  // webgl2/frag-outputs

@@ -45,6 +45,9 @@ bool IsConstantExpression(const glsl::SemanticModel& model, const glsl::Expr& ex
       }
       case glsl::NodeKind::kBinaryExpr: {
         const auto* binary = static_cast<const glsl::BinaryExpr*>(node);
+        // GLSL ES 3.00 section 4.3.3 leaves the sequence operator out of constant
+        // expressions, and browsers follow it there; GLSL ES 1.00 code keeps it.
+        if (binary->op == glsl::BinaryOp::kComma && rules.version >= 300) return false;
         pending.push_back(binary->lhs);
         pending.push_back(binary->rhs);
         break;

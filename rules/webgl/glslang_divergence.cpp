@@ -1,7 +1,13 @@
 #include "rules/webgl/glslang_divergence.h"
 
+#include <algorithm>
+#include <array>
+#include <map>
+#include <regex>
+#include <set>
 #include <string>
 
+#include "glsl/sema/builtins.h"
 #include "glsl/syntax/visit.h"
 #include "rules/webgl/constant_expression.h"
 
@@ -64,7 +70,9 @@ bool AlignGlobalInitializer(const BrowserContext& context, Diagnostic& diagnosti
 // `const` initialisers and array sizes that are constant expressions glslang cannot
 // fold (`vec4(0.5).x`, `matrixCompMult(m, m)`, `(2, 3)`): browsers fold them.
 bool AlignConstantExpression(const BrowserContext& context, Diagnostic& diagnostic) {
-  const bool initializer = diagnostic.message.find("non-constant initializer") != std::string::npos;
+  const bool initializer =
+      diagnostic.message.find("non-constant initializer") != std::string::npos ||
+      diagnostic.message.find("const initializers must be constant") != std::string::npos;
   const bool array_size =
       diagnostic.message.find("array size must be a constant") != std::string::npos;
   if (!initializer && !array_size) return false;
@@ -125,6 +133,129 @@ bool AlignContinuedComment(const BrowserContext& context, Diagnostic& diagnostic
   return false;
 }
 
+// Names of GLSL ES 3.00 built-ins that browsers still let a shader declare as its own
+// function: ANGLE counts a name as a built-in only when none of its overloads needs an
+// extension the shader did not enable (OES_EGL_image_external_essl3, EXT_YUV_target and
+// the like). Measured in Chromium 156 for every built-in name, no extension enabled.
+constexpr std::array<std::string_view, 6> kEs3DeclarableBuiltins = {
+    "mix", "texelFetch", "texture", "textureGrad", "textureLod", "textureSize"};
+
+bool SameParameters(const glsl::BuiltinFunction& builtin, const glsl::Symbol& function) {
+  if (builtin.params.size() != function.parameters.size()) return false;
+  for (size_t i = 0; i < builtin.params.size(); ++i) {
+    if (!(builtin.params[i].type == function.parameters[i])) return false;
+  }
+  return true;
+}
+
+// A user function with a built-in's name that the browser accepts: in GLSL ES 1.00 an
+// overload with parameters no built-in of that name has (the same ones redefine it, an
+// error); in GLSL ES 3.00 a name that is no built-in in this stage or is listed above.
+bool BrowserAcceptsName(const BrowserContext& context, const glsl::Symbol& function) {
+  const glsl::ShaderStage stage =
+      context.vertex ? glsl::ShaderStage::kVertex : glsl::ShaderStage::kFragment;
+  const int version = context.version >= 300 ? 300 : 100;
+  bool builtin_here = false;
+  for (const glsl::BuiltinFunction* builtin : glsl::BuiltinOverloadList(function.name)) {
+    if (!builtin->AvailableIn(version, stage) || !builtin->extension.empty()) continue;
+    builtin_here = true;
+    if (version < 300 && SameParameters(*builtin, function)) return false;
+  }
+  if (!builtin_here) return false;  // glslang has no quarrel with the name
+  return version < 300 || std::find(kEs3DeclarableBuiltins.begin(), kEs3DeclarableBuiltins.end(),
+                                    function.name) != kEs3DeclarableBuiltins.end();
+}
+
+// A name of `name`'s length that `text` does not contain: its last characters
+// replaced by digits (no `__`, no `gl_` prefix: both reserved), or "" if none is free.
+std::string SameLengthAlias(const std::string& text, const std::string& name) {
+  for (size_t tail = 1; tail <= std::min<size_t>(name.size() - 1, 3); ++tail) {
+    for (int n = 0; n < 1000; ++n) {
+      std::string digits = std::to_string(n);
+      if (digits.size() > tail) break;
+      digits.insert(0, tail - digits.size(), '0');
+      const std::string alias = name.substr(0, name.size() - tail) + digits;
+      if (text.find(alias) == std::string::npos) return alias;
+    }
+  }
+  return {};
+}
+
+// Renames, in `text` (the user's file), every function browsers let the shader declare
+// under a built-in's name and every call of it, to one alias per name of the same
+// length, so that offsets stay put.
+void RenameDeclarableBuiltins(const BrowserContext& context, std::string& text) {
+  if (context.model == nullptr || context.tree == nullptr || context.front_end_errors) return;
+  const glsl::SemanticModel& model = *context.model;
+  std::map<uint32_t, std::string> aliases;  // function symbol -> its alias
+  for (uint32_t i = 0; i < model.symbols.size(); ++i) {
+    const glsl::Symbol& symbol = model.symbols[i];
+    if (symbol.kind != glsl::SymbolKind::kFunction || symbol.predeclared ||
+        !BrowserAcceptsName(context, symbol)) {
+      continue;
+    }
+    std::string alias;
+    for (const auto& [other, taken] : aliases) {
+      if (model.symbols[other].name == symbol.name) alias = taken;  // overloads share it
+    }
+    if (alias.empty()) alias = SameLengthAlias(text, symbol.name);
+    if (!alias.empty()) aliases[i] = alias;
+  }
+  if (aliases.empty()) return;
+  auto rename = [&](const glsl::Name& name, uint32_t symbol) {
+    const auto alias = aliases.find(symbol);
+    if (alias == aliases.end() || name.range.file != context.file->Id() ||
+        name.range.end > text.size() ||
+        text.compare(name.range.begin, name.text.size(), name.text) != 0) {
+      return;  // spelled inside a macro: glslang keeps its complaint
+    }
+    text.replace(name.range.begin, alias->second.size(), alias->second);
+  };
+  glsl::VisitPreorder(*context.tree, [&](const glsl::Node& node, uint32_t) {
+    if (const auto* function = node.As<glsl::FunctionDeclaration>()) {
+      rename(function->name, model.SymbolAt(function->id));
+    } else if (const auto* call = node.As<glsl::CallExpr>();
+               call != nullptr && call->call_kind == glsl::CallKind::kFunction) {
+      rename(call->callee, model.SymbolAt(call->id));
+    }
+    return true;
+  });
+}
+
+// `#define` lines that browsers (ANGLE's preprocessor) accept and glslang's does not,
+// written as glslang understands them, on the same line: a body right after an
+// object-like macro's name (`#define EPS.001`: glslang drops the macro) gets a space,
+// a trailing comma in a parameter list (`#define f(a, b,)`) goes.
+std::string RepairDefines(const std::string& text) {
+  static const std::regex kDefine(R"(^([ \t]*#[ \t]*define[ \t]+[A-Za-z_][A-Za-z0-9_]*)(.*)$)");
+  std::string out;
+  out.reserve(text.size() + 16);
+  size_t begin = 0;
+  while (begin <= text.size()) {
+    size_t end = text.find('\n', begin);
+    if (end == std::string::npos) end = text.size();
+    std::string line = text.substr(begin, end - begin);
+    std::smatch match;
+    if (line.find("define") != std::string::npos && std::regex_match(line, match, kDefine)) {
+      std::string rest = match[2].str();
+      if (!rest.empty() && rest[0] == '(') {
+        const size_t close = rest.find(')');
+        const size_t last =
+            close == std::string::npos ? close : rest.find_last_not_of(" \t", close - 1);
+        if (last != std::string::npos && last > 0 && rest[last] == ',') rest[last] = ' ';
+      } else if (!rest.empty() && rest[0] != ' ' && rest[0] != '\t' && rest[0] != '\r') {
+        rest.insert(0, " ");
+      }
+      line = match[1].str() + rest;
+    }
+    out += line;
+    if (end == text.size()) break;
+    out += '\n';
+    begin = end + 1;
+  }
+  return out;
+}
+
 }  // namespace
 
 void AlignWithBrowser(const BrowserContext& context, Diagnostic& diagnostic) {
@@ -135,6 +266,14 @@ void AlignWithBrowser(const BrowserContext& context, Diagnostic& diagnostic) {
   if (context.model == nullptr) return;
   if (AlignGlobalInitializer(context, diagnostic)) return;
   AlignConstantExpression(context, diagnostic);
+}
+
+std::string TextForGlslang(const BrowserContext& context) {
+  if (context.file == nullptr) return {};
+  std::string text(context.file->Text());
+  RenameDeclarableBuiltins(context, text);
+  text = RepairDefines(text);
+  return text == context.file->Text() ? std::string() : text;
 }
 
 }  // namespace shaderport::rules

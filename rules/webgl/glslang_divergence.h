@@ -3,6 +3,8 @@
 // docs/browser-divergence.md lists every case with the browser behaviour it copies.
 #pragma once
 
+#include <string>
+
 #include "diag/diagnostic.h"
 #include "glsl/lex/lexer.h"
 #include "glsl/lex/preprocessor.h"
@@ -26,5 +28,13 @@ struct BrowserContext {
 
 // Rewrites one glslang diagnostic in place when the browser disagrees with it.
 void AlignWithBrowser(const BrowserContext& context, Diagnostic& diagnostic);
+
+// The user's text for glslang where glslang and browsers differ on purpose, on the
+// same lines (glslang's messages still map to the user's lines): functions that browsers
+// let a shader declare under a built-in's name (GLSL ES 1.00: a new overload; GLSL ES
+// 3.00: `texture` and a few more) and their calls get a same-length name glslang does
+// not know, and `#define` lines that only browsers read are written as glslang reads
+// them. Empty when the text needs no change.
+std::string TextForGlslang(const BrowserContext& context);
 
 }  // namespace shaderport::rules

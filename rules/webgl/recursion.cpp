@@ -9,44 +9,14 @@
 #include <string>
 #include <vector>
 
-#include "glsl/syntax/visit.h"
 #include "rules/all_rules.h"
+#include "rules/webgl/call_graph.h"
 #include "rules/webgl/webgl_support.h"
 
 namespace shaderport::rules {
 namespace {
 
 constexpr std::string_view kId = "webgl/recursion";
-
-struct Call {
-  uint32_t callee = glsl::kNoSymbol;
-  const glsl::CallExpr* site = nullptr;
-};
-
-using CallGraph = std::map<uint32_t, std::vector<Call>>;
-
-CallGraph BuildCallGraph(const rule::RuleContext& context) {
-  CallGraph graph;
-  const glsl::SemanticModel& model = context.Model();
-  for (const glsl::Node* declaration : context.Tree().Root()->declarations) {
-    const auto* function = declaration->As<glsl::FunctionDeclaration>();
-    if (function == nullptr || function->body == nullptr) continue;
-    const uint32_t caller = model.SymbolAt(function->id);
-    if (caller == glsl::kNoSymbol) continue;
-    std::vector<Call>& calls = graph[caller];
-    glsl::ForEachNodeOf(context.Tree(), *function->body, {glsl::NodeKind::kCallExpr},
-                        [&](const glsl::Node& node) {
-                          const auto* call = node.As<glsl::CallExpr>();
-                          if (call->call_kind != glsl::CallKind::kFunction) return;
-                          const uint32_t callee = model.SymbolAt(call->id);
-                          if (callee != glsl::kNoSymbol &&
-                              model.symbols[callee].kind == glsl::SymbolKind::kFunction) {
-                            calls.push_back({callee, call});
-                          }
-                        });
-  }
-  return graph;
-}
 
 class RecursionRule final : public rule::Rule {
  public:
@@ -58,7 +28,7 @@ class RecursionRule final : public rule::Rule {
   }
 
   void Run(rule::RuleContext& context) const override {
-    const CallGraph graph = BuildCallGraph(context);
+    const webgl::CallGraph graph = webgl::BuildCallGraph(context);
     enum class Color { kWhite, kGray, kBlack };
     std::map<uint32_t, Color> color;
     const auto& symbols = context.Model().symbols;
@@ -75,14 +45,14 @@ class RecursionRule final : public rule::Rule {
       while (!stack.empty()) {
         Frame& frame = stack.back();
         const auto found = graph.find(frame.function);
-        const std::vector<Call>* calls = found == graph.end() ? nullptr : &found->second;
+        const std::vector<webgl::Call>* calls = found == graph.end() ? nullptr : &found->second;
         if (calls == nullptr || frame.next >= calls->size()) {
           color[frame.function] = Color::kBlack;
           stack.pop_back();
           path.pop_back();
           continue;
         }
-        const Call call = (*calls)[frame.next++];
+        const webgl::Call call = (*calls)[frame.next++];
         Color& callee_color = color[call.callee];
         if (callee_color == Color::kGray) {
           std::string chain;

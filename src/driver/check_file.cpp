@@ -189,10 +189,12 @@ FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceMana
   if (!report.diagnostics.empty()) return report;
 
   validate::ValidationRequest request = ComposeRequest(job, options, kind, file, sources);
+  const std::string glslang_text = TextForGlslang(file, front, webgl);
   for (validate::ShaderPart& part : request.parts) {
     if (part.kind == validate::PartKind::kUser && part.file == file.Id()) {
       part.source = &file;
       part.lexed = &front.lexed;
+      if (!glslang_text.empty()) part.text = glslang_text;
     }
   }
   validate::ValidationResult result = validate::ValidateWithGlslang(request);

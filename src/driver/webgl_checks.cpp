@@ -56,6 +56,7 @@ DiagnosticList RunWebglChecks(const SourceFile& file, const FrontEndResult& fron
       front.preprocessed.version.present ? front.preprocessed.version.number : 0;
   port_settings.target =
       settings.target == Target::kWebGL1 ? rule::WebglTarget::kWebGL1 : rule::WebglTarget::kWebGL2;
+  port_settings.behind_site_header = settings.shadertoy;
   for (const rule::Rule* check : rules::CheckRules()) {
     rule::RuleContext context(file, front.lexed, front.preprocessed, front.parsed.tree,
                               *front.model, port_settings);
@@ -73,6 +74,13 @@ void AlignGlslangWithBrowser(const SourceFile& file, const FrontEndResult& front
   for (Diagnostic& diagnostic : glslang_diagnostics) {
     rules::AlignWithBrowser(context, diagnostic);
   }
+}
+
+std::string TextForGlslang(const SourceFile& file, const FrontEndResult& front,
+                           const WebglCheckSettings& settings) {
+  rules::BrowserContext context = ToBrowserContext(front, settings);
+  context.file = &file;
+  return rules::TextForGlslang(context);
 }
 
 }  // namespace shaderport::driver

@@ -3,6 +3,8 @@
 // docs/browser-divergence.md lists every place where the two disagree.
 #pragma once
 
+#include <string>
+
 #include "diag/diagnostic.h"
 #include "driver/dialect.h"
 #include "driver/front_end.h"
@@ -29,5 +31,10 @@ DiagnosticList RunWebglChecks(const SourceFile& file, const FrontEndResult& fron
 void AlignGlslangWithBrowser(const SourceFile& file, const FrontEndResult& front,
                              const WebglCheckSettings& settings,
                              DiagnosticList& glslang_diagnostics);
+
+// The file's text as glslang should see it where glslang and browsers differ on
+// purpose (rules::TextForGlslang); empty when glslang can compile the file as it is.
+std::string TextForGlslang(const SourceFile& file, const FrontEndResult& front,
+                           const WebglCheckSettings& settings);
 
 }  // namespace shaderport::driver

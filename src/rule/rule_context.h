@@ -46,6 +46,9 @@ struct PortSettings {
   int written_version = 0;
   // The code is one of the harness's off-screen buffer passes (a ShaderToy Buffer tab).
   bool buffer_pass = false;
+  // ShaderToy code as the site compiles it: after the site's header (#version,
+  // precision, uniforms and its own `out vec4`), which the rules do not see.
+  bool behind_site_header = false;
 };
 
 // A read-only view of the analysed shader plus a sink for findings.

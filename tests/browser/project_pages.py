@@ -42,11 +42,10 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "tools", "browser"))
+import cdp_pipe  # noqa: E402
 import compare_pictures  # noqa: E402
 import pngio  # noqa: E402
 
-sys.path.insert(0, HERE)
-import cdp_pipe  # noqa: E402
 
 DATA = os.path.join(HERE, "project_pages")
 SIZE = 64

@@ -306,10 +306,11 @@ Type Analyzer::FunctionCallType(const CallExpr& call, const std::vector<Type>& a
         }
       }
     }
-    return Type::Unknown();
-  }
-  if (uint32_t symbol = Lookup(name);
-      symbol != kNoSymbol && model_.symbols[symbol].kind == SymbolKind::kStruct) {
+    // A user overload of a built-in name (GLSL ES 1.00 allows one, and browsers let
+    // GLSL ES 3.00 code declare `texture` and a few more) leaves the built-ins callable.
+    if (BuiltinOverloadList(name).empty()) return Type::Unknown();
+  } else if (uint32_t symbol = Lookup(name);
+             symbol != kNoSymbol && model_.symbols[symbol].kind == SymbolKind::kStruct) {
     Refer(call.id, symbol);  // a struct constructor the parser took for a call
     return model_.symbols[symbol].type;
   }

@@ -1,0 +1,5 @@
+// ... a warning in GLSL ES 1.00.
+precision mediump float;
+uniform float u;
+float g = u;
+void main() { gl_FragColor = vec4(g); }

@@ -1,0 +1,5 @@
+#version 300 es
+precision highp float;
+out vec4 o;
+float g[16383];
+void main() { g[0] = 1.0; o = vec4(g[0]); }

@@ -1,0 +1,132 @@
+"""Chromium's compile verdict for shader stages: one headless Chromium (ANGLE on
+SwiftShader) kept open over the DevTools pipe, compiling batches of stages in a WebGL1
+or WebGL2 context, exactly as a page's gl.compileShader does. No extension is enabled
+(a page has to ask for one with getExtension, and the conformance verdicts were taken
+that way too). Python standard library only.
+"""
+import json
+import os
+import shutil
+import tempfile
+
+import cdp_pipe
+
+# Compiles every job of the batch in a fresh context of its version (contexts are
+# cached per version; a lost context is made again) and returns [ok, log] per job.
+_COMPILE_SCRIPT = r"""
+(function(jobs) {
+  const contexts = window.__spContexts || (window.__spContexts = {});
+  function context(version) {
+    let gl = contexts[version];
+    if (!gl || gl.isContextLost()) {
+      const canvas = document.createElement("canvas");
+      canvas.width = canvas.height = 1;
+      gl = canvas.getContext(version === 2 ? "webgl2" : "webgl", {preserveDrawingBuffer: false});
+      contexts[version] = gl;
+    }
+    return gl;
+  }
+  const out = [];
+  for (const job of jobs) {
+    const gl = context(job.context);
+    if (!gl) { out.push([null, "no context"]); continue; }
+    const shader = gl.createShader(job.stage === "vertex" ? gl.VERTEX_SHADER : gl.FRAGMENT_SHADER);
+    if (!shader) { out.push([null, "createShader failed: context lost"]); continue; }
+    gl.shaderSource(shader, job.source);
+    gl.compileShader(shader);
+    const ok = gl.getShaderParameter(shader, gl.COMPILE_STATUS);
+    out.push([ok === true, gl.getShaderInfoLog(shader) || ""]);
+    gl.deleteShader(shader);
+  }
+  return out;
+})
+"""
+
+
+class BrowserCompiler:
+    """Compiles stages in headless Chromium. A job is {source, stage, context}:
+    stage "vertex" or "fragment", context 1 (WebGL1) or 2 (WebGL2)."""
+
+    def __init__(self, chromium=None, batch=200):
+        self.chromium = chromium or find_chromium()
+        self.batch = batch
+        self.work = tempfile.mkdtemp(prefix="sp-browser-compile-")
+        self.browser = None
+        self.version = None
+
+    def _start(self):
+        self.browser = cdp_pipe.Browser(self.chromium, self.work)
+        self.browser.open("about:blank")
+        self.version = self.browser.evaluate("navigator.userAgent")
+
+    def _restart(self):
+        if self.browser:
+            try:
+                self.browser.close()
+            except OSError:
+                pass
+        self.browser = None
+        self._start()
+
+    def _run(self, jobs):
+        expression = "%s(%s)" % (_COMPILE_SCRIPT, json.dumps(jobs))
+        return self.browser.evaluate(expression)
+
+    def compile(self, jobs):
+        """[(ok, log)] in job order; ok is None when Chromium could not answer."""
+        if self.browser is None:
+            self._start()
+        results = []
+        for start in range(0, len(jobs), self.batch):
+            part = [{"source": j["source"], "stage": j["stage"], "context": j["context"]}
+                    for j in jobs[start:start + self.batch]]
+            results.extend(self._compile_part(part))
+        return [(r[0], r[1]) for r in results]
+
+    def _compile_part(self, part):
+        try:
+            answer = self._run(part)
+            if answer is not None and len(answer) == len(part) and \
+                    all(r[0] is not None for r in answer):
+                return answer
+        except (TimeoutError, EOFError, RuntimeError):
+            self._restart()
+        if len(part) == 1:  # one job that kills the page or the context on its own
+            try:
+                answer = self._run(part)
+                if answer and answer[0][0] is not None:
+                    return answer
+            except (TimeoutError, EOFError, RuntimeError) as error:
+                self._restart()
+                return [[None, "chromium failed: %s" % error]]
+            return [[None, "chromium failed: context lost"]]
+        half = len(part) // 2
+        return self._compile_part(part[:half]) + self._compile_part(part[half:])
+
+    def close(self):
+        if self.browser:
+            self.browser.close()
+            self.browser = None
+        shutil.rmtree(self.work, ignore_errors=True)
+
+
+def find_chromium(explicit=None):
+    for candidate in [explicit, os.environ.get("CHROMIUM"), "chromium", "chromium-browser"]:
+        if candidate and shutil.which(candidate):
+            return shutil.which(candidate)
+    raise SystemExit("chromium not found: install the Debian package `chromium` or pass --chromium")
+
+
+if __name__ == "__main__":  # compile files given on the command line: STAGE CONTEXT FILE...
+    import sys
+    stage, context = sys.argv[1], int(sys.argv[2])
+    compiler = BrowserCompiler()
+    try:
+        jobs = [{"source": open(p, encoding="utf-8", errors="surrogateescape").read(),
+                 "stage": stage, "context": context} for p in sys.argv[3:]]
+        for path, (ok, log) in zip(sys.argv[3:], compiler.compile(jobs)):
+            print("%s: %s %s" % (path, {True: "ok", False: "error", None: "failed"}[ok],
+                                 log.strip()))
+        print("chromium:", compiler.version)
+    finally:
+        compiler.close()
