@@ -24,10 +24,12 @@ const rule::Rule& TypingIntExpressionForFloatRule();  // typing/int-expression-f
 const rule::Rule& TypingIntLiteralForFloatRule();  // typing/int-literal-for-float
 const rule::Rule& TypingNonConstantGlobalInitializerRule();  // typing/non-constant-global-initializer
 const rule::Rule& TypingScalarToVectorRule();  // typing/scalar-to-vector
+const rule::Rule& WebglAttributeLocationRule();  // webgl/attribute-location
 const rule::Rule& WebglBlockLayoutRule();  // webgl/block-layout
 const rule::Rule& WebglCallDepthRule();  // webgl/call-depth
 const rule::Rule& WebglExpressionComplexityRule();  // webgl/expression-complexity
 const rule::Rule& WebglExtensionPlacementRule();  // webgl/extension-placement
+const rule::Rule& WebglExtensionSupportRule();  // webgl/extension-support
 const rule::Rule& WebglForbiddenOperatorRule();  // webgl/forbidden-operator
 const rule::Rule& WebglFragmentOutputLocationsRule();  // webgl/fragment-output-locations
 const rule::Rule& WebglFragDataAndColorRule();  // webgl/frag-data-and-color
@@ -36,10 +38,12 @@ const rule::Rule& WebglInterpolationQualifierRule();  // webgl/interpolation-qua
 const rule::Rule& WebglInvariantRule();  // webgl/invariant
 const rule::Rule& WebglLoopFormRule();  // webgl/loop-form
 const rule::Rule& WebglLoopIndexWriteRule();  // webgl/loop-index-write
+const rule::Rule& WebglMissingMainRule();  // webgl/missing-main
 const rule::Rule& WebglRecursionRule();  // webgl/recursion
 const rule::Rule& WebglReservedNameRule();  // webgl/reserved-name
 const rule::Rule& WebglStructInSignatureRule();  // webgl/struct-in-signature
 const rule::Rule& WebglStructNestingRule();  // webgl/struct-nesting
+const rule::Rule& WebglSwitchCaseTypeRule();  // webgl/switch-case-type
 const rule::Rule& WebglUndefinedFunctionRule();  // webgl/undefined-function
 const rule::Rule& WebglVariableSizeRule();  // webgl/variable-size
 const rule::Rule& WebglVersionRule();  // webgl/version

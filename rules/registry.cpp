@@ -24,10 +24,12 @@ std::vector<const rule::Rule*> BuildRegistry() {
       &TypingIntLiteralForFloatRule(),  // typing/int-literal-for-float
       &TypingNonConstantGlobalInitializerRule(),  // typing/non-constant-global-initializer
       &TypingScalarToVectorRule(),  // typing/scalar-to-vector
+      &WebglAttributeLocationRule(),  // webgl/attribute-location
       &WebglBlockLayoutRule(),  // webgl/block-layout
       &WebglCallDepthRule(),  // webgl/call-depth
       &WebglExpressionComplexityRule(),  // webgl/expression-complexity
       &WebglExtensionPlacementRule(),  // webgl/extension-placement
+      &WebglExtensionSupportRule(),  // webgl/extension-support
       &WebglForbiddenOperatorRule(),  // webgl/forbidden-operator
       &WebglFragmentOutputLocationsRule(),  // webgl/fragment-output-locations
       &WebglFragDataAndColorRule(),  // webgl/frag-data-and-color
@@ -36,10 +38,12 @@ std::vector<const rule::Rule*> BuildRegistry() {
       &WebglInvariantRule(),  // webgl/invariant
       &WebglLoopFormRule(),  // webgl/loop-form
       &WebglLoopIndexWriteRule(),  // webgl/loop-index-write
+      &WebglMissingMainRule(),  // webgl/missing-main
       &WebglRecursionRule(),  // webgl/recursion
       &WebglReservedNameRule(),  // webgl/reserved-name
       &WebglStructInSignatureRule(),  // webgl/struct-in-signature
       &WebglStructNestingRule(),  // webgl/struct-nesting
+      &WebglSwitchCaseTypeRule(),  // webgl/switch-case-type
       &WebglUndefinedFunctionRule(),  // webgl/undefined-function
       &WebglVariableSizeRule(),  // webgl/variable-size
       &WebglVersionRule(),  // webgl/version

@@ -26,23 +26,6 @@ struct Output {
   int64_t slots;
 };
 
-std::optional<int64_t> LocationOf(const glsl::QualifierList& qualifiers) {
-  for (const glsl::Qualifier& qualifier : qualifiers.items) {
-    if (qualifier.kind != glsl::QualifierKind::kLayout) continue;
-    for (const glsl::LayoutId& id : qualifier.layout_ids) {
-      if (id.name.text != "location") continue;
-      const auto* literal = webgl::Unparenthesized(id.value) == nullptr
-                                ? nullptr
-                                : webgl::Unparenthesized(id.value)->As<glsl::LiteralExpr>();
-      if (literal != nullptr && !literal->int_overflow &&
-          literal->literal_kind == glsl::LiteralKind::kInt) {
-        return static_cast<int64_t>(literal->int_value);
-      }
-    }
-  }
-  return std::nullopt;
-}
-
 std::vector<Output> Outputs(const rule::RuleContext& context) {
   std::vector<Output> outputs;
   for (const glsl::Node* node : context.Tree().Root()->declarations) {
@@ -50,7 +33,7 @@ std::vector<Output> Outputs(const rule::RuleContext& context) {
     if (declaration == nullptr || !declaration->qualifiers.Has(glsl::QualifierKind::kOut)) {
       continue;
     }
-    const std::optional<int64_t> location = LocationOf(declaration->qualifiers);
+    const std::optional<int64_t> location = webgl::LayoutLocation(declaration->qualifiers);
     for (const glsl::Declarator* declarator : declaration->declarators) {
       const glsl::Symbol* symbol = webgl::SymbolOf(context, *declarator);
       const int64_t slots =

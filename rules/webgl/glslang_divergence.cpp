@@ -6,10 +6,13 @@
 #include <regex>
 #include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "glsl/sema/builtins.h"
 #include "glsl/syntax/visit.h"
 #include "rules/webgl/constant_expression.h"
+#include "rules/webgl/webgl_support.h"
 
 namespace shaderport::rules {
 namespace {
@@ -40,6 +43,14 @@ const glsl::Declarator* DeclaratorOnLine(const BrowserContext& context,
     return false;
   });
   return found;
+}
+
+bool InitializerFitsDeclaration(const BrowserContext& context, const glsl::Declarator& declarator) {
+  const uint32_t symbol = context.model->SymbolAt(declarator.id);
+  if (symbol == glsl::kNoSymbol) return false;
+  const glsl::Type& declared = context.model->symbols[symbol].type;
+  const glsl::Type& value = context.model->TypeOf(declarator.initializer->id);
+  return value.IsUnknown() || value == declared;
 }
 
 bool IsConstDeclarator(const BrowserContext& context, const glsl::Declarator& declarator) {
@@ -82,8 +93,11 @@ bool AlignConstantExpression(const BrowserContext& context, Diagnostic& diagnost
   const webgl::ConstantRules rules{context.version, nullptr};
   bool constant = true;
   if (initializer) {
+    // The value must also have the declared type: `const vec4 c = (0.0, 1.0);` is a
+    // float, which browsers reject ("dimension mismatch").
     constant = declarator->initializer != nullptr && IsConstDeclarator(context, *declarator) &&
-               webgl::IsConstantExpression(*context.model, *declarator->initializer, rules);
+               webgl::IsConstantExpression(*context.model, *declarator->initializer, rules) &&
+               InitializerFitsDeclaration(context, *declarator);
   } else {
     for (const glsl::ArrayDimension& dimension : declarator->array) {
       constant = constant && dimension.size != nullptr &&
@@ -96,6 +110,40 @@ bool AlignConstantExpression(const BrowserContext& context, Diagnostic& diagnost
          "not an error in browsers: this is a constant expression (GLSL ES section 4.3.3) that "
          "browsers fold; glslang cannot fold it");
   return true;
+}
+
+// glslang errors on what browsers only warn about or do not check at all.
+bool AlignLenientMessages(const BrowserContext& context, Diagnostic& diagnostic) {
+  const std::string& message = diagnostic.message;
+  auto has = [&](std::string_view text) { return message.find(text) != std::string::npos; };
+  if (has("names containing consecutive underscores are reserved") && has("#define")) {
+    Demote(diagnostic, Severity::kWarning,
+           "browsers only warn about a macro name with two consecutive underscores ('macro "
+           "name with a double underscore is reserved'); other names with them are errors "
+           "(webgl/reserved-name)");
+    return true;
+  }
+  if (has("must have the same parameter precision qualifiers")) {
+    Demote(diagnostic, Severity::kNote,
+           "not an error in browsers: a prototype and the definition may give a parameter "
+           "different precisions (say, when a 'precision' statement between them changed the "
+           "default); glslang rejects it");
+    return true;
+  }
+  if (context.version < 300 &&
+      (has("numeric literal too big") || has("hexadecimal literal too big"))) {
+    Demote(diagnostic, Severity::kWarning,
+           "browsers only warn about an integer literal too big for 32 bits in GLSL ES 1.00 "
+           "('Integer overflow'); it is an error in GLSL ES 3.00");
+    return true;
+  }
+  if (context.vertex && has("overlapping use of location")) {
+    Demote(diagnostic, Severity::kNote,
+           "not an error in browsers: vertex inputs may share a location when a stage is "
+           "compiled (aliasing is only checked when a program is linked)");
+    return true;
+  }
+  return false;
 }
 
 // glslang crashing is glslang's bug; when our own front end and the WebGL rules
@@ -222,6 +270,159 @@ void RenameDeclarableBuiltins(const BrowserContext& context, std::string& text) 
   });
 }
 
+// Words glslang reserves that browsers let a shader use as names (measured in Chromium
+// 156 against glslang 12, declaring and reading `float WORD`), by GLSL ES version.
+constexpr std::array<std::string_view, 9> kEs1Names = {"active",
+                                                       "case",
+                                                       "common",
+                                                       "filter",
+                                                       "isamplerCubeArray",
+                                                       "partition",
+                                                       "samplerCubeArray",
+                                                       "samplerCubeArrayShadow",
+                                                       "usamplerCubeArray"};
+constexpr std::array<std::string_view, 26> kEs3Names = {"devicecoherent",
+                                                        "dmat2",
+                                                        "dmat2x2",
+                                                        "dmat2x3",
+                                                        "dmat2x4",
+                                                        "dmat3",
+                                                        "dmat3x2",
+                                                        "dmat3x3",
+                                                        "dmat3x4",
+                                                        "dmat4",
+                                                        "dmat4x2",
+                                                        "dmat4x3",
+                                                        "dmat4x4",
+                                                        "iimage2DRect",
+                                                        "image2DRect",
+                                                        "isamplerCubeArray",
+                                                        "nonprivate",
+                                                        "queuefamilycoherent",
+                                                        "samplerCubeArray",
+                                                        "samplerCubeArrayShadow",
+                                                        "shadercallcoherent",
+                                                        "shared",
+                                                        "subgroupcoherent",
+                                                        "uimage2DRect",
+                                                        "usamplerCubeArray",
+                                                        "workgroupcoherent"};
+
+bool IsWordChar(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+}
+
+// Replaces every whole word `word` of `text` by `with` (of the same length).
+void ReplaceWord(std::string& text, std::string_view word, std::string_view with) {
+  for (size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1)) {
+    const bool starts = at == 0 || !IsWordChar(text[at - 1]);
+    const bool ends = at + word.size() >= text.size() || !IsWordChar(text[at + word.size()]);
+    if (starts && ends) text.replace(at, word.size(), with);
+  }
+}
+
+// Names glslang reserves and browsers do not: renamed everywhere in the file (comments
+// and macro bodies too, which keeps every use consistent) at the same length.
+void RenameGlslangOnlyKeywords(const BrowserContext& context, std::string& text) {
+  auto rename_all = [&](auto& words) {
+    for (std::string_view word : words) {
+      if (text.find(word) == std::string::npos) continue;
+      const std::string alias = SameLengthAlias(text, std::string(word));
+      if (!alias.empty()) ReplaceWord(text, word, alias);
+    }
+  };
+  if (context.version >= 300) {
+    rename_all(kEs3Names);
+  } else {
+    rename_all(kEs1Names);
+  }
+}
+
+// `#extension` lines for extensions the context does not offer: glslang would enable
+// what the browser leaves out (dFdx in GLSL ES 1.00 code under WebGL 2, say).
+void HideUnofferedExtensions(const BrowserContext& context, std::string& text) {
+  if (context.preprocessed == nullptr) return;
+  for (const glsl::ExtensionDirective& directive : context.preprocessed->extensions) {
+    if (directive.name == "all" || directive.range.file != context.file->Id() ||
+        directive.range.end > text.size() ||
+        webgl::ContextOffersExtension(directive.name, context.webgl2)) {
+      continue;
+    }
+    for (uint32_t i = directive.range.begin; i < directive.range.end; ++i) {
+      if (text[i] != '\n' && text[i] != '\r') text[i] = ' ';
+    }
+  }
+}
+
+// `__FILE__` in GLSL ES 3.00 code: browsers give 0, glslang wants an extension.
+void ReplaceFileMacro(const BrowserContext& context, std::string& text) {
+  if (context.version < 300 || text.find("__FILE__") == std::string::npos) return;
+  ReplaceWord(text, "__FILE__", "0       ");
+}
+
+// Lines inside #if groups our preprocessor skipped are emptied, but for the directives
+// (browsers read nothing else there; glslang still trips on an unterminated '"').
+void EmptyInactiveLines(const BrowserContext& context, std::string& text) {
+  if (context.preprocessed == nullptr) return;
+  for (const SourceRange& region : context.preprocessed->inactive_regions) {
+    if (region.file != context.file->Id() || region.end > text.size()) continue;
+    size_t line = region.begin;
+    while (line < region.end) {
+      size_t end = text.find('\n', line);
+      if (end == std::string::npos || end > region.end) end = region.end;
+      const size_t first = text.find_first_not_of(" \t", line);
+      if (first < end && text[first] != '#') {
+        for (size_t i = line; i < end; ++i) {
+          if (text[i] != '\r' && text[i] != '\\') text[i] = ' ';
+        }
+      }
+      line = end + 1;
+    }
+  }
+}
+
+// Uses `F()` of a macro with one parameter: browsers pass one empty argument, glslang
+// stops with "Too few args in Macro". Each such use written directly in the user's file
+// is replaced, on its line, by its expansion as our preprocessor (which follows the
+// browser) made it. Uses spelled inside other macros stay as they are.
+void ExpandEmptyArgumentUses(const BrowserContext& context, std::string& text) {
+  if (context.preprocessed == nullptr || context.front_end_errors) return;
+  static const std::regex kEmptyUse(R"(^[A-Za-z_][A-Za-z0-9_]*[ \t]*\([ \t]*\)$)");
+  static const std::regex kOneParameter(
+      R"(^[A-Za-z_][A-Za-z0-9_]*\([ \t]*[A-Za-z_][A-Za-z0-9_]*[ \t]*\).*)");
+  const glsl::PreprocessResult& pp = *context.preprocessed;
+  const std::string_view original = context.file->Text();
+  std::vector<std::pair<SourceRange, std::string>> replacements;
+  for (const glsl::MacroUse& use : pp.macro_uses) {
+    if (use.parent != glsl::kNoMacroUse || use.use.file != context.file->Id() ||
+        use.definition.file != context.file->Id() || use.use.end > original.size()) {
+      continue;
+    }
+    const std::string spelled(original.substr(use.use.begin, use.use.end - use.use.begin));
+    if (spelled.find('\n') != std::string::npos || !std::regex_match(spelled, kEmptyUse)) continue;
+    const size_t line_end = original.find('\n', use.definition.begin);
+    const std::string definition(
+        original.substr(use.definition.begin, line_end == std::string_view::npos
+                                                  ? std::string_view::npos
+                                                  : line_end - use.definition.begin));
+    if (!std::regex_match(definition, kOneParameter)) continue;
+    std::string expansion;
+    for (const glsl::PpToken& token : pp.tokens) {
+      if (token.expansion.file == use.use.file && token.expansion.begin == use.use.begin &&
+          token.expansion.end == use.use.end && token.kind != glsl::TokenKind::kEndOfFile) {
+        expansion += std::string(token.text) + " ";
+      }
+    }
+    replacements.emplace_back(use.use, expansion.empty() ? " " : expansion);
+  }
+  // From the end, so that earlier offsets stay valid.
+  std::sort(replacements.begin(), replacements.end(),
+            [](const auto& a, const auto& b) { return a.first.begin > b.first.begin; });
+  for (const auto& [range, expansion] : replacements) {
+    text.replace(range.begin, range.end - range.begin, expansion);
+  }
+}
+
 // `#define` lines that browsers (ANGLE's preprocessor) accept and glslang's does not,
 // written as glslang understands them, on the same line: a body right after an
 // object-like macro's name (`#define EPS.001`: glslang drops the macro) gets a space,
@@ -263,6 +464,7 @@ void AlignWithBrowser(const BrowserContext& context, Diagnostic& diagnostic) {
   if (AlignCrash(context, diagnostic)) return;
   if (!InFile(context, diagnostic) || context.tree == nullptr) return;
   if (AlignContinuedComment(context, diagnostic)) return;
+  if (AlignLenientMessages(context, diagnostic)) return;
   if (context.model == nullptr) return;
   if (AlignGlobalInitializer(context, diagnostic)) return;
   AlignConstantExpression(context, diagnostic);
@@ -271,7 +473,13 @@ void AlignWithBrowser(const BrowserContext& context, Diagnostic& diagnostic) {
 std::string TextForGlslang(const BrowserContext& context) {
   if (context.file == nullptr) return {};
   std::string text(context.file->Text());
+  // Same-length edits first: the offsets of our front end stay valid for the next.
   RenameDeclarableBuiltins(context, text);
+  RenameGlslangOnlyKeywords(context, text);
+  ReplaceFileMacro(context, text);
+  HideUnofferedExtensions(context, text);
+  EmptyInactiveLines(context, text);
+  ExpandEmptyArgumentUses(context, text);
   text = RepairDefines(text);
   return text == context.file->Text() ? std::string() : text;
 }

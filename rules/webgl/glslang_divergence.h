@@ -33,8 +33,11 @@ void AlignWithBrowser(const BrowserContext& context, Diagnostic& diagnostic);
 // same lines (glslang's messages still map to the user's lines): functions that browsers
 // let a shader declare under a built-in's name (GLSL ES 1.00: a new overload; GLSL ES
 // 3.00: `texture` and a few more) and their calls get a same-length name glslang does
-// not know, and `#define` lines that only browsers read are written as glslang reads
-// them. Empty when the text needs no change.
+// not know, as do words glslang reserves and browsers do not (`filter`, `shared`...);
+// `__FILE__` in GLSL ES 3.00 becomes 0, lines of skipped #if groups are emptied, uses
+// `F()` of one-parameter macros (one empty argument in browsers) are expanded in place,
+// and `#define` lines that only browsers read are written as glslang reads them. Empty when the
+// text needs no change.
 std::string TextForGlslang(const BrowserContext& context);
 
 }  // namespace shaderport::rules

@@ -25,6 +25,39 @@ const glsl::Expr* Unparenthesized(const glsl::Expr* expr) {
   return expr;
 }
 
+bool ContextOffersExtension(std::string_view name, bool webgl2) {
+  struct Offered {
+    std::string_view name;
+    bool webgl1;
+    bool webgl2;
+  };
+  static constexpr Offered kOffered[] = {
+#define WEBGL_EXTENSION(name, in_webgl1, in_webgl2) {#name, in_webgl1, in_webgl2},
+#include "rules/data/webgl_context_extensions.def"
+#undef WEBGL_EXTENSION
+  };
+  for (const Offered& offered : kOffered) {
+    if (offered.name == name) return webgl2 ? offered.webgl2 : offered.webgl1;
+  }
+  return false;
+}
+
+std::optional<int64_t> LayoutLocation(const glsl::QualifierList& qualifiers) {
+  for (const glsl::Qualifier& qualifier : qualifiers.items) {
+    if (qualifier.kind != glsl::QualifierKind::kLayout) continue;
+    for (const glsl::LayoutId& id : qualifier.layout_ids) {
+      if (id.name.text != "location") continue;
+      const glsl::Expr* value = Unparenthesized(id.value);
+      const auto* literal = value == nullptr ? nullptr : value->As<glsl::LiteralExpr>();
+      if (literal != nullptr && !literal->int_overflow &&
+          literal->literal_kind == glsl::LiteralKind::kInt) {
+        return static_cast<int64_t>(literal->int_value);
+      }
+    }
+  }
+  return std::nullopt;
+}
+
 bool StructContainsArray(const glsl::SemanticModel& model, const glsl::Type& type) {
   // Iterative: struct types cannot contain themselves, but stay bounded anyway.
   std::vector<glsl::Type> pending = {type};

@@ -2,6 +2,8 @@
 // shader is compiled for, and reporting an error the way the browser raises it.
 #pragma once
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -31,6 +33,13 @@ const glsl::Symbol* SymbolOf(const rule::RuleContext& context, const glsl::Node&
 
 // Strips parentheses: `((a))` is `a`.
 const glsl::Expr* Unparenthesized(const glsl::Expr* expr);
+
+// Whether a WebGL 1 or 2 context offers the #extension `name`
+// (rules/data/webgl_context_extensions.def).
+bool ContextOffersExtension(std::string_view name, bool webgl2);
+
+// The value of `layout(location = N)` among `qualifiers`, when written as an integer.
+std::optional<int64_t> LayoutLocation(const glsl::QualifierList& qualifiers);
 
 // True when the type is a struct that has an array among its fields, at any depth.
 bool StructContainsArray(const glsl::SemanticModel& model, const glsl::Type& type);

@@ -14,7 +14,8 @@ namespace {
 // Front-end findings that are WebGL rules rather than glslang's (glslang has no
 // identifier length limit): they count even though glslang also runs.
 bool IsWebglFrontEndRule(std::string_view rule_id) {
-  static constexpr std::array<std::string_view, 1> kIds = {"preprocessor/identifier-too-long"};
+  static constexpr std::array<std::string_view, 2> kIds = {"preprocessor/identifier-too-long",
+                                                           "preprocessor/token-too-long"};
   return std::find(kIds.begin(), kIds.end(), rule_id) != kIds.end();
 }
 

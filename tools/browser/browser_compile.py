@@ -1,34 +1,72 @@
 """Chromium's compile verdict for shader stages: one headless Chromium (ANGLE on
 SwiftShader) kept open over the DevTools pipe, compiling batches of stages in a WebGL1
-or WebGL2 context, exactly as a page's gl.compileShader does. No extension is enabled
-(a page has to ask for one with getExtension, and the conformance verdicts were taken
-that way too). Python standard library only.
+or WebGL2 context, exactly as a page's gl.compileShader does. The page enables the
+WebGL extensions that the shader's `#extension` lines name (getExtension), as a page
+written for that shader does and as `check` assumes; others stay off. Python standard
+library only.
 """
 import json
 import os
+import re
 import shutil
 import tempfile
 
 import cdp_pipe
 
-# Compiles every job of the batch in a fresh context of its version (contexts are
-# cached per version; a lost context is made again) and returns [ok, log] per job.
+# The WebGL extension a page enables for each GLSL #extension name.
+WEBGL_EXTENSIONS = {
+    "GL_OES_standard_derivatives": "OES_standard_derivatives",
+    "GL_EXT_shader_texture_lod": "EXT_shader_texture_lod",
+    "GL_EXT_frag_depth": "EXT_frag_depth",
+    "GL_EXT_draw_buffers": "WEBGL_draw_buffers",
+    "GL_ANGLE_multi_draw": "WEBGL_multi_draw",
+    "GL_OVR_multiview": "OVR_multiview2",
+    "GL_OVR_multiview2": "OVR_multiview2",
+    "GL_EXT_clip_cull_distance": "WEBGL_clip_cull_distance",
+    "GL_ANGLE_clip_cull_distance": "WEBGL_clip_cull_distance",
+    "GL_NV_shader_noperspective_interpolation": "NV_shader_noperspective_interpolation",
+    "GL_OES_sample_variables": "OES_sample_variables",
+    "GL_OES_shader_multisample_interpolation": "OES_shader_multisample_interpolation",
+    "GL_EXT_conservative_depth": "EXT_conservative_depth",
+    "GL_EXT_blend_func_extended": "WEBGL_blend_func_extended",
+}
+_EXTENSION_LINE = re.compile(r"^[ \t]*#[ \t]*extension[ \t]+(\w+)", re.M)
+
+
+def extensions_of(source):
+    """The WebGL extensions a page would enable for `source`, sorted."""
+    return sorted({WEBGL_EXTENSIONS[n] for n in _EXTENSION_LINE.findall(source)
+                   if n in WEBGL_EXTENSIONS})
+
+
+# Compiles every job of the batch in a context of its version with its extensions
+# enabled (contexts are cached by both, a few at a time; a lost context is made again)
+# and returns [ok, log] per job.
 _COMPILE_SCRIPT = r"""
 (function(jobs) {
-  const contexts = window.__spContexts || (window.__spContexts = {});
-  function context(version) {
-    let gl = contexts[version];
+  const contexts = window.__spContexts || (window.__spContexts = new Map());
+  function context(version, extensions) {
+    const key = version + ":" + extensions.join(",");
+    let gl = contexts.get(key);
     if (!gl || gl.isContextLost()) {
+      if (contexts.size >= 8) {  // browsers keep few live contexts: drop the others
+        for (const old of contexts.values()) {
+          const lose = old.getExtension("WEBGL_lose_context");
+          if (lose) lose.loseContext();
+        }
+        contexts.clear();
+      }
       const canvas = document.createElement("canvas");
       canvas.width = canvas.height = 1;
       gl = canvas.getContext(version === 2 ? "webgl2" : "webgl", {preserveDrawingBuffer: false});
-      contexts[version] = gl;
+      if (gl) for (const name of extensions) gl.getExtension(name);
+      contexts.set(key, gl);
     }
     return gl;
   }
   const out = [];
   for (const job of jobs) {
-    const gl = context(job.context);
+    const gl = context(job.context, job.extensions);
     if (!gl) { out.push([null, "no context"]); continue; }
     const shader = gl.createShader(job.stage === "vertex" ? gl.VERTEX_SHADER : gl.FRAGMENT_SHADER);
     if (!shader) { out.push([null, "createShader failed: context lost"]); continue; }
@@ -78,7 +116,8 @@ class BrowserCompiler:
             self._start()
         results = []
         for start in range(0, len(jobs), self.batch):
-            part = [{"source": j["source"], "stage": j["stage"], "context": j["context"]}
+            part = [{"source": j["source"], "stage": j["stage"], "context": j["context"],
+                     "extensions": extensions_of(j["source"])}
                     for j in jobs[start:start + self.batch]]
             results.extend(self._compile_part(part))
         return [(r[0], r[1]) for r in results]

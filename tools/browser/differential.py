@@ -101,6 +101,20 @@ def write_report(out, args, seed, stats, by_family, found, elapsed, chromium):
     return summary
 
 
+def findings(bad, smallest):
+    found = []
+    for (mutant, verdict), (small, small_verdict) in zip(bad, smallest):
+        found.append({"direction": minimise.direction(verdict), "seed": mutant["seed"],
+                      "family": mutant["family"], "edit": mutant["edit"],
+                      "stage": mutant["stage"], "context": mutant["context"],
+                      "browser_first": browser_message(verdict["browser_log"]),
+                      "check_first": verdict["check_first"], "minimised": small,
+                      "minimised_browser_log": small_verdict["browser_log"],
+                      "minimised_check_first": small_verdict["check_first"],
+                      "mutant": mutant["source"]})
+    return found
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--seed", type=int, help="random seed (default: a fresh one, printed)")
@@ -111,6 +125,8 @@ def main(argv=None):
     parser.add_argument("--chromium")
     parser.add_argument("--no-glslang", action="store_true", help="skip glslangValidator's verdicts")
     parser.add_argument("--no-minimise", action="store_true")
+    parser.add_argument("--minimise-budget", type=float, default=600,
+                        help="seconds spent minimising (default 600)")
     parser.add_argument("--chunk", type=int, default=1000, help="mutants judged per batch")
     parser.add_argument("--max-false-accepts", type=int, help="fail (exit 1) above this many")
     parser.add_argument("--max-false-rejects", type=int, help="fail (exit 1) above this many")
@@ -132,22 +148,30 @@ def main(argv=None):
                                                             time.time() - start), flush=True)
         stats, by_family = tally(mutants, verdicts)
         bad = [(m, v) for m, v in zip(mutants, verdicts) if minimise.direction(v)]
-        smallest = [(m["source"], v) for m, v in bad] if args.no_minimise else \
-            minimise.minimise(oracles, bad, log=lambda s: print("differential: " + s, flush=True))
-        found = []
-        for (mutant, verdict), (small, small_verdict) in zip(bad, smallest):
-            found.append({"direction": minimise.direction(verdict), "seed": mutant["seed"],
-                          "family": mutant["family"], "edit": mutant["edit"],
-                          "stage": mutant["stage"], "context": mutant["context"],
-                          "browser_first": browser_message(verdict["browser_log"]),
-                          "check_first": verdict["check_first"], "minimised": small,
-                          "minimised_browser_log": small_verdict["browser_log"],
-                          "minimised_check_first": small_verdict["check_first"],
-                          "mutant": mutant["source"]})
+        # The unminimised report first: a run cut short still leaves its findings.
+        found = findings(bad, [(m["source"], v) for m, v in bad])
         summary = write_report(args.out, args, seed, stats, by_family, found, time.time() - start,
                                oracles.browser.version)
+        if not args.no_minimise and bad:
+            # One case a class (the shortest): the others of the class say nothing new.
+            firsts = {}
+            for i, (mutant, verdict) in enumerate(bad):
+                key = minimise.class_key(verdict)
+                if key not in firsts or len(mutant["source"]) < len(bad[firsts[key]][0]["source"]):
+                    firsts[key] = i
+            chosen = sorted(firsts.values())
+            smallest = minimise.minimise(oracles, [bad[i] for i in chosen],
+                                         budget_s=args.minimise_budget,
+                                         log=lambda s: print("differential: " + s, flush=True))
+            results = [(m["source"], v) for m, v in bad]
+            for i, result in zip(chosen, smallest):
+                results[i] = result
+            found = findings(bad, results)
+            summary = write_report(args.out, args, seed, stats, by_family, found,
+                                   time.time() - start, oracles.browser.version)
     finally:
         oracles.close()
+
     print("differential: seed %d: %d judged, check = browser on %.3f %%, %d false accepts, "
           "%d false rejects; report in %s" % (seed, stats["judged"], summary["agreement_percent"],
                                               stats["false-accept"], stats["false-reject"], args.out))

@@ -1,12 +1,18 @@
 """Delta debugging of many disagreements at once: each round removes one chunk of lines
 (then of tokens) from every case still shrinking, and all the candidates of a round are
-judged in one batch (one Chromium call, one `check` run). A candidate is kept when it
+judged in one batch (one Chromium call, one `check` run). A round tries at most
+`WINDOW` chunks of a case, moving on through the rest in later rounds, so that a round
+stays small; a time budget ends the search with the smallest shaders found so far. A candidate is kept when it
 still disagrees in the same direction for the same reason: a false accept keeps the
 browser's error (its text without the quoted token), a false reject keeps check's first
 rule. Python standard library only.
 """
+import time
+
 import mutate
 from stage_oracles import browser_class
+
+WINDOW = 24
 
 
 def direction(verdict):
@@ -17,7 +23,7 @@ def direction(verdict):
     return None
 
 
-def _key(verdict):
+def class_key(verdict):
     kind = direction(verdict)
     if kind == "false-accept":
         return kind, browser_class(verdict["browser_log"])
@@ -29,11 +35,12 @@ def _key(verdict):
 class _Case:
     def __init__(self, job, verdict):
         self.job = job
-        self.key = _key(verdict)
+        self.key = class_key(verdict)
         self.verdict = verdict
         self.phase = "lines"
         self.units = job["source"].split("\n")
         self.n = 2
+        self.offset = 0  # first chunk this round tries
         self.candidates = []
 
     def text(self, units):
@@ -44,7 +51,8 @@ class _Case:
             return []
         size = max(1, len(self.units) // self.n)
         self.candidates = []
-        for start in range(0, len(self.units), size):
+        starts = list(range(0, len(self.units), size))[self.offset:self.offset + WINDOW]
+        for start in starts:
             rest = self.units[:start] + self.units[start + size:]
             if rest:
                 self.candidates.append(rest)
@@ -52,11 +60,17 @@ class _Case:
 
     def advance(self, verdicts):
         for units, verdict in zip(self.candidates, verdicts):
-            if _key(verdict) == self.key:
+            if class_key(verdict) == self.key:
                 self.units = units
                 self.verdict = verdict
                 self.n = max(self.n - 1, 2)
+                self.offset = 0
                 return
+        size = max(1, len(self.units) // self.n)
+        if self.offset + WINDOW < len(range(0, len(self.units), size)):
+            self.offset += WINDOW
+            return
+        self.offset = 0
         if self.n < len(self.units):
             self.n = min(self.n * 2, len(self.units))
             return
@@ -81,10 +95,13 @@ def _token_units(text):
     return units
 
 
-def minimise(oracles, cases, max_rounds=400, log=None):
+def minimise(oracles, cases, budget_s=600, log=None):
     """cases: [(job, verdict)] -> [(smallest source, its verdict)] in the same order."""
     states = [_Case(job, verdict) for job, verdict in cases]
-    for round_number in range(max_rounds):
+    deadline = time.time() + budget_s
+    round_number = 0
+    while time.time() < deadline:
+        round_number += 1
         batch, owners = [], []
         for state in states:
             proposed = state.propose()
@@ -100,5 +117,5 @@ def minimise(oracles, cases, max_rounds=400, log=None):
             at += count
         if log:
             log("minimise round %d: %d candidates, %d cases active" %
-                (round_number + 1, len(batch), sum(s.phase != "done" for s in states)))
+                (round_number, len(batch), sum(s.phase != "done" for s in states)))
     return [s.result() for s in states]

@@ -87,33 +87,55 @@ class CheckOracle:
 
 
 class GlslangOracle:
-    """glslangValidator alone, as a user would run it on the stage (ES 1.00 when the
-    text has no #version)."""
+    """glslangValidator alone, as a user would run it on each stage (ES 1.00 when the
+    text has no #version). Many files a process: it compiles each on its own and prints
+    every file's name before that file's messages."""
 
-    def __init__(self, binary="glslangValidator"):
+    def __init__(self, binary="glslangValidator", per_process=200):
         self.binary = shutil.which(binary)
+        self.per_process = per_process
 
     def verdicts(self, jobs):
         if not self.binary:
             return [(None, "glslangValidator not found")] * len(jobs)
         work = tempfile.mkdtemp(prefix="sp-diff-glslang-")
         try:
-            results = []
+            paths = []
             for i, job in enumerate(jobs):
                 path = os.path.join(work, "m%06d%s" % (i, _EXT[job["stage"]]))
                 with open(path, "w", encoding="utf-8", errors="surrogateescape", newline="") as f:
                     f.write(job["source"])
-                try:
-                    proc = subprocess.run([self.binary, path], capture_output=True, text=True,
-                                          errors="replace", timeout=30)
-                    output = proc.stdout + proc.stderr
-                    first = next((l for l in output.splitlines() if l.startswith("ERROR")), "")
-                    results.append((proc.returncode == 0, first))
-                except subprocess.TimeoutExpired:
-                    results.append((None, "timeout"))
-            return results
+                paths.append(path)
+            results = {}
+            for at in range(0, len(paths), self.per_process):
+                results.update(self._run(paths[at:at + self.per_process]))
+            return [results.get(p, (None, "no answer")) for p in paths]
         finally:
             shutil.rmtree(work, ignore_errors=True)
+
+    def _run(self, paths):
+        try:
+            proc = subprocess.run([self.binary] + paths, capture_output=True, text=True,
+                                  errors="replace", timeout=300)
+        except subprocess.TimeoutExpired:
+            return {p: (None, "timeout") for p in paths}
+        if proc.returncode < 0:  # it crashed on one of them: find which, one at a time
+            if len(paths) == 1:
+                return {paths[0]: (None, "glslangValidator crashed")}
+            results = {}
+            for path in paths:
+                results.update(self._run([path]))
+            return results
+        names = set(paths)
+        results = {p: (True, "") for p in paths}
+        current = None
+        for line in (proc.stdout + proc.stderr).splitlines():
+            if line in names:
+                current = line
+            elif current and line.startswith("ERROR"):
+                if results[current][0]:
+                    results[current] = (False, line)
+        return results
 
 
 class StageOracles:

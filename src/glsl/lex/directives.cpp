@@ -145,8 +145,9 @@ void PpDriver::Version(std::span<const Token> args, SourceRange range) {
                   "#version must be followed by a version number");
     return;
   }
+  // Read as a C integer literal, as browsers do: `0300` is octal (192), `0x12C` is 300.
   const int number = static_cast<int>(
-      std::clamp(std::strtol(std::string(args[0].text).c_str(), nullptr, 10), 0L, 100000L));
+      std::clamp(std::strtol(std::string(args[0].text).c_str(), nullptr, 0), 0L, 100000L));
   const std::string profile = args.size() > 1 ? std::string(args[1].text) : std::string();
   if (args.size() > 2 || (args.size() > 1 && args[1].kind != TokenKind::kIdentifier)) {
     state_.Report(Severity::kError, "preprocessor/invalid-version", range,

@@ -44,7 +44,9 @@ class PpDriver {
   // Runs for every token: the common case (short, or no identifier) stays inline.
   void CheckIdentifierLength(const Token& t) {
     const size_t shortest_limit = max_identifier_length_ != 0 ? max_identifier_length_ : 256;
-    if (t.kind == TokenKind::kIdentifier && t.text.size() > shortest_limit) {
+    if (t.text.size() > shortest_limit &&
+        (t.kind == TokenKind::kIdentifier || t.kind == TokenKind::kIntLiteral ||
+         t.kind == TokenKind::kUintLiteral || t.kind == TokenKind::kFloatLiteral)) {
       ReportLongIdentifier(t);
     }
   }

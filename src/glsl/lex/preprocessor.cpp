@@ -72,10 +72,14 @@ void PpDriver::ReportLongIdentifier(const Token& t) {
   const size_t limit = max_identifier_length_                ? max_identifier_length_
                        : state_.result.version.number >= 300 ? 1024
                                                              : 256;
-  if (t.kind != TokenKind::kIdentifier || t.text.size() <= limit) return;
-  state_.Report(Severity::kError, "preprocessor/identifier-too-long", RangeOf(t),
-                "identifier of " + std::to_string(t.text.size()) + " characters; the limit is " +
-                    std::to_string(limit));
+  // Browsers apply the same limit to every token ("token too long"): numbers too.
+  if (t.text.size() <= limit) return;
+  const bool identifier = t.kind == TokenKind::kIdentifier;
+  state_.Report(
+      Severity::kError,
+      identifier ? "preprocessor/identifier-too-long" : "preprocessor/token-too-long", RangeOf(t),
+      std::string(identifier ? "identifier" : "number") + " of " + std::to_string(t.text.size()) +
+          " characters; the limit is " + std::to_string(limit));
 }
 
 std::vector<ExpToken> PpDriver::ToExpTokens(std::span<const Token> tokens) {

@@ -1,0 +1,3 @@
+#define __sp 1
+precision mediump float;
+void main() { gl_FragColor = vec4(1.0); }

@@ -1,0 +1,5 @@
+attribute vec4 p;
+void main() { gl_Position = p; }
+#if 0
+$ @ "
+#endif

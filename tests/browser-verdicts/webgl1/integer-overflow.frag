@@ -1,0 +1,3 @@
+precision mediump float;
+// An integer literal past 32 bits: a warning in GLSL ES 1.00...
+void main() { int i = 4294967296; gl_FragColor = vec4(float(i)); }
