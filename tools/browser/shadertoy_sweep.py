@@ -139,9 +139,13 @@ def run_check(shaderport, path, jobs, timeout=900):
 _TAB_PATH = re.compile(r"#([^/#]*)(?:/([^/#]*))?$")
 
 
-def tab_of(path):
+def tab_of(path, single_id=None):
     """(id, tab) from a project tab's path `FILE.jsonl#ID/TAB`; tab None for a finding
-    about the whole project; None for a path naming no project."""
+    about the whole project; None for a path naming no project. A file holding one
+    project names its tabs `FILE.jsonl#TAB`: single_id is that project's id."""
+    if single_id is not None:
+        m = re.search(r"#([^#]*)$", path or "")
+        return (single_id, m.group(1) if m else None) if path else None
     m = _TAB_PATH.search(path or "")
     return (m.group(1), m.group(2)) if m else None
 
@@ -176,12 +180,13 @@ def check_records(shaderport, records, jobs, work):
             else:
                 failed[json.loads(lines[0])["id"]] = problem
             return
+        single = json.loads(lines[0])["id"] if len(lines) == 1 else None
         for entry in result.get("files", []):
             for diag in entry.get("diagnostics", []):
                 if diag.get("severity") != "error" or diag.get("rule", "").startswith("webgl/link-"):
                     continue
                 loc = diag.get("location") or {}
-                where = tab_of(loc.get("path")) or tab_of(entry.get("path"))
+                where = tab_of(loc.get("path"), single) or tab_of(entry.get("path"), single)
                 if where is None:
                     log("  check: an error outside any project: %s" % diag.get("message"))
                 elif where not in errors:
@@ -234,7 +239,8 @@ def vocabulary():
 # Messages that name the shader's macros or functions without quotes.
 _UNQUOTED_NAMES = [(re.compile(r"\b([Mm]acro) [A-Za-z_]\w*"), r"\1 …"),
                    (re.compile(r"(unexpected '[^']*') [A-Za-z_]\w*"), r"\1 …"),
-                   (re.compile(r"(recursive call: )[\w >-]+"), r"\1…")]
+                   (re.compile(r"(recursive call: )[\w >-]+"), r"\1…"),
+                   (re.compile(r"(: )[A-Za-z_]\w*$"), r"\1…")]  # "...: NAME" at the end
 
 
 def _mask_names(text, record, filler):
