@@ -232,16 +232,20 @@ std::string SameLengthAlias(const std::string& text, const std::string& name) {
 // Renames, in `text` (the user's file), every function browsers let the shader declare
 // under a built-in's name and every call of it, to one alias per name of the same
 // length, so that offsets stay put.
-void RenameDeclarableBuiltins(const BrowserContext& context, std::string& text) {
+void RenameDeclarableBuiltins(const BrowserContext& context, FileId part, std::string& text) {
   if (context.model == nullptr || context.tree == nullptr || context.front_end_errors) return;
   const glsl::SemanticModel& model = *context.model;
-  std::map<uint32_t, std::string> aliases;  // function symbol -> its alias
+  std::map<uint32_t, std::string> aliases;  // function or variable symbol -> its alias
   for (uint32_t i = 0; i < model.symbols.size(); ++i) {
     const glsl::Symbol& symbol = model.symbols[i];
-    if (symbol.kind != glsl::SymbolKind::kFunction || symbol.predeclared ||
-        !BrowserAcceptsName(context, symbol)) {
-      continue;
-    }
+    if (symbol.predeclared) continue;
+    const bool function =
+        symbol.kind == glsl::SymbolKind::kFunction && BrowserAcceptsName(context, symbol);
+    // GLSL ES 3.00 globals named like a built-in function (`const int max = 4;`) hide it
+    // in browsers; glslang calls them a redefinition.
+    const bool global = symbol.kind == glsl::SymbolKind::kVariable && symbol.scope == 0 &&
+                        context.version >= 300 && glsl::IsBuiltinFunctionName(symbol.name);
+    if (!function && !global) continue;
     std::string alias;
     for (const auto& [other, taken] : aliases) {
       if (model.symbols[other].name == symbol.name) alias = taken;  // overloads share it
@@ -252,8 +256,7 @@ void RenameDeclarableBuiltins(const BrowserContext& context, std::string& text) 
   if (aliases.empty()) return;
   auto rename = [&](const glsl::Name& name, uint32_t symbol) {
     const auto alias = aliases.find(symbol);
-    if (alias == aliases.end() || name.range.file != context.file->Id() ||
-        name.range.end > text.size() ||
+    if (alias == aliases.end() || name.range.file != part || name.range.end > text.size() ||
         text.compare(name.range.begin, name.text.size(), name.text) != 0) {
       return;  // spelled inside a macro: glslang keeps its complaint
     }
@@ -265,6 +268,10 @@ void RenameDeclarableBuiltins(const BrowserContext& context, std::string& text) 
     } else if (const auto* call = node.As<glsl::CallExpr>();
                call != nullptr && call->call_kind == glsl::CallKind::kFunction) {
       rename(call->callee, model.SymbolAt(call->id));
+    } else if (const auto* declarator = node.As<glsl::Declarator>()) {
+      rename(declarator->name, model.SymbolAt(declarator->id));
+    } else if (const auto* identifier = node.As<glsl::IdentifierExpr>()) {
+      rename(glsl::Name{identifier->name, identifier->range}, model.SymbolAt(identifier->id));
     }
     return true;
   });
@@ -340,10 +347,10 @@ void RenameGlslangOnlyKeywords(const BrowserContext& context, std::string& text)
 
 // `#extension` lines for extensions the context does not offer: glslang would enable
 // what the browser leaves out (dFdx in GLSL ES 1.00 code under WebGL 2, say).
-void HideUnofferedExtensions(const BrowserContext& context, std::string& text) {
+void HideUnofferedExtensions(const BrowserContext& context, FileId part, std::string& text) {
   if (context.preprocessed == nullptr) return;
   for (const glsl::ExtensionDirective& directive : context.preprocessed->extensions) {
-    if (directive.name == "all" || directive.range.file != context.file->Id() ||
+    if (directive.name == "all" || directive.range.file != part ||
         directive.range.end > text.size() ||
         webgl::ContextOffersExtension(directive.name, context.webgl2)) {
       continue;
@@ -362,10 +369,10 @@ void ReplaceFileMacro(const BrowserContext& context, std::string& text) {
 
 // Lines inside #if groups our preprocessor skipped are emptied, but for the directives
 // (browsers read nothing else there; glslang still trips on an unterminated '"').
-void EmptyInactiveLines(const BrowserContext& context, std::string& text) {
+void EmptyInactiveLines(const BrowserContext& context, FileId part, std::string& text) {
   if (context.preprocessed == nullptr) return;
   for (const SourceRange& region : context.preprocessed->inactive_regions) {
-    if (region.file != context.file->Id() || region.end > text.size()) continue;
+    if (region.file != part || region.end > text.size()) continue;
     size_t line = region.begin;
     while (line < region.end) {
       size_t end = text.find('\n', line);
@@ -381,46 +388,102 @@ void EmptyInactiveLines(const BrowserContext& context, std::string& text) {
   }
 }
 
-// Uses `F()` of a macro with one parameter: browsers pass one empty argument, glslang
-// stops with "Too few args in Macro". Each such use written directly in the user's file
-// is replaced, on its line, by its expansion as our preprocessor (which follows the
-// browser) made it. Uses spelled inside other macros stay as they are.
-void ExpandEmptyArgumentUses(const BrowserContext& context, std::string& text) {
-  if (context.preprocessed == nullptr || context.front_end_errors) return;
+// Macro uses that glslang expands differently from browsers, replaced on their line
+// by the expansion our preprocessor (which follows the browser) made: `F()` passes one
+// empty argument in browsers, where glslang stops with "Too few args in Macro"; a
+// function-like macro that names itself in its body (`#define line(a) line(a, z)`) is
+// not expanded again in browsers, where glslang counts the inner call's arguments
+// against the macro. Only uses written in `part` itself, outside other macros, and
+// only when our front end found no error there.
+void ExpandMacroUses(const BrowserContext& context, FileId part, std::string_view original,
+                     std::string& text) {
+  if (context.preprocessed == nullptr || context.tree == nullptr || context.front_end_errors) {
+    return;
+  }
   static const std::regex kEmptyUse(R"(^[A-Za-z_][A-Za-z0-9_]*[ \t]*\([ \t]*\)$)");
-  static const std::regex kOneParameter(
-      R"(^[A-Za-z_][A-Za-z0-9_]*\([ \t]*[A-Za-z_][A-Za-z0-9_]*[ \t]*\).*)");
   const glsl::PreprocessResult& pp = *context.preprocessed;
-  const std::string_view original = context.file->Text();
-  std::vector<std::pair<SourceRange, std::string>> replacements;
+  struct Replacement {
+    SourceRange range;
+    std::vector<std::string_view> tokens;
+    std::string self;  // the macro's name when its body names itself
+  };
+  std::vector<Replacement> replacements;
+  std::map<std::string, std::string> aliases;  // macro naming itself -> alias
   for (const glsl::MacroUse& use : pp.macro_uses) {
-    if (use.parent != glsl::kNoMacroUse || use.use.file != context.file->Id() ||
-        use.definition.file != context.file->Id() || use.use.end > original.size()) {
+    if (use.parent != glsl::kNoMacroUse || use.use.file != part || use.use.end > original.size()) {
       continue;
     }
     const std::string spelled(original.substr(use.use.begin, use.use.end - use.use.begin));
-    if (spelled.find('\n') != std::string::npos || !std::regex_match(spelled, kEmptyUse)) continue;
-    const size_t line_end = original.find('\n', use.definition.begin);
-    const std::string definition(
-        original.substr(use.definition.begin, line_end == std::string_view::npos
-                                                  ? std::string_view::npos
-                                                  : line_end - use.definition.begin));
-    if (!std::regex_match(definition, kOneParameter)) continue;
-    std::string expansion;
+    if (spelled.find('\n') != std::string::npos || spelled.find('(') == std::string::npos) {
+      continue;
+    }
+    Replacement replacement{use.use, {}, {}};
     for (const glsl::PpToken& token : pp.tokens) {
       if (token.expansion.file == use.use.file && token.expansion.begin == use.use.begin &&
           token.expansion.end == use.use.end && token.kind != glsl::TokenKind::kEndOfFile) {
-        expansion += std::string(token.text) + " ";
+        replacement.tokens.push_back(token.text);
+        if (token.text == use.name) replacement.self = use.name;
       }
     }
-    replacements.emplace_back(use.use, expansion.empty() ? " " : expansion);
+    if (replacement.self.empty() && !std::regex_match(spelled, kEmptyUse)) continue;
+    if (!replacement.self.empty() && !aliases.contains(use.name)) {
+      aliases[use.name] = SameLengthAlias(std::string(original), use.name);
+    }
+    replacements.push_back(std::move(replacement));
   }
+  // A function that a macro of the same name calls (`#define line(a) line(a, z)`) gets
+  // the alias: glslang would take every later `line(` for the macro again.
+  glsl::VisitPreorder(*context.tree, [&](const glsl::Node& node, uint32_t) {
+    const auto* function = node.As<glsl::FunctionDeclaration>();
+    if (function == nullptr) return true;
+    const auto alias = aliases.find(function->name.text);
+    const SourceRange& range = function->name.range;
+    if (alias != aliases.end() && !alias->second.empty() && range.file == part &&
+        range.end <= text.size() &&
+        text.compare(range.begin, function->name.text.size(), function->name.text) == 0) {
+      text.replace(range.begin, alias->second.size(), alias->second);
+    }
+    return false;
+  });
   // From the end, so that earlier offsets stay valid.
   std::sort(replacements.begin(), replacements.end(),
-            [](const auto& a, const auto& b) { return a.first.begin > b.first.begin; });
-  for (const auto& [range, expansion] : replacements) {
-    text.replace(range.begin, range.end - range.begin, expansion);
+            [](const auto& a, const auto& b) { return a.range.begin > b.range.begin; });
+  for (const Replacement& replacement : replacements) {
+    std::string expansion = " ";
+    for (std::string_view token : replacement.tokens) {
+      const bool self = !replacement.self.empty() && token == replacement.self;
+      expansion += std::string(self ? std::string_view(aliases[replacement.self]) : token) + " ";
+    }
+    text.replace(replacement.range.begin, replacement.range.end - replacement.range.begin,
+                 expansion);
   }
+}
+
+// A backslash at the end of a line continues it in browsers whatever the GLSL ES
+// version; glslang allows that in GLSL ES 3.00 only. In GLSL ES 1.00 code each
+// continued line is joined onto its first line and the line breaks follow it, so that
+// every later line keeps its number.
+std::string JoinContinuedLines(const BrowserContext& context, const std::string& text) {
+  if (context.version >= 300 || text.find('\\') == std::string::npos) return text;
+  std::string out;
+  out.reserve(text.size());
+  size_t pending_breaks = 0;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '\\') {
+      size_t next = i + 1;
+      if (next < text.size() && text[next] == '\r') ++next;
+      if (next < text.size() && text[next] == '\n') {
+        ++pending_breaks;
+        i = next;
+        continue;
+      }
+    }
+    if (c == '\n') out.append(pending_breaks, '\n'), pending_breaks = 0;
+    out += c;
+  }
+  out.append(pending_breaks, '\n');
+  return out;
 }
 
 // `#define` lines that browsers (ANGLE's preprocessor) accept and glslang's does not,
@@ -428,6 +491,8 @@ void ExpandEmptyArgumentUses(const BrowserContext& context, std::string& text) {
 // object-like macro's name (`#define EPS.001`: glslang drops the macro) gets a space,
 // a trailing comma in a parameter list (`#define f(a, b,)`) goes.
 std::string RepairDefines(const std::string& text) {
+  static const std::regex kCondition(R"(^[ \t]*#[ \t]*(el)?if\b.*$)");
+  static const std::regex kUnsignedLiteral(R"(\b(0[xX][0-9a-fA-F]+|[0-9]+)[uU]\b)");
   static const std::regex kDefine(R"(^([ \t]*#[ \t]*define[ \t]+[A-Za-z_][A-Za-z0-9_]*)(.*)$)");
   std::string out;
   out.reserve(text.size() + 16);
@@ -437,7 +502,10 @@ std::string RepairDefines(const std::string& text) {
     if (end == std::string::npos) end = text.size();
     std::string line = text.substr(begin, end - begin);
     std::smatch match;
-    if (line.find("define") != std::string::npos && std::regex_match(line, match, kDefine)) {
+    if (line.find("if") != std::string::npos && std::regex_match(line, kCondition)) {
+      // `#if N % 2u`: browsers take unsigned literals in #if, glslang does not.
+      line = std::regex_replace(line, kUnsignedLiteral, "$1");
+    } else if (line.find("define") != std::string::npos && std::regex_match(line, match, kDefine)) {
       std::string rest = match[2].str();
       if (!rest.empty() && rest[0] == '(') {
         const size_t close = rest.find(')');
@@ -470,18 +538,17 @@ void AlignWithBrowser(const BrowserContext& context, Diagnostic& diagnostic) {
   AlignConstantExpression(context, diagnostic);
 }
 
-std::string TextForGlslang(const BrowserContext& context) {
-  if (context.file == nullptr) return {};
-  std::string text(context.file->Text());
+std::string TextForGlslang(const BrowserContext& context, const SourceFile& part) {
+  std::string text(part.Text());
   // Same-length edits first: the offsets of our front end stay valid for the next.
-  RenameDeclarableBuiltins(context, text);
+  RenameDeclarableBuiltins(context, part.Id(), text);
   RenameGlslangOnlyKeywords(context, text);
   ReplaceFileMacro(context, text);
-  HideUnofferedExtensions(context, text);
-  EmptyInactiveLines(context, text);
-  ExpandEmptyArgumentUses(context, text);
-  text = RepairDefines(text);
-  return text == context.file->Text() ? std::string() : text;
+  HideUnofferedExtensions(context, part.Id(), text);
+  EmptyInactiveLines(context, part.Id(), text);
+  ExpandMacroUses(context, part.Id(), part.Text(), text);
+  text = RepairDefines(JoinContinuedLines(context, text));
+  return text == part.Text() ? std::string() : text;
 }
 
 }  // namespace shaderport::rules

@@ -29,7 +29,8 @@ struct BrowserContext {
 // Rewrites one glslang diagnostic in place when the browser disagrees with it.
 void AlignWithBrowser(const BrowserContext& context, Diagnostic& diagnostic);
 
-// The user's text for glslang where glslang and browsers differ on purpose, on the
+// The text of `part` (the user's file, or the ShaderToy Common code compiled with it)
+// for glslang where glslang and browsers differ on purpose, on the
 // same lines (glslang's messages still map to the user's lines): functions that browsers
 // let a shader declare under a built-in's name (GLSL ES 1.00: a new overload; GLSL ES
 // 3.00: `texture` and a few more) and their calls get a same-length name glslang does
@@ -38,6 +39,6 @@ void AlignWithBrowser(const BrowserContext& context, Diagnostic& diagnostic);
 // `F()` of one-parameter macros (one empty argument in browsers) are expanded in place,
 // and `#define` lines that only browsers read are written as glslang reads them. Empty when the
 // text needs no change.
-std::string TextForGlslang(const BrowserContext& context);
+std::string TextForGlslang(const BrowserContext& context, const SourceFile& part);
 
 }  // namespace shaderport::rules

@@ -189,12 +189,17 @@ FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceMana
   if (!report.diagnostics.empty()) return report;
 
   validate::ValidationRequest request = ComposeRequest(job, options, kind, file, sources);
-  const std::string glslang_text = TextForGlslang(file, front, webgl);
+  const std::string glslang_text = TextForGlslang(file, file, front, webgl);
+  const std::string common_text =
+      common != nullptr ? TextForGlslang(file, *common, front, webgl) : std::string();
   for (validate::ShaderPart& part : request.parts) {
-    if (part.kind == validate::PartKind::kUser && part.file == file.Id()) {
+    if (part.kind != validate::PartKind::kUser) continue;
+    if (part.file == file.Id()) {
       part.source = &file;
       part.lexed = &front.lexed;
       if (!glslang_text.empty()) part.text = glslang_text;
+    } else if (common != nullptr && part.file == common->Id() && !common_text.empty()) {
+      part.text = common_text;
     }
   }
   validate::ValidationResult result = validate::ValidateWithGlslang(request);

@@ -14,8 +14,9 @@ namespace {
 // Front-end findings that are WebGL rules rather than glslang's (glslang has no
 // identifier length limit): they count even though glslang also runs.
 bool IsWebglFrontEndRule(std::string_view rule_id) {
-  static constexpr std::array<std::string_view, 2> kIds = {"preprocessor/identifier-too-long",
-                                                           "preprocessor/token-too-long"};
+  static constexpr std::array<std::string_view, 4> kIds = {
+      "preprocessor/identifier-too-long", "preprocessor/token-too-long",
+      "preprocessor/predefined-macro", "preprocessor/invalid-line"};
   return std::find(kIds.begin(), kIds.end(), rule_id) != kIds.end();
 }
 
@@ -77,11 +78,11 @@ void AlignGlslangWithBrowser(const SourceFile& file, const FrontEndResult& front
   }
 }
 
-std::string TextForGlslang(const SourceFile& file, const FrontEndResult& front,
-                           const WebglCheckSettings& settings) {
+std::string TextForGlslang(const SourceFile& file, const SourceFile& part,
+                           const FrontEndResult& front, const WebglCheckSettings& settings) {
   rules::BrowserContext context = ToBrowserContext(front, settings);
   context.file = &file;
-  return rules::TextForGlslang(context);
+  return rules::TextForGlslang(context, part);
 }
 
 }  // namespace shaderport::driver

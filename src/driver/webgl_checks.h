@@ -32,9 +32,10 @@ void AlignGlslangWithBrowser(const SourceFile& file, const FrontEndResult& front
                              const WebglCheckSettings& settings,
                              DiagnosticList& glslang_diagnostics);
 
-// The file's text as glslang should see it where glslang and browsers differ on
-// purpose (rules::TextForGlslang); empty when glslang can compile the file as it is.
-std::string TextForGlslang(const SourceFile& file, const FrontEndResult& front,
-                           const WebglCheckSettings& settings);
+// The text of `part` (`file` itself, or the ShaderToy Common code compiled with it) as
+// glslang should see it where glslang and browsers differ on purpose
+// (rules::TextForGlslang); empty when glslang can compile it as it is.
+std::string TextForGlslang(const SourceFile& file, const SourceFile& part,
+                           const FrontEndResult& front, const WebglCheckSettings& settings);
 
 }  // namespace shaderport::driver

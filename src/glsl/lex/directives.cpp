@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cstdlib>
+#include <limits>
 #include <string>
 
 #include "base/limits.h"
@@ -207,6 +208,11 @@ void PpDriver::Line(std::span<const Token> args, SourceRange range) {
     return;
   }
   const long line = std::strtol(std::string(expanded[0].token.text).c_str(), nullptr, 0);
+  if (line > std::numeric_limits<int32_t>::max()) {  // browsers: "integer overflow"
+    state_.Report(Severity::kError, "preprocessor/invalid-line", range,
+                  "#line " + std::string(expanded[0].token.text) + " does not fit in a 32-bit int");
+    return;
+  }
   const auto physical_next = static_cast<long>(file_->LocationOf(range.end).line) + 1;
   state_.line_delta = static_cast<int64_t>(line) - physical_next;
   if (expanded.size() == 2) {

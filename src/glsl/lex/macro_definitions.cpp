@@ -138,10 +138,11 @@ void UndefineMacro(PpState& state, const SourceFile& file, std::span<const Token
 }
 
 void AddPredefinedMacros(PpState& state, std::span<const std::string> predefined) {
-  auto add = [&](std::string_view name, BuiltinMacro builtin, std::string_view value) {
+  auto add = [&](std::string_view name, BuiltinMacro builtin, std::string_view value,
+                 bool builtin_name = true) {
     Macro m;
     m.name = std::string(name);
-    m.predefined = true;
+    m.predefined = builtin_name;
     m.builtin = builtin;
     if (!value.empty()) {
       const std::string_view stored = state.Store(std::string(value));
@@ -174,7 +175,9 @@ void AddPredefinedMacros(PpState& state, std::span<const std::string> predefined
     const std::string_view name = std::string_view(spec).substr(0, eq);
     const std::string_view value =
         eq == std::string::npos ? std::string_view("1") : std::string_view(spec).substr(eq + 1);
-    add(name, BuiltinMacro::kNone, value);
+    // A harness's own macros (ShaderToy's HW_PERFORMANCE) are #define lines of its
+    // header: code may #undef them, as on the site.
+    add(name, BuiltinMacro::kNone, value, false);
   }
 }
 

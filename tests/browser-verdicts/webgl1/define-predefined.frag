@@ -1,0 +1,3 @@
+precision mediump float;
+#define __FILE__ 1
+void main() { gl_FragColor = vec4(1.0); }
