@@ -367,8 +367,11 @@ void ReplaceFileMacro(const BrowserContext& context, std::string& text) {
   ReplaceWord(text, "__FILE__", "0       ");
 }
 
-// Lines inside #if groups our preprocessor skipped are emptied, but for the directives
-// (browsers read nothing else there; glslang still trips on an unterminated '"').
+// Lines inside #if groups our preprocessor skipped that hold characters glslang's
+// scanner trips on even there (an unterminated '"', `$`, `@`, non-ASCII bytes) are
+// emptied, but for the directives: browsers read nothing else in a skipped group. Only
+// such lines: glslang defines some extension macros that browsers do not (say
+// GL_OES_standard_derivatives in GLSL ES 3.00), so it may take a group we skip.
 void EmptyInactiveLines(const BrowserContext& context, FileId part, std::string& text) {
   if (context.preprocessed == nullptr) return;
   for (const SourceRange& region : context.preprocessed->inactive_regions) {
@@ -378,7 +381,13 @@ void EmptyInactiveLines(const BrowserContext& context, FileId part, std::string&
       size_t end = text.find('\n', line);
       if (end == std::string::npos || end > region.end) end = region.end;
       const size_t first = text.find_first_not_of(" \t", line);
-      if (first < end && text[first] != '#') {
+      const bool troubling =
+          std::any_of(text.begin() + static_cast<std::ptrdiff_t>(line),
+                      text.begin() + static_cast<std::ptrdiff_t>(end), [](char c) {
+                        return c == '"' || c == '\'' || c == '$' || c == '@' || c == '`' ||
+                               static_cast<unsigned char>(c) >= 0x80;
+                      });
+      if (troubling && first < end && text[first] != '#') {
         for (size_t i = line; i < end; ++i) {
           if (text[i] != '\r' && text[i] != '\\') text[i] = ' ';
         }
