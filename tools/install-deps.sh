@@ -16,8 +16,14 @@ build_packages=(
   libosmesa6-dev libpng-dev
   libegl1 libegl-mesa0 libgl1-mesa-dri
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libfmt-dev libmimalloc-dev
+  # cpack's DEB generator runs `file` on what it packs (the .deb of docs/ci.md);
+  # a minimal Debian 12 (debootstrap --variant=minbase, the debian:12 image) lacks it.
+  file
 )
 test_packages=(
+  # Test drivers and scripts (GitHub Action, schemas, browser pages, soak) are
+  # Python 3, which a minimal Debian lacks.
+  python3
   clang-14 libclang-rt-14-dev clang-format clang-tidy
   libgtest-dev libgmock-dev googletest libbenchmark-dev
   # The GitHub Action and pre-commit hook tests read YAML and run pre-commit.

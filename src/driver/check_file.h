@@ -27,6 +27,9 @@ struct FileJob {
   const SourceFile* source = nullptr;
   std::optional<ShaderToyPass> pass;
   std::optional<validate::ChannelTypes> channels;
+  // A tab of a project (a JSON project or a project folder): which project, for the
+  // summary's count ("" for a shader file).
+  std::string project;
 };
 
 // Thread-safe: adds the file (and generated text) to `sources` and never throws

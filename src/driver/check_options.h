@@ -30,8 +30,11 @@ struct CheckOptions {
   validate::ChannelTypes channels{};            // --channel N=2d|cube|3d (default all 2D)
   std::optional<std::filesystem::path> config;  // --config: instead of searching upward
   bool use_config = true;                       // --no-config
-  std::optional<Severity> fail_on;              // --fail-on: overrides the config's
-  unsigned jobs = 0;                            // 0: every core
+  // The config's include/exclude globs apply to files named on the command line
+  // too (--no-force-exclude: only to files found in directories).
+  bool force_exclude = true;
+  std::optional<Severity> fail_on;  // --fail-on: overrides the config's
+  unsigned jobs = 0;                // 0: every core
   // --render: smoke-render every file that validates and check the picture.
   bool render = false;
   int render_size = 64;        // --render-size: width and height in pixels

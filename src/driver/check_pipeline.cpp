@@ -50,14 +50,22 @@ CheckRun RunCheck(const CheckOptions& options) {
   SourceManager& sources = *run.sources;
 
   ConfigLookup configs(options.use_config, options.config, sources);
+  if (!configs.ExplicitConfigError().empty()) {
+    run.usage_errors.push_back(configs.ExplicitConfigError());  // nothing is checked
+    return run;
+  }
   InputSet inputs;
   if (options.in_memory) {
     inputs.files.push_back({options.in_memory->name, options.in_memory->name, true});
   } else {
-    inputs =
-        WalkInputs(options.paths, [&](const fs::path& file) { return configs.Includes(file); });
+    inputs = WalkInputs(
+        options.paths, [&](const fs::path& file) { return configs.Includes(file); },
+        options.force_exclude);
   }
   run.usage_errors = std::move(inputs.errors);
+  run.found_nothing = inputs.files.empty() && inputs.dropped == 0;
+  run.excluded = inputs.dropped;
+  run.unmatched = std::move(inputs.unmatched);
 
   std::map<fs::path, const SourceFile*> commons;
   std::deque<project::ProjectDocument> projects;  // the jobs of project passes point into them
@@ -81,7 +89,10 @@ CheckRun RunCheck(const CheckOptions& options) {
     ApplyFolderTab(job);
     jobs.push_back(std::move(job));
   }
-  for (FileReport& problem : configs.TakeProblems()) run.report.files.push_back(std::move(problem));
+  for (FileReport& problem : configs.TakeProblems()) {
+    problem.entry = ReportEntry::kInput;  // a .shaderport.toml is not a checked file
+    run.report.files.push_back(std::move(problem));
+  }
   for (FileReport& problem : project_problems) run.report.files.push_back(std::move(problem));
   // Over every input, before sharding: a pass reports its Common's findings only
   // when no shard checks Common as a file of its own.
@@ -151,6 +162,10 @@ CheckRun RunCheck(const CheckOptions& options) {
     Severity fail_on = config != nullptr ? config->fail_on : Severity::kError;
     if (options.fail_on) fail_on = *options.fail_on;
     reports[i].fail_on = fail_on;  // kept: a baseline judges the run again
+    if (!jobs[i].project.empty()) {
+      reports[i].entry = ReportEntry::kTab;
+      reports[i].project = jobs[i].project;
+    }
     for (const Diagnostic& diagnostic : reports[i].diagnostics) {
       if (diagnostic.severity >= fail_on) run.failed = true;
       if (diagnostic.rule_id.starts_with("internal/")) run.internal_error = true;

@@ -3,6 +3,7 @@
 // project's rule configuration.
 #pragma once
 
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <vector>
@@ -19,6 +20,11 @@ struct CheckRun {
   std::vector<std::string> usage_errors;  // missing paths, bad config files given with --config
   bool failed = false;                    // some finding at or above the fail-on level
   bool internal_error = false;            // some internal/* diagnostic: a shaderport bug
+  // The paths held no shader file at all, not even one the config excludes (an
+  // empty directory): the caller decides whether an empty run is an error.
+  bool found_nothing = false;
+  size_t excluded = 0;                 // files left out by the include/exclude globs
+  std::vector<std::string> unmatched;  // patterns the shell left unexpanded (InputSet)
 };
 
 CheckRun RunCheck(const CheckOptions& options);

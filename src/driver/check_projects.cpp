@@ -35,6 +35,7 @@ bool ApplyFolderTab(FileJob& job) {
   pass.inputs = project::FolderPassInputs(job.path);
   job.pass = *tab;
   job.channels = ChannelTypesOf(pass);
+  job.project = directory.lexically_normal().string();
   return true;
 }
 
@@ -53,6 +54,7 @@ void AddProjectJobs(const FileJob& base, SourceManager& sources,
     FileReport report;
     report.file = loaded.document;
     report.dialect = "shadertoy";
+    report.entry = ReportEntry::kInput;
     report.diagnostics = std::move(loaded.problems);
     problems.push_back(std::move(report));
   }
@@ -71,6 +73,7 @@ void AddProjectJobs(const FileJob& base, SourceManager& sources,
       job.source = pass.file;
       job.pass = pass.pass->kind;
       job.channels = ChannelTypesOf(*pass.pass);
+      job.project = name + "#" + std::to_string(i);
       job.common = pass.pass->kind == ShaderToyPass::kCommon ? nullptr : registered.common;
       // Common is a job of its own here: its findings are reported there, once.
       job.common_checked_separately = true;

@@ -72,7 +72,23 @@ std::vector<fs::path> WalkDirectory(const fs::path& root, std::vector<std::strin
 
 }  // namespace
 
-InputSet WalkInputs(const std::vector<fs::path>& paths, const KeepWalkedFile& keep) {
+bool IsUnmatchedPattern(const fs::path& path) {
+  std::error_code error;
+  return path.string().find_first_of("*?[") != std::string::npos && !fs::exists(path, error);
+}
+
+std::string MissingPathError(const fs::path& path) {
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);
+  if (!error && status.type() != fs::file_type::not_found) return "";
+  if (IsUnmatchedPattern(path)) return path.string() + ": no file matches this pattern";
+  // ELOOP and EACCES say more than "no such file".
+  const bool missing = !error || error == std::errc::no_such_file_or_directory;
+  return path.string() + ": " + (missing ? "no such file or directory" : error.message());
+}
+
+InputSet WalkInputs(const std::vector<fs::path>& paths, const KeepWalkedFile& keep,
+                    bool filter_named) {
   InputSet result;
   // Normal forms as strings: for normalised paths, equal strings are equal paths, and a
   // hashed string is far cheaper than comparing paths component by component.
@@ -81,22 +97,26 @@ InputSet WalkInputs(const std::vector<fs::path>& paths, const KeepWalkedFile& ke
     if (seen.insert(normal.native()).second) result.files.push_back(std::move(file));
   };
   for (const fs::path& path : paths) {
-    std::error_code error;
-    const fs::file_status status = fs::status(path, error);
-    if (error || status.type() == fs::file_type::not_found) {
-      // ELOOP and EACCES say more than "no such file".
-      const bool missing = !error || error == std::errc::no_such_file_or_directory;
-      result.errors.push_back(path.string() + ": " +
-                              (missing ? "no such file or directory" : error.message()));
+    std::string missing = MissingPathError(path);
+    if (!missing.empty()) {
+      (IsUnmatchedPattern(path) ? result.unmatched : result.errors).push_back(std::move(missing));
       continue;
     }
-    if (!fs::is_directory(status)) {
+    std::error_code error;
+    if (!fs::is_directory(path, error)) {
+      if (filter_named && keep && !keep(path)) {
+        ++result.dropped;
+        continue;
+      }
       const fs::path normal = path.lexically_normal();
       add({path, normal, true}, normal);
       continue;
     }
     for (const fs::path& file : WalkDirectory(path, result.errors)) {
-      if (keep && !keep(file)) continue;
+      if (keep && !keep(file)) {
+        ++result.dropped;
+        continue;
+      }
       add({file, file.lexically_relative(path), false}, file.lexically_normal());
     }
   }
@@ -108,6 +128,7 @@ InputFileList CollectInputFiles(const std::vector<fs::path>& paths) {
   InputFileList result;
   for (InputFile& file : inputs.files) result.files.push_back(std::move(file.path));
   result.errors = std::move(inputs.errors);
+  result.errors.insert(result.errors.end(), inputs.unmatched.begin(), inputs.unmatched.end());
   return result;
 }
 

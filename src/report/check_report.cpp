@@ -1,14 +1,21 @@
 #include "report/check_report.h"
 
 #include <algorithm>
+#include <set>
+#include <string_view>
 #include <tuple>
 
 namespace shaderport {
 
 ReportSummary Summarize(const CheckReport& report) {
   ReportSummary summary;
-  summary.files_checked = report.files.size();
+  std::set<std::string_view> projects;
   for (const FileReport& file : report.files) {
+    if (file.entry != ReportEntry::kInput) ++summary.files_checked;
+    if (file.entry == ReportEntry::kTab) {
+      ++summary.tabs_checked;
+      projects.insert(file.project);
+    }
     if (!file.diagnostics.empty()) ++summary.files_with_problems;
     for (const Diagnostic& diagnostic : file.diagnostics) {
       switch (diagnostic.severity) {
@@ -24,6 +31,7 @@ ReportSummary Summarize(const CheckReport& report) {
       }
     }
   }
+  summary.projects = projects.size();
   return summary;
 }
 

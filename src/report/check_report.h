@@ -12,6 +12,14 @@
 
 namespace shaderport {
 
+// What an entry of a report stands for, so that the summary counts what was checked.
+enum class ReportEntry {
+  kShader,  // a shader file
+  kTab,     // a tab (pass) of a ShaderToy project; FileReport::project names the project
+  kInput,   // findings about an input that is not itself checked: a .shaderport.toml,
+            // a project document's own problems
+};
+
 struct FileReport {
   const SourceFile* file = nullptr;
   std::string dialect;  // "shadertoy", "webgl1", "webgl2" ("" when unknown)
@@ -22,6 +30,8 @@ struct FileReport {
   // The least severe diagnostic that fails the check for this file (its config's
   // fail-on or --fail-on), so that the run can be judged again after a baseline.
   Severity fail_on = Severity::kError;
+  ReportEntry entry = ReportEntry::kShader;
+  std::string project{};  // kTab: the project (document and index, or folder) it belongs to
 };
 
 struct CheckReport {
@@ -47,8 +57,10 @@ struct ReportSummary {
   size_t errors = 0;
   size_t warnings = 0;
   size_t notes = 0;
-  size_t files_with_problems = 0;  // files with at least one diagnostic of any severity
-  size_t files_checked = 0;
+  size_t files_with_problems = 0;  // entries (files, tabs) with a diagnostic of any severity
+  size_t files_checked = 0;        // shader files and project tabs: what was checked
+  size_t tabs_checked = 0;         // of those, tabs of ShaderToy projects
+  size_t projects = 0;             // the projects those tabs belong to
 };
 
 ReportSummary Summarize(const CheckReport& report);

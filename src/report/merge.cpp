@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
 
@@ -126,6 +127,14 @@ bool CheckShardSet(std::vector<ParsedInput>& inputs, MergeFormat format, MergeRe
 
 // --- JSON ------------------------------------------------------------------
 
+// A report's own entries for a .shaderport.toml or a project document (whose tabs
+// are `doc.json#Tab`) hold findings about inputs, not checked files (ReportEntry).
+bool IsCheckedFile(const Json& file) {
+  const std::filesystem::path path(file["path"].get<std::string>());
+  const std::string extension = path.extension().string();
+  return path.filename() != ".shaderport.toml" && extension != ".json" && extension != ".jsonl";
+}
+
 bool MergeJson(std::vector<ParsedInput>& inputs, MergeResult& result) {
   // Each file once (a config file's own findings appear in every shard that
   // used it), then in path order as SortReport leaves them.
@@ -169,7 +178,7 @@ bool MergeJson(std::vector<ParsedInput>& inputs, MergeResult& result) {
   summary["warnings"] = warnings;
   summary["notes"] = notes;
   summary["filesWithProblems"] = with_problems;
-  summary["filesChecked"] = files.size();
+  summary["filesChecked"] = std::count_if(files.begin(), files.end(), IsCheckedFile);
   merged["files"] = std::move(files);
   result.output = Dump(merged);
   return true;

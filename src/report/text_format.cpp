@@ -225,9 +225,13 @@ class TextPrinter {
 std::string SummaryLine(const ReportSummary& summary) {
   std::string line = Plural(summary.errors, "error") + ", " + Plural(summary.warnings, "warning");
   if (summary.notes > 0) line += ", " + Plural(summary.notes, "note");
-  line += " in " + Plural(summary.files_with_problems, "file") + " (" +
-          Plural(summary.files_checked, "file") + " checked)";
-  return line;
+  line += " in " + Plural(summary.files_with_problems, "file") + " (";
+  // Tabs of ShaderToy projects are counted as such, beside the shader files.
+  const size_t files = summary.files_checked - summary.tabs_checked;
+  if (summary.tabs_checked == 0) return line + Plural(files, "file") + " checked)";
+  if (files > 0) line += Plural(files, "file") + " and ";
+  return line + Plural(summary.tabs_checked, "tab") + " of " +
+         Plural(summary.projects, "ShaderToy project") + " checked)";
 }
 
 std::string FormatText(const CheckReport& report, const ReportOptions& options) {

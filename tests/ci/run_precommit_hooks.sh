@@ -71,4 +71,19 @@ run_hook shaderport-fix shaders/fixable.frag >/dev/null || {
   echo "FAIL: a second shaderport-fix changed the file again" >&2
   exit 1
 }
-echo "pre-commit hooks: check fails on an error and passes clean code; fix rewrites once"
+# shaderport-fix passes a file it cannot change whose findings are only warnings
+# (as ruff's and eslint's fixers do): an array read before it is written has no
+# zero to write in GLSL ES 1.00.
+printf 'precision mediump float;\nvoid main() {\n  int i = 0;\n  float a[4];\n  gl_FragColor = vec4(a[i]);\n}\n' >shaders/warning.frag
+git add shaders/warning.frag
+before=$(cat shaders/warning.frag)
+output=$(run_hook shaderport-fix shaders/warning.frag) || {
+  echo "FAIL: shaderport-fix failed on a file with only unfixable warnings:" >&2
+  echo "$output" >&2
+  exit 1
+}
+[[ $(cat shaders/warning.frag) == "$before" ]] || {
+  echo "FAIL: shaderport-fix changed shaders/warning.frag" >&2
+  exit 1
+}
+echo "pre-commit hooks: check fails on an error and passes clean code; fix rewrites once and passes unfixable warnings"

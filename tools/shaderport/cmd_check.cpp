@@ -1,5 +1,6 @@
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -11,11 +12,14 @@
 #include <vector>
 
 #include "cache_settings.h"
+#include "cli_errors.h"
 #include "commands.h"
 #include "driver/check_pipeline.h"
 #include "driver/port/output_files.h"
 #include "driver/port/rule_reference.h"
 #include "driver/read_input.h"
+#include "empty_input.h"
+#include "option_names.h"
 #include "progress_line.h"
 #include "report/baseline.h"
 #include "report/merge.h"
@@ -38,6 +42,8 @@ struct CheckArgs {
   std::vector<std::string> channels;
   std::string config;
   bool no_config = false;
+  bool no_force_exclude = false;  // --no-force-exclude
+  bool allow_empty = false;       // --allow-empty
   unsigned jobs = 0;
   std::string color = "auto";
   bool render = false;
@@ -89,30 +95,28 @@ bool UseColor(const std::string& mode) {
   return isatty(STDOUT_FILENO) != 0 && (no_color == nullptr || *no_color == '\0');
 }
 
-int Usage(const std::string& message) {
-  std::fprintf(stderr, "shaderport check: error: %s\n", message.c_str());
-  return kExitUsage;
-}
-
 int RunCheckCommand(const CheckArgs& args) {
   driver::CheckOptions options;
   for (const std::string& path : args.paths) options.paths.emplace_back(path);
   const auto format = ParseOutputFormat(args.format);
-  if (!format) return Usage("unknown --format '" + args.format + "'");
+  if (!format) return UsageError(UnknownName("--format", args.format, kFormatNames));
+  if (std::find(kWhenNames.begin(), kWhenNames.end(), args.color) == kWhenNames.end()) {
+    return UsageError(UnknownName("--color", args.color, kWhenNames));
+  }
   if (!args.dialect.empty()) {
     options.dialect = driver::ParseDialect(args.dialect);
-    if (!options.dialect) return Usage("unknown --dialect '" + args.dialect + "'");
+    if (!options.dialect) return UsageError(UnknownName("--dialect", args.dialect, kDialectNames));
   }
   if (!args.stage.empty()) {
     options.stage = driver::ParseStage(args.stage);
-    if (!options.stage) return Usage("unknown --stage '" + args.stage + "'");
+    if (!options.stage) return UsageError(UnknownName("--stage", args.stage, kStageNames));
   }
   if (!args.target.empty()) {
     options.target = driver::ParseTarget(args.target);
-    if (!options.target) return Usage("unknown --target '" + args.target + "'");
+    if (!options.target) return UsageError(UnknownName("--target", args.target, kTargetNames));
   }
   if (!args.link.empty()) {
-    if (args.link.size() % 2 != 0) return Usage("--link takes a vertex and a fragment shader");
+    if (args.link.size() % 2 != 0) return UsageError("--link takes a vertex and a fragment shader");
     for (size_t i = 0; i + 1 < args.link.size(); i += 2) {
       options.links.emplace_back(args.link[i], args.link[i + 1]);
       options.paths.emplace_back(args.link[i]);
@@ -121,28 +125,29 @@ int RunCheckCommand(const CheckArgs& args) {
   }
   if (!args.fail_on.empty()) {
     options.fail_on = SeverityFromName(args.fail_on);
-    if (!options.fail_on) return Usage("unknown --fail-on '" + args.fail_on + "'");
+    if (!options.fail_on) return UsageError(UnknownName("--fail-on", args.fail_on, kSeverityNames));
   }
   for (const std::string& spec : args.channels) {
     if (!ParseChannel(spec, options.channels)) {
-      return Usage("bad --channel '" + spec + "' (expected N=2d|cube|3d, N from 0 to 3)");
+      return UsageError("bad --channel '" + spec + "' (expected N=2d|cube|3d, N from 0 to 3)");
     }
   }
   if (!args.common.empty()) options.common = args.common;
   if (!args.config.empty()) options.config = args.config;
   options.use_config = !args.no_config;
+  options.force_exclude = !args.no_force_exclude;
   options.jobs = args.jobs;
   if (args.render_size < 1 || args.render_size > 4096) {
-    return Usage("--render-size must be between 1 and 4096");
+    return UsageError("--render-size must be between 1 and 4096");
   }
-  if (args.render_timeout <= 0) return Usage("--render-timeout must be positive");
+  if (args.render_timeout <= 0) return UsageError("--render-timeout must be positive");
   options.render = args.render;
   options.render_size = args.render_size;
   options.render_timeout = args.render_timeout;
   if (!args.shard.empty()) {
     std::string error;
     options.shard = driver::ParseShardSpec(args.shard, error);
-    if (!options.shard) return Usage(error);
+    if (!options.shard) return UsageError(error);
   }
   if (!args.no_cache) {
     options.cache_directory = CacheDirectory(args.cache_dir);
@@ -152,20 +157,20 @@ int RunCheckCommand(const CheckArgs& args) {
   if (!args.baseline.empty()) {
     std::string error;
     baseline = ReadBaselineFile(args.baseline, error);
-    if (!baseline) return Usage("bad --baseline '" + args.baseline + "': " + error);
+    if (!baseline) return UsageError("bad --baseline '" + args.baseline + "': " + error);
   }
 
   const std::optional<ProgressMode> progress_mode = ParseProgressMode(args.progress);
-  if (!progress_mode) return Usage("unknown --progress '" + args.progress + "'");
+  if (!progress_mode) return UsageError(UnknownName("--progress", args.progress, kWhenNames));
   if (!args.stdin_filename.empty() && !args.stdin_input) {
-    return Usage("--stdin-filename needs --stdin");
+    return UsageError("--stdin-filename needs --stdin");
   }
   if (args.stdin_input) {
-    if (!options.paths.empty()) return Usage("--stdin takes no files, directories or --link");
+    if (!options.paths.empty()) return UsageError("--stdin takes no files, directories or --link");
     const std::string name = args.stdin_filename.empty() ? "<stdin>" : args.stdin_filename;
     options.in_memory = {name, driver::ReadInputStream(std::cin)};
   } else if (options.paths.empty()) {
-    return Usage("no files or directories to check");
+    return UsageError("no files or directories to check");
   }
   // -q asks for the findings alone; --progress always still draws the line.
   ProgressLine progress(
@@ -175,9 +180,16 @@ int RunCheckCommand(const CheckArgs& args) {
   options.release_clean_texts = true;  // the formats below print findings only
   driver::CheckRun run = driver::RunCheck(options);
   progress.Clear();
-  for (const std::string& error : run.usage_errors) {
-    std::fprintf(stderr, "shaderport check: error: %s\n", error.c_str());
+  if (!args.allow_empty) {
+    // An unexpanded glob or a directory without shaders is a mistake in CI: a
+    // gate that checks nothing must not pass (eslint's errorOnUnmatchedPattern).
+    run.usage_errors.insert(run.usage_errors.end(), run.unmatched.begin(), run.unmatched.end());
+    if (run.found_nothing && run.usage_errors.empty() && !args.stdin_input) {
+      return UsageError(NothingToDo(args.paths, "check"));
+    }
   }
+  for (const std::string& error : run.usage_errors) PrintError(error);
+  if (!run.usage_errors.empty() && run.report.files.empty()) return kExitUsage;  // nothing ran
   SortReport(run.report);
   ReportOptions report_options;
   report_options.tool_version = SHADERPORT_VERSION;
@@ -234,7 +246,8 @@ int RunCheckCommand(const CheckArgs& args) {
   std::fwrite(output.data(), 1, output.size(), stdout);
   std::fflush(stdout);
   if (!write_error.empty()) {
-    return Usage("cannot write --write-baseline '" + args.write_baseline + "': " + write_error);
+    return UsageError("cannot write --write-baseline '" + args.write_baseline +
+                      "': " + write_error);
   }
   if (run.internal_error) return kExitInternal;
   if (!run.usage_errors.empty()) return kExitUsage;
@@ -267,10 +280,13 @@ void AddCheckCommand(CLI::App& app, int& exit_code) {
   command->add_option("--common", args->common,
                       "ShaderToy Common code compiled before every ShaderToy pass "
                       "(default: common.glsl beside the pass)");
-  command->add_option("--channel", args->channels,
-                      "Sampler type of a ShaderToy channel, N=2d|cube|3d (repeatable)");
+  command
+      ->add_option("--channel", args->channels,
+                   "Sampler type of a ShaderToy channel, N=2d|cube|3d (repeatable)")
+      ->allow_extra_args(false);  // one value: `--channel 0=cube file.glsl` checks the file
   command->add_option("--config", args->config, "Use this .shaderport.toml instead of searching");
   command->add_flag("--no-config", args->no_config, "Ignore .shaderport.toml files");
+  AddEmptyInputOptions(*command, args->allow_empty, args->no_force_exclude);
   command->add_option("-j,--jobs", args->jobs, "Files checked in parallel (default: all cores)");
   command->add_flag("--render", args->render,
                     "Also smoke-render each file that validates and check the picture");

@@ -1,8 +1,10 @@
 #include <cstdio>
 #include <string>
 
+#include "cli_errors.h"
 #include "commands.h"
 #include "driver/dump.h"
+#include "driver/input_files.h"
 #include "report/output_format.h"
 
 namespace shaderport::cli {
@@ -19,16 +21,16 @@ struct DumpArgs {
 int RunDump(const DumpArgs& args) {
   const int chosen = int{args.tokens} + int{args.pp_tokens} + int{args.ast} + int{args.types};
   if (chosen != 1) {
-    std::fprintf(stderr,
-                 "shaderport dump: error: give exactly one of --tokens, --pp-tokens, "
-                 "--ast, --types\n");
-    return kExitUsage;
+    return UsageError("give exactly one of --tokens, --pp-tokens, --ast, --types");
   }
   driver::DumpKind kind = driver::DumpKind::kTypes;
   if (args.tokens) kind = driver::DumpKind::kTokens;
   if (args.pp_tokens) kind = driver::DumpKind::kPpTokens;
   if (args.ast) kind = driver::DumpKind::kAst;
 
+  if (const std::string missing = driver::MissingPathError(args.path); !missing.empty()) {
+    return UsageError(missing);
+  }
   SourceManager sources;
   driver::DumpResult result = driver::DumpFile(args.path, kind, sources);
   std::fwrite(result.text.data(), 1, result.text.size(), stdout);

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_errors.h"
 #include "commands.h"
 #include "driver/check_projects.h"
 #include "driver/port/file_lock.h"
@@ -19,6 +20,7 @@
 #include "driver/port/port_report.h"
 #include "driver/project/fix_document.h"
 #include "driver/read_input.h"
+#include "option_names.h"
 #include "port_arguments.h"
 
 namespace shaderport::cli {
@@ -32,17 +34,13 @@ struct FixArgs {
   PortArguments port;
   bool stdin_input = false;    // --stdin
   std::string stdin_filename;  // --stdin-filename
+  std::string fail_on = "error";
 };
-
-int Usage(const std::string& message) {
-  std::fprintf(stderr, "shaderport fix: error: %s\n", message.c_str());
-  return kExitUsage;
-}
 
 int WriteOrReport(const std::filesystem::path& path, const std::string& text) {
   const std::string error = driver::WriteFileAtomically(path, text);
   if (error.empty()) return kExitOk;
-  std::fprintf(stderr, "shaderport fix: %s\n", error.c_str());
+  PrintError(error);
   return kExitInternal;
 }
 
@@ -90,20 +88,22 @@ void AddDocumentResults(driver::project::FixedDocument fixed,
 }
 
 int RunFix(const FixArgs& args) {
+  const std::optional<Severity> fail_on = SeverityFromName(args.fail_on);
+  if (!fail_on) return UsageError(UnknownName("--fail-on", args.fail_on, kSeverityNames));
   SourceManager sources;
   driver::PortOptions options;
   options.mode = rule::PortMode::kFix;
   std::optional<rule::HarnessDialect> harness;
-  if (!ApplyPortArguments("fix", args.port, options, sources, harness)) return kExitUsage;
+  if (!ApplyPortArguments(args.port, options, sources, harness)) return kExitUsage;
   if (!args.stdin_filename.empty() && !args.stdin_input) {
-    return Usage("--stdin-filename needs --stdin");
+    return UsageError("--stdin-filename needs --stdin");
   }
 
   int exit_code = kExitOk;
   std::vector<driver::PortResult> results;
   if (args.stdin_input) {
-    if (!args.input.paths.empty()) return Usage("--stdin takes no files or directories");
-    if (args.in_place) return Usage("standard input cannot be fixed in place");
+    if (!args.input.paths.empty()) return UsageError("--stdin takes no files or directories");
+    if (args.in_place) return UsageError("standard input cannot be fixed in place");
     const std::filesystem::path name =
         args.stdin_filename.empty() ? "<stdin>" : args.stdin_filename;
     if (driver::IsProjectDocument(name)) {
@@ -118,19 +118,16 @@ int RunFix(const FixArgs& args) {
     }
   } else {
     bool config_failed = false;
-    const auto inputs = SelectInputFiles("fix", args.input, config_failed);
+    const auto inputs = SelectInputFiles(args.input, "fix", config_failed);
     if (!inputs) return kExitUsage;
     if (config_failed) exit_code = kExitFindings;
     if (!args.output.empty() && inputs->size() != 1) {
-      return Usage("-o takes exactly one input file, and the paths hold " +
-                   std::to_string(inputs->size()));
+      return UsageError("-o takes exactly one input file, and the paths hold " +
+                        std::to_string(inputs->size()));
     }
     if (inputs->size() > 1 && !args.in_place && !args.diff) {
-      return Usage("the paths hold " + std::to_string(inputs->size()) +
-                   " files: fix prints one file; use --in-place or --diff for several");
-    }
-    if (inputs->empty()) {
-      std::fprintf(stderr, "shaderport fix: warning: no shader files in the given paths\n");
+      return UsageError("the paths hold " + std::to_string(inputs->size()) +
+                        " files: fix prints one file; use --in-place or --diff for several");
     }
     for (const driver::InputFile& input : *inputs) {
       // Held from reading to writing: a concurrent `fix -i` of the same file
@@ -151,7 +148,7 @@ int RunFix(const FixArgs& args) {
   if (!driver::HasFindings(results)) return exit_code;
   const bool color = ::isatty(STDERR_FILENO) != 0 && std::getenv("NO_COLOR") == nullptr;
   std::fputs(driver::FormatPortFindings(results, sources, color).c_str(), stderr);
-  return std::max(exit_code, kExitFindings);
+  return std::max(exit_code, driver::FailsAt(results, *fail_on) ? kExitFindings : kExitOk);
 }
 
 }  // namespace
@@ -171,8 +168,12 @@ void AddFixCommand(CLI::App& app, int& exit_code) {
   in_place->excludes(output);
   command->add_option("--dialect", args->port.dialect,
                       "shadertoy|webgl1|webgl2, a harness dialect name, or a dialect TOML");
-  command->add_option("--channel", args->port.channels, "Sampler type of a channel: N=2d|cube|3d");
+  command
+      ->add_option("--channel", args->port.channels,
+                   "Sampler type of a channel: N=2d|cube|3d (repeatable)")
+      ->allow_extra_args(false);
   command->add_option("--stage", args->port.stage, "vertex|fragment (default: detected)");
+  AddFailOnOption(*command, args->fail_on);
   command->add_flag("--stdin", args->stdin_input,
                     "Fix the shader read from standard input (the result goes to standard output)");
   command->add_option("--stdin-filename", args->stdin_filename,

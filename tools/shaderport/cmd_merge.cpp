@@ -4,7 +4,9 @@
 #include <string>
 #include <vector>
 
+#include "cli_errors.h"
 #include "commands.h"
+#include "option_names.h"
 #include "report/merge.h"
 
 namespace shaderport::cli {
@@ -17,11 +19,6 @@ struct MergeArgs {
   std::string output;
 };
 
-int Usage(const std::string& message) {
-  std::fprintf(stderr, "shaderport merge: error: %s\n", message.c_str());
-  return kExitUsage;
-}
-
 int RunMergeCommand(const MergeArgs& args) {
   std::optional<MergeFormat> format;
   if (args.format == "json") {
@@ -29,21 +26,21 @@ int RunMergeCommand(const MergeArgs& args) {
   } else if (args.format == "sarif") {
     format = MergeFormat::kSarif;
   } else if (!args.format.empty()) {
-    return Usage("unknown --format '" + args.format + "' (json or sarif)");
+    return UsageError(UnknownName("--format", args.format, kMergeFormatNames));
   }
   const std::optional<Severity> fail_on = SeverityFromName(args.fail_on);
-  if (!fail_on) return Usage("unknown --fail-on '" + args.fail_on + "'");
-  if (args.files.empty()) return Usage("no reports to merge");
+  if (!fail_on) return UsageError(UnknownName("--fail-on", args.fail_on, kSeverityNames));
+  if (args.files.empty()) return UsageError("no reports to merge");
   std::vector<MergeInput> inputs;
   for (const std::string& name : args.files) {
     std::ifstream in(name, std::ios::binary);
-    if (!in) return Usage(name + ": cannot be read");
+    if (!in) return UsageError(name + ": cannot be read");
     std::ostringstream text;
     text << in.rdbuf();
     inputs.push_back({name, text.str()});
   }
   const MergeResult merged = MergeReports(inputs, format);
-  for (const std::string& error : merged.errors) Usage(error);
+  for (const std::string& error : merged.errors) PrintError(error);
   if (!merged.errors.empty()) return kExitUsage;
   if (args.output.empty()) {
     std::fwrite(merged.output.data(), 1, merged.output.size(), stdout);
@@ -52,7 +49,7 @@ int RunMergeCommand(const MergeArgs& args) {
     std::ofstream out(args.output, std::ios::binary);
     out << merged.output;
     if (!out.flush()) {
-      std::fprintf(stderr, "shaderport merge: error: cannot write %s\n", args.output.c_str());
+      PrintError("cannot write " + args.output);
       return kExitInternal;
     }
   }

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "cli_errors.h"
 #include "commands.h"
 #include "driver/check_projects.h"
 #include "driver/dialect.h"
@@ -22,6 +23,7 @@
 #include "driver/port/port_report.h"
 #include "driver/project/folder_project.h"
 #include "driver/read_input.h"
+#include "option_names.h"
 #include "port_arguments.h"
 #include "port_projects.h"
 #include "progress_line.h"
@@ -44,31 +46,25 @@ struct PortArgs {
   int msl_version = 20000;
   int jobs = 0;
   std::string progress = "auto";
+  std::string fail_on = "error";
 };
-
-int Usage(const std::string& message) {
-  std::fprintf(stderr, "shaderport port: error: %s\n", message.c_str());
-  return kExitUsage;
-}
 
 int RunPort(const PortArgs& args) {
   const std::optional<ProgressMode> progress_mode = ParseProgressMode(args.progress);
-  if (!progress_mode) return Usage("unknown --progress '" + args.progress + "'");
+  if (!progress_mode) return UsageError(UnknownName("--progress", args.progress, kWhenNames));
   // A page is made from the ported shaders; a folder is the project as written.
   const bool emit_html = args.emit == "html";
   const bool emit_folder = args.emit == "folder";
   const auto emit_kind = emit_html || emit_folder ? std::optional(toolchain::EmitKind::kEssl)
                                                   : toolchain::EmitKindFromName(args.emit);
-  if (!emit_kind) {
-    std::fprintf(stderr, "shaderport port: unknown --emit kind '%s'\n", args.emit.c_str());
-    return kExitUsage;
-  }
+  if (!emit_kind) return UsageError(UnknownName("--emit", args.emit, kEmitNames));
+  const std::optional<Severity> fail_on = SeverityFromName(args.fail_on);
+  if (!fail_on) return UsageError(UnknownName("--fail-on", args.fail_on, kSeverityNames));
   SourceManager sources;
   driver::PortOptions options;
   options.mode = rule::PortMode::kPort;
   std::optional<rule::HarnessDialect> harness;
-  if (!ApplyPortArguments("port", {args.dialect, args.channels, args.stage}, options, sources,
-                          harness)) {
+  if (!ApplyPortArguments({args.dialect, args.channels, args.stage}, options, sources, harness)) {
     return kExitUsage;
   }
   toolchain::EmitOptions emit_options;
@@ -77,18 +73,15 @@ int RunPort(const PortArgs& args) {
   emit_options.hlsl_shader_model = args.hlsl_shader_model;
   emit_options.msl_version = args.msl_version;
   bool config_failed = false;
-  const auto inputs = SelectInputFiles("port", args.input, config_failed);
+  const auto inputs = SelectInputFiles(args.input, "port", config_failed);
   if (!inputs) return kExitUsage;
   const int config_exit = config_failed ? kExitFindings : kExitOk;
   // A page may draw two files (a vertex and a fragment shader): --emit html checks -o.
   if (!args.output.empty() && inputs->size() != 1 && !emit_html) {
-    return Usage("-o takes exactly one input file, and the paths hold " +
-                 std::to_string(inputs->size()) + " (use --out-dir)");
+    return UsageError("-o takes exactly one input file, and the paths hold " +
+                      std::to_string(inputs->size()) + " (use --out-dir)");
   }
-  if (inputs->empty()) {
-    std::fprintf(stderr, "shaderport port: warning: no shader files in the given paths\n");
-    return config_exit;
-  }
+  if (inputs->empty()) return config_exit;  // --allow-empty, or all excluded
   // ShaderToy projects (and any input of --emit html) give several files or a page.
   const bool any_project =
       std::any_of(inputs->begin(), inputs->end(), [](const driver::InputFile& input) {
@@ -97,12 +90,12 @@ int RunPort(const PortArgs& args) {
       });
   if (emit_html || emit_folder || any_project) {
     if (*emit_kind != toolchain::EmitKind::kEssl)
-      return Usage("ShaderToy projects are ported with --emit essl, html or folder");
+      return UsageError("ShaderToy projects are ported with --emit essl, html or folder");
     const ProjectEmit emit = emit_html     ? ProjectEmit::kHtml
                              : emit_folder ? ProjectEmit::kFolder
                                            : ProjectEmit::kShaders;
     const int code =
-        PortProjectInputs(*inputs, options, {args.output, args.out_dir, emit}, sources);
+        PortProjectInputs(*inputs, options, {args.output, args.out_dir, emit, *fail_on}, sources);
     return std::max(code, config_exit);
   }
 
@@ -153,7 +146,7 @@ int RunPort(const PortArgs& args) {
   // -o names its one target; --out-dir makes them up, so it must not make two
   // alike or replace an input.
   const std::string clash = args.out_dir.empty() ? "" : driver::OutputClash(input_paths, targets);
-  if (!clash.empty()) return Usage(clash + "; nothing was written");
+  if (!clash.empty()) return UsageError(clash + "; nothing was written");
 
   int exit_code = config_exit;
   for (size_t i = 0; i < results.size(); ++i) {
@@ -166,7 +159,7 @@ int RunPort(const PortArgs& args) {
         std::filesystem::create_directories(target.parent_path(), error);
       const std::string why = driver::WriteFileAtomically(target, output);
       if (!why.empty()) {
-        std::fprintf(stderr, "shaderport port: %s\n", why.c_str());
+        PrintError(why);
         exit_code = kExitInternal;
       }
     } else {
@@ -176,7 +169,7 @@ int RunPort(const PortArgs& args) {
   if (!driver::HasFindings(results)) return exit_code;
   const bool color = ::isatty(STDERR_FILENO) != 0 && std::getenv("NO_COLOR") == nullptr;
   std::fputs(driver::FormatPortFindings(results, sources, color).c_str(), stderr);
-  return std::max(exit_code, kExitFindings);
+  return std::max(exit_code, driver::FailsAt(results, *fail_on) ? kExitFindings : kExitOk);
 }
 
 }  // namespace
@@ -191,7 +184,10 @@ void AddPortCommand(CLI::App& app, int& exit_code) {
                                       "Write each result under DIR (same relative name)");
   output->excludes(out_dir);
   command->add_option("--dialect", args->dialect, "shadertoy|webgl1|webgl2 or a dialect TOML");
-  command->add_option("--channel", args->channels, "Sampler type of a channel: N=2d|cube|3d");
+  command
+      ->add_option("--channel", args->channels,
+                   "Sampler type of a channel: N=2d|cube|3d (repeatable)")
+      ->allow_extra_args(false);
   command->add_option("--stage", args->stage, "vertex|fragment (default: detected)");
   command->add_option(
       "--emit", args->emit,
@@ -203,6 +199,7 @@ void AddPortCommand(CLI::App& app, int& exit_code) {
   command->add_option("--msl-version", args->msl_version,
                       "MSL version for --emit msl, e.g. 20000 (2.0, default)");
   command->add_option("-j,--jobs", args->jobs, "Files ported in parallel (default: all cores)");
+  AddFailOnOption(*command, args->fail_on);
   command
       ->add_option("--progress", args->progress,
                    "auto | always | never: a progress line on standard error (auto: on a "

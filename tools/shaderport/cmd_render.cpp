@@ -4,12 +4,16 @@
 #include <filesystem>
 #include <string>
 
+#include "cli_errors.h"
 #include "commands.h"
 #include "driver/check_file.h"
 #include "driver/check_projects.h"
+#include "driver/input_files.h"
+#include "driver/port/writable_path.h"
 #include "driver/project/folder_project.h"
 #include "driver/render_check/render_file.h"
 #include "driver/render_check/render_multipass.h"
+#include "option_names.h"
 #include "render/png_io.h"
 #include "report/output_format.h"
 
@@ -35,11 +39,6 @@ struct RenderArgs {
   std::string fail_on = "error";
 };
 
-int Usage(const std::string& message) {
-  std::fprintf(stderr, "shaderport render: error: %s\n", message.c_str());
-  return kExitUsage;
-}
-
 bool ParseSize(const std::string& text, uint32_t& width, uint32_t& height) {
   unsigned w = 0;
   unsigned h = 0;
@@ -54,25 +53,25 @@ bool ParseSize(const std::string& text, uint32_t& width, uint32_t& height) {
 int RunRender(const RenderArgs& args) {
   driver::RenderFileOptions options;
   if (!ParseSize(args.size, options.base.width, options.base.height)) {
-    return Usage("--size must be WIDTHxHEIGHT, each 1..4096");
+    return UsageError("--size must be WIDTHxHEIGHT, each 1..4096");
   }
-  if (args.frames < 1 || args.frames > 10000) return Usage("--frames must be 1..10000");
+  if (args.frames < 1 || args.frames > 10000) return UsageError("--frames must be 1..10000");
   if (!args.mouse.empty() && args.mouse.size() != 2 && args.mouse.size() != 4) {
-    return Usage("--mouse takes x,y or x,y,click_x,click_y");
+    return UsageError("--mouse takes x,y or x,y,click_x,click_y");
   }
   if (args.timeout_seconds <= 0 || args.timeout_seconds > 3600) {
-    return Usage("--timeout must be 0..3600 seconds");
+    return UsageError("--timeout must be 0..3600 seconds");
   }
   if (!args.backend.empty()) {
     const auto backend = render::BackendFromName(args.backend);
-    if (!backend) return Usage("--backend must be osmesa or egl");
+    if (!backend) return UsageError(UnknownName("--backend", args.backend, kBackendNames));
     options.render.backend = *backend;
   }
   for (const std::string& spec : args.channel_types) {
     const std::string type = spec.size() > 2 ? spec.substr(2) : "";
     if (spec.size() < 3 || spec[1] != '=' || spec[0] < '0' || spec[0] > '3' ||
         (type != "2d" && type != "cube" && type != "3d")) {
-      return Usage("--channel-type takes N=2d|cube|3d");
+      return UsageError("--channel-type takes N=2d|cube|3d");
     }
     options.channel_types[static_cast<size_t>(spec[0] - '0')] =
         type == "cube" ? validate::ChannelType::kCube
@@ -89,16 +88,25 @@ int RunRender(const RenderArgs& args) {
   options.webgl_semantics = !args.native;
   options.browser_optimiser = args.browser_optimiser;
   if (args.native && args.browser_optimiser) {
-    return Usage("--browser-optimiser needs the browser semantics that --native turns off");
+    return UsageError("--browser-optimiser needs the browser semantics that --native turns off");
   }
   const std::optional<Severity> fail_on = SeverityFromName(args.fail_on);
-  if (!fail_on) return Usage("unknown --fail-on '" + args.fail_on + "' (error, warning or note)");
+  if (!fail_on) return UsageError(UnknownName("--fail-on", args.fail_on, kSeverityNames));
 
+  if (const std::string missing = driver::MissingPathError(args.path); !missing.empty()) {
+    return UsageError(missing);
+  }
+  if (!args.output.empty()) {
+    // Before drawing: "rendered" must never be printed for a picture that cannot be kept.
+    if (const std::string why = driver::UnwritablePath(args.output); !why.empty()) {
+      return UsageError(why);
+    }
+  }
   SourceManager sources;
   if (!args.common.empty()) {
     std::string error;
     options.common = driver::LoadSharedFile(args.common, sources, error);
-    if (options.common == nullptr) return Usage(error);
+    if (options.common == nullptr) return UsageError(error);
   }
   // A ShaderToy project (JSON export or record, .jsonl, a project folder) is drawn
   // with all its passes; anything else is one shader.
@@ -113,7 +121,7 @@ int RunRender(const RenderArgs& args) {
   if (result.image && !args.output.empty()) {
     std::string error;
     if (!render::WritePng(args.output, *result.image, error)) {
-      std::fprintf(stderr, "shaderport render: error: %s\n", error.c_str());
+      PrintError(error);
       code = kExitInternal;
     }
   }
@@ -160,13 +168,16 @@ void AddRenderCommand(CLI::App& app, int& exit_code) {
   command->add_option("--time", args->time, "iTime of the first frame in seconds (default 1)");
   command->add_option("--frame", args->frame, "iFrame of the first frame (default 0)");
   command->add_option("--mouse", args->mouse, "iMouse: x,y[,click_x,click_y] in pixels")
-      ->delimiter(',');
+      ->delimiter(',')
+      ->allow_extra_args(false);
   for (size_t i = 0; i < 4; ++i) {
     command->add_option("--channel" + std::to_string(i), args->channels[i],
                         "PNG image for iChannel" + std::to_string(i));
   }
-  command->add_option("--channel-type", args->channel_types,
-                      "Sampler kind of a ShaderToy channel: N=2d|cube|3d");
+  command
+      ->add_option("--channel-type", args->channel_types,
+                   "Sampler kind of a ShaderToy channel: N=2d|cube|3d (repeatable)")
+      ->allow_extra_args(false);
   command->add_option("--common", args->common, "ShaderToy Common code to prepend");
   command->add_option("--backend", args->backend, "osmesa or egl (default osmesa)");
   command->add_option("--timeout", args->timeout_seconds,

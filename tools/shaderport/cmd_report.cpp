@@ -5,9 +5,12 @@
 #include <string>
 #include <vector>
 
+#include "cli_errors.h"
 #include "commands.h"
 #include "driver/html_report/build_report.h"
 #include "driver/port/output_files.h"
+#include "empty_input.h"
+#include "option_names.h"
 
 namespace shaderport::cli {
 namespace {
@@ -22,17 +25,12 @@ struct ReportArgs {
   bool hermetic = false;
 };
 
-int Usage(const std::string& message) {
-  std::fprintf(stderr, "shaderport report: error: %s\n", message.c_str());
-  return kExitUsage;
-}
-
 int RunReport(const ReportArgs& args) {
-  if (args.html.empty()) return Usage("--html OUT.html is required");
-  if (args.jobs < 0) return Usage("-j must be 0 or more");
-  if (args.size < 1 || args.size > 1024) return Usage("--size must be 1..1024");
+  if (args.html.empty()) return UsageError("--html OUT.html is required");
+  if (args.jobs < 0) return UsageError("-j must be 0 or more");
+  if (args.size < 1 || args.size > 1024) return UsageError("--size must be 1..1024");
   if (args.timeout_seconds <= 0 || args.timeout_seconds > 3600) {
-    return Usage("--timeout must be 0..3600 seconds");
+    return UsageError("--timeout must be 0..3600 seconds");
   }
   driver::HtmlReportOptions options;
   for (const std::string& path : args.paths) options.paths.emplace_back(path);
@@ -41,7 +39,7 @@ int RunReport(const ReportArgs& args) {
   options.tool_version = SHADERPORT_VERSION;
   if (!args.backend.empty()) {
     const auto backend = render::BackendFromName(args.backend);
-    if (!backend) return Usage("--backend must be osmesa or egl");
+    if (!backend) return UsageError(UnknownName("--backend", args.backend, kBackendNames));
     options.render.backend = *backend;
   }
   options.render.timeout =
@@ -49,15 +47,15 @@ int RunReport(const ReportArgs& args) {
   options.render.hermetic = args.hermetic;
 
   const driver::HtmlReportRun run = driver::BuildHtmlReport(options);
-  for (const std::string& error : run.usage_errors) {
-    std::fprintf(stderr, "shaderport report: error: %s\n", error.c_str());
+  if (run.found_nothing && run.usage_errors.empty()) {
+    return UsageError(NothingToDo(args.paths, "report on"));
   }
+  for (const std::string& error : run.usage_errors) PrintError(error);
   if (!run.usage_errors.empty() && run.report.entries.empty()) return kExitUsage;
   const std::string html = driver::FormatHtmlReport(run.report);
   const std::string error = driver::WriteFileAtomically(args.html, html);
   if (!error.empty()) {
-    std::fprintf(stderr, "shaderport report: error: cannot write %s: %s\n", args.html.c_str(),
-                 error.c_str());
+    PrintError("cannot write " + args.html + ": " + error);
     return kExitInternal;
   }
   const driver::ReportCounts counts = driver::CountReport(run.report);

@@ -3,8 +3,10 @@
 #include <string>
 #include <vector>
 
+#include "cli_errors.h"
 #include "commands.h"
 #include "driver/summary.h"
+#include "empty_input.h"
 
 namespace shaderport::cli {
 namespace {
@@ -13,9 +15,8 @@ int RunSummary(const std::vector<std::string>& args, unsigned jobs) {
   std::vector<std::filesystem::path> paths(args.begin(), args.end());
   std::vector<std::string> path_errors;
   const std::vector<driver::SummaryRow> rows = driver::Summarize(paths, jobs, path_errors);
-  for (const std::string& error : path_errors) {
-    std::fprintf(stderr, "shaderport summary: error: %s\n", error.c_str());
-  }
+  for (const std::string& error : path_errors) PrintError(error);
+  if (rows.empty() && path_errors.empty()) return UsageError(NothingToDo(args, "summarise"));
   std::printf("%-48s %-9s %-8s %7s %7s %6s %11s %9s %6s\n", "file", "dialect", "stage", "bytes",
               "tokens", "nodes", "typed", "mismatch", "errors");
   driver::SummaryRow total;

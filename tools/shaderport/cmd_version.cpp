@@ -1,6 +1,7 @@
 #include <cstdio>
 
 #include "allocator_name.h"
+#include "cli_errors.h"
 #include "commands.h"
 #include "toolchain/toolchain_probe.h"
 
@@ -21,7 +22,7 @@ void AddVersionCommand(CLI::App& app, int& exit_code) {
     std::printf("OSMesa: %s (%s)\n", report.osmesa_renderer.c_str(), report.osmesa_version.c_str());
     std::printf("allocator: %s\n", AllocatorName().c_str());
     if (!report.error.empty()) {
-      std::fprintf(stderr, "shaderport: %s\n", report.error.c_str());
+      PrintError(report.error);
       exit_code = kExitInternal;
     }
   });

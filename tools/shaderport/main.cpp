@@ -1,14 +1,18 @@
 // The shaderport command line: a thin layer over the library.
-#include <cstdio>
 #include <exception>
 
+#include "cli_errors.h"
 #include "commands.h"
+#include "parse_errors.h"
 
 int main(int argc, char** argv) {
   using namespace shaderport::cli;
-  CLI::App app{"shaderport: lint, validate and port ShaderToy and WebGL shaders to WebGL2"};
+  CLI::App app{"shaderport: lint, validate and port ShaderToy and WebGL shaders to WebGL2",
+               "shaderport"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("shaderport ") + SHADERPORT_VERSION);
+  app.footer(
+      "Run 'shaderport help COMMAND' (or 'shaderport COMMAND --help') for a command's options.");
   int exit_code = kExitOk;
   AddVersionCommand(app, exit_code);
   AddCheckCommand(app, exit_code);
@@ -22,16 +26,16 @@ int main(int argc, char** argv) {
   AddReportCommand(app, exit_code);
   AddMergeCommand(app, exit_code);
   try {
+    if (const auto handled = HandleCommandWord(app, argc, argv)) return *handled;
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    app.exit(e);
-    return kExitUsage;
+    return UsageError(DescribeParseError(app, e));
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "shaderport: internal error: %s\n", e.what());
+    PrintError(std::string("internal error: ") + e.what());
     return kExitInternal;
   }
   return exit_code;

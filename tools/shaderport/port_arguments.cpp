@@ -6,8 +6,11 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "cli_errors.h"
 #include "driver/config/config_lookup.h"
 #include "driver/dialect.h"
+#include "empty_input.h"
+#include "option_names.h"
 #include "report/output_format.h"
 #include "rules/shadertoy/builtin_dialects.h"
 
@@ -31,9 +34,19 @@ bool ParseChannel(const std::string& spec, driver::PortOptions& options) {
   return true;
 }
 
+// Every name --dialect takes: the three dialects and the shipped harness dialects.
+std::vector<std::string> DialectNames() {
+  std::vector<std::string> names(kDialectNames.begin(), kDialectNames.end());
+  for (const rule::HarnessDialect& dialect : rules::BuiltinDialects()) {
+    names.push_back(dialect.name);
+    names.insert(names.end(), dialect.aliases.begin(), dialect.aliases.end());
+  }
+  return names;
+}
+
 // --dialect: a built-in dialect name (shadertoy, webgl1, webgl2) or a TOML file.
-bool ResolveDialect(const char* command, const std::string& value, driver::PortOptions& options,
-                    SourceManager& sources, std::optional<rule::HarnessDialect>& harness) {
+bool ResolveDialect(const std::string& value, driver::PortOptions& options, SourceManager& sources,
+                    std::optional<rule::HarnessDialect>& harness) {
   if (value.empty()) return true;
   if (auto dialect = driver::ParseDialect(value)) {
     options.dialect = dialect;
@@ -42,8 +55,9 @@ bool ResolveDialect(const char* command, const std::string& value, driver::PortO
   rule::DialectLoadResult loaded = rules::LoadDialect(value, sources);
   if (!loaded.dialect) {
     for (const Diagnostic& d : loaded.diagnostics) {
-      std::fprintf(stderr, "shaderport %s: --dialect %s: %s [%s]\n", command, value.c_str(),
-                   d.message.c_str(), d.rule_id.c_str());
+      const std::string suggestion =
+          d.rule_id == "dialect/not-found" ? DidYouMean(value, DialectNames()) : "";
+      PrintError("--dialect " + value + ": " + d.message + " [" + d.rule_id + "]" + suggestion);
     }
     return false;
   }
@@ -55,41 +69,47 @@ bool ResolveDialect(const char* command, const std::string& value, driver::PortO
 
 }  // namespace
 
-bool ApplyPortArguments(const char* command, const PortArguments& arguments,
-                        driver::PortOptions& options, SourceManager& sources,
-                        std::optional<rule::HarnessDialect>& harness) {
-  if (!ResolveDialect(command, arguments.dialect, options, sources, harness)) return false;
+bool ApplyPortArguments(const PortArguments& arguments, driver::PortOptions& options,
+                        SourceManager& sources, std::optional<rule::HarnessDialect>& harness) {
+  if (!ResolveDialect(arguments.dialect, options, sources, harness)) return false;
   for (const std::string& spec : arguments.channels) {
     if (!ParseChannel(spec, options)) {
-      std::fprintf(stderr, "shaderport %s: bad --channel '%s' (want N=2d|cube|3d)\n", command,
-                   spec.c_str());
+      PrintError("bad --channel '" + spec + "' (expected N=2d|cube|3d, N from 0 to 3)");
       return false;
     }
   }
   if (!arguments.stage.empty()) {
     options.stage = driver::ParseStage(arguments.stage);
     if (!options.stage) {
-      std::fprintf(stderr, "shaderport %s: bad --stage '%s'\n", command, arguments.stage.c_str());
+      PrintError(UnknownName("--stage", arguments.stage, kStageNames));
       return false;
     }
   }
   return true;
 }
 
-std::optional<std::vector<driver::InputFile>> SelectInputFiles(const char* command,
-                                                               const InputArguments& arguments,
+std::optional<std::vector<driver::InputFile>> SelectInputFiles(const InputArguments& arguments,
+                                                               const std::string& verb,
                                                                bool& config_failed) {
   if (arguments.paths.empty()) {
-    std::fprintf(stderr, "shaderport %s: error: no files or directories given\n", command);
+    PrintError("no files or directories given");
     return std::nullopt;
   }
   SourceManager config_sources;
   std::optional<std::filesystem::path> explicit_config;
   if (!arguments.config.empty()) explicit_config = arguments.config;
   driver::ConfigLookup configs(!arguments.no_config, explicit_config, config_sources);
+  if (!configs.ExplicitConfigError().empty()) {
+    PrintError(configs.ExplicitConfigError());
+    return std::nullopt;
+  }
   std::vector<std::filesystem::path> paths(arguments.paths.begin(), arguments.paths.end());
   driver::InputSet inputs = driver::WalkInputs(
-      paths, [&](const std::filesystem::path& file) { return configs.Includes(file); });
+      paths, [&](const std::filesystem::path& file) { return configs.Includes(file); },
+      !arguments.no_force_exclude);
+  if (!arguments.allow_empty) {
+    inputs.errors.insert(inputs.errors.end(), inputs.unmatched.begin(), inputs.unmatched.end());
+  }
   CheckReport problems;
   problems.sources = &config_sources;
   problems.files = configs.TakeProblems();
@@ -102,11 +122,19 @@ std::optional<std::vector<driver::InputFile>> SelectInputFiles(const char* comma
     options.summary_line = false;
     std::fputs(FormatReport(problems, OutputFormat::kText, options).c_str(), stderr);
   }
-  for (const std::string& error : inputs.errors) {
-    std::fprintf(stderr, "shaderport %s: error: %s\n", command, error.c_str());
-  }
+  for (const std::string& error : inputs.errors) PrintError(error);
   if (!inputs.errors.empty()) return std::nullopt;
+  if (inputs.files.empty() && inputs.dropped == 0 && !arguments.allow_empty) {
+    PrintError(NothingToDo(arguments.paths, verb));
+    return std::nullopt;
+  }
   return std::move(inputs.files);
+}
+
+void AddFailOnOption(CLI::App& command, std::string& fail_on) {
+  command.add_option("--fail-on", fail_on,
+                     "Lowest severity of a remaining finding that fails the run: error (default) "
+                     "| warning | note");
 }
 
 void AddInputOptions(CLI::App& command, InputArguments& arguments) {
@@ -114,6 +142,7 @@ void AddInputOptions(CLI::App& command, InputArguments& arguments) {
   command.add_option("--config", arguments.config,
                      "Use this .shaderport.toml instead of searching");
   command.add_flag("--no-config", arguments.no_config, "Ignore .shaderport.toml files");
+  AddEmptyInputOptions(command, arguments.allow_empty, arguments.no_force_exclude);
 }
 
 }  // namespace shaderport::cli

@@ -22,25 +22,33 @@ struct PortArguments {
 
 // Fills `options`; a loaded dialect lives in `harness`. Prints why and returns
 // false on a bad value (a usage error).
-bool ApplyPortArguments(const char* command, const PortArguments& arguments,
-                        driver::PortOptions& options, SourceManager& sources,
-                        std::optional<rule::HarnessDialect>& harness);
+bool ApplyPortArguments(const PortArguments& arguments, driver::PortOptions& options,
+                        SourceManager& sources, std::optional<rule::HarnessDialect>& harness);
 
 // The files named by `paths` (directories walked for shader extensions, hidden
 // directories skipped, the include/exclude globs of each file's .shaderport.toml
-// applied to the files found in directories, as `check` does). Missing paths are
+// applied, as `check` does). Missing paths are
 // printed as usage errors and yield nullopt (exit 2, nothing done). Problems of a
 // config file are printed; `config_failed` is set when one is an error.
 struct InputArguments {
   std::vector<std::string> paths;
   std::string config;  // --config FILE: instead of searching upward
   bool no_config = false;
+  bool allow_empty = false;       // --allow-empty
+  bool no_force_exclude = false;  // --no-force-exclude
 };
-std::optional<std::vector<driver::InputFile>> SelectInputFiles(const char* command,
-                                                               const InputArguments& arguments,
+// Paths that hold no shader file, and globs that matched nothing, are usage
+// errors unless --allow-empty (`verb` names the command in the message).
+std::optional<std::vector<driver::InputFile>> SelectInputFiles(const InputArguments& arguments,
+                                                               const std::string& verb,
                                                                bool& config_failed);
 
-// Registers the paths, --config and --no-config on `command`.
+// Registers --fail-on: the lowest severity of a remaining finding that makes the
+// exit code 1 (default error: warnings no fix can repair do not fail a hook).
+void AddFailOnOption(CLI::App& command, std::string& fail_on);
+
+// Registers the paths, --config, --no-config, --allow-empty and --no-force-exclude
+// on `command`.
 void AddInputOptions(CLI::App& command, InputArguments& arguments);
 
 }  // namespace shaderport::cli

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <set>
 
+#include "cli_errors.h"
 #include "commands.h"
 #include "driver/check_projects.h"
 #include "driver/dialect.h"
@@ -102,10 +103,10 @@ int PortProjectInputs(const std::vector<driver::InputFile>& inputs,
                                                : driver::project::ShaderOutputs(documents.back());
     const bool single = outputs.size() == 1;
     if (!single && targets.out_dir.empty() && !outputs.empty()) {
-      std::fprintf(stderr, "shaderport port: %s gives %zu files: use --out-dir%s\n",
-                   input.path.string().c_str(), outputs.size(),
-                   targets.emit == ProjectEmit::kShaders ? " (or --emit html for one page)" : "");
-      return kExitUsage;
+      return UsageError(
+          input.path.string() + " gives " + std::to_string(outputs.size()) +
+          " files: use --out-dir" +
+          (targets.emit == ProjectEmit::kShaders ? " (or --emit html for one page)" : ""));
     }
     for (const driver::project::DocumentOutput& output : outputs) {
       fs::path target;
@@ -139,17 +140,13 @@ int PortProjectInputs(const std::vector<driver::InputFile>& inputs,
     texts.push_back(std::move(program_pages[i].text));
   }
   if (!targets.output.empty() && texts.size() > 1) {
-    std::fprintf(stderr,
-                 "shaderport port: error: -o takes one page, and the inputs give %zu (use "
-                 "--out-dir)\n",
-                 texts.size());
-    return kExitUsage;
+    return UsageError("-o takes one page, and the inputs give " + std::to_string(texts.size()) +
+                      " (use --out-dir)");
   }
   if (!targets.out_dir.empty()) {
     const std::string clash = driver::OutputClash(input_paths, target_paths);
     if (!clash.empty()) {
-      std::fprintf(stderr, "shaderport port: error: %s; nothing was written\n", clash.c_str());
-      return kExitUsage;
+      return UsageError(clash + "; nothing was written");
     }
   }
   for (size_t i = 0; i < texts.size(); ++i) {
@@ -162,7 +159,7 @@ int PortProjectInputs(const std::vector<driver::InputFile>& inputs,
       fs::create_directories(target_paths[i].parent_path(), error);
     const std::string why = driver::WriteFileAtomically(target_paths[i], texts[i]);
     if (!why.empty()) {
-      std::fprintf(stderr, "shaderport port: %s\n", why.c_str());
+      PrintError(why);
       exit_code = kExitInternal;
     }
   }
@@ -172,7 +169,7 @@ int PortProjectInputs(const std::vector<driver::InputFile>& inputs,
   if (!driver::HasFindings(findings)) return exit_code;
   const bool color = ::isatty(STDERR_FILENO) != 0 && std::getenv("NO_COLOR") == nullptr;
   std::fputs(driver::FormatPortFindings(findings, sources, color).c_str(), stderr);
-  return std::max(exit_code, kExitFindings);
+  return std::max(exit_code, driver::FailsAt(findings, targets.fail_on) ? kExitFindings : kExitOk);
 }
 
 }  // namespace shaderport::cli

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "diag/diagnostic.h"
 #include "driver/input_files.h"
 #include "driver/port/port_file.h"
 
@@ -20,6 +21,7 @@ struct ProjectPortTargets {
   std::string output;   // -o
   std::string out_dir;  // --out-dir
   ProjectEmit emit = ProjectEmit::kShaders;
+  Severity fail_on = Severity::kError;  // --fail-on
 };
 
 // Ports `inputs` (each a .json/.jsonl document, or with `html` a ShaderToy pass),

@@ -11,7 +11,15 @@ ConfigLookup::ConfigLookup(bool use_config, const std::optional<fs::path>& expli
     : use_config_(use_config), explicit_path_(explicit_config), sources_(sources) {
   std::error_code error;
   working_directory_ = fs::current_path(error);
-  if (use_config_ && explicit_path_) explicit_ = Load(*explicit_path_);
+  if (!use_config_ || !explicit_path_) return;
+  const fs::file_status status = fs::status(*explicit_path_, error);
+  if (status.type() == fs::file_type::not_found) {
+    explicit_error_ = "--config " + explicit_path_->string() + ": no such file";
+  } else if (!error && fs::is_directory(status)) {
+    explicit_error_ = "--config " + explicit_path_->string() + ": is a directory, not a file";
+  } else {
+    explicit_ = Load(*explicit_path_);  // unreadable or malformed: findings in the file
+  }
 }
 
 fs::path ConfigLookup::Absolute(const fs::path& file) const {

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "driver/config/config.h"
@@ -21,6 +22,10 @@ class ConfigLookup {
   // (--config): that file governs every input.
   ConfigLookup(bool use_config, const std::optional<std::filesystem::path>& explicit_config,
                SourceManager& sources);
+
+  // Why the file given with --config cannot be used (it does not exist or is not
+  // a file), or "" when it can: a usage error, not a finding.
+  const std::string& ExplicitConfigError() const { return explicit_error_; }
 
   // nullptr when no config applies.
   const Config* For(const std::filesystem::path& file);
@@ -40,6 +45,7 @@ class ConfigLookup {
   std::optional<std::filesystem::path> explicit_path_;
   SourceManager& sources_;
   const Config* explicit_ = nullptr;
+  std::string explicit_error_;
   std::map<std::filesystem::path, Config> configs_;  // node-based: pointers stay valid
   std::vector<FileReport> problems_;
   // Every file of a directory has the same config: the upward search (a stat

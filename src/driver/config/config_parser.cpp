@@ -10,6 +10,12 @@
 namespace shaderport::driver {
 namespace {
 
+// "; did you mean 'glslang/missing-precision'?" for a likely typo, else "".
+std::string Suggestion(std::string_view pattern) {
+  const std::optional<std::string> near = NearestCatalogPattern(pattern);
+  return near ? "; did you mean '" + *near + "'?" : "";
+}
+
 class ConfigParser {
  public:
   explicit ConfigParser(const SourceFile& file) : file_(file) {
@@ -112,7 +118,7 @@ class ConfigParser {
       }
       if (!RulePatternMatchesCatalog(pattern)) {
         Report(Severity::kWarning, "config/unknown-rule", pattern_key.source(),
-               "'" + pattern + "' matches no rule shaderport knows");
+               "'" + pattern + "' matches no rule shaderport knows" + Suggestion(pattern));
       }
       result_.config.rules.push_back({pattern, *level});
     }
@@ -176,10 +182,10 @@ class ConfigParser {
     FileOverride entry;
     bool ok = true;
     for (auto&& [name, value] : table) {
-      const std::optional<std::string> text = name == "glob" || name == "dialect" || name == "stage" ||
-                                                          name == "target"
-                                                  ? ExpectString(name, value)
-                                                  : std::nullopt;
+      const std::optional<std::string> text =
+          name == "glob" || name == "dialect" || name == "stage" || name == "target"
+              ? ExpectString(name, value)
+              : std::nullopt;
       if (name == "glob") {
         if (!text) {
           ok = false;

@@ -1,5 +1,9 @@
 #include "driver/config/rule_pattern.h"
 
+#include <set>
+#include <vector>
+
+#include "base/did_you_mean.h"
 #include "diag/rule_catalog.h"
 
 namespace shaderport::driver {
@@ -44,6 +48,17 @@ bool RulePatternMatchesCatalog(std::string_view pattern) {
     if (RulePatternMatches(pattern, rule.id)) return true;
   }
   return false;
+}
+
+std::optional<std::string> NearestCatalogPattern(std::string_view pattern) {
+  const bool category = pattern.ends_with("/*");
+  std::set<std::string> names;
+  for (const RuleDescription& rule : RuleCatalog()) {
+    const std::string id(rule.id);
+    names.insert(category ? id.substr(0, id.find('/')) + "/*" : id);
+  }
+  const std::vector<std::string> candidates(names.begin(), names.end());
+  return ClosestName(pattern, candidates);
 }
 
 }  // namespace shaderport::driver

@@ -2,6 +2,8 @@
 // "category/name" (one rule), "category/*" (a category) or "*" (every rule).
 #pragma once
 
+#include <optional>
+#include <string>
 #include <string_view>
 
 namespace shaderport::driver {
@@ -16,5 +18,9 @@ int RulePatternSpecificity(std::string_view pattern);
 
 // True when some rule of the catalog matches `pattern`.
 bool RulePatternMatchesCatalog(std::string_view pattern);
+
+// For a pattern that matches nothing: the nearest catalog id (or "category/*"
+// for a category pattern) when it is a likely typo of one.
+std::optional<std::string> NearestCatalogPattern(std::string_view pattern);
 
 }  // namespace shaderport::driver

@@ -109,7 +109,10 @@ HtmlReportRun BuildHtmlReport(const HtmlReportOptions& options) {
   SortReport(checked.report);
   SourceManager& sources = *checked.sources;
   run.usage_errors = checked.usage_errors;
-  run.report.errors = checked.usage_errors;
+  run.usage_errors.insert(run.usage_errors.end(), checked.unmatched.begin(),
+                          checked.unmatched.end());
+  run.found_nothing = checked.found_nothing;
+  run.report.errors = run.usage_errors;
 
   const InputFileList inputs = CollectInputFiles(options.paths);
   std::map<std::string, fs::path> input_by_name;

@@ -23,6 +23,7 @@ struct HtmlReportOptions {
 struct HtmlReportRun {
   HtmlReport report;
   std::vector<std::string> usage_errors;  // paths that do not exist (also in report.errors)
+  bool found_nothing = false;             // the paths held no shader file (CheckRun's)
 };
 
 // Deterministic: the result depends only on the files and the options, never on

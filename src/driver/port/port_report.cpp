@@ -13,6 +13,15 @@ bool HasFindings(std::span<const PortResult> results) {
   return false;
 }
 
+bool FailsAt(std::span<const PortResult> results, Severity fail_on) {
+  for (const PortResult& result : results) {
+    for (const Diagnostic& d : result.diagnostics) {
+      if (d.severity >= fail_on) return true;
+    }
+  }
+  return false;
+}
+
 std::string FormatPortFindings(std::span<const PortResult> results, const SourceManager& sources,
                                bool color) {
   CheckReport report;

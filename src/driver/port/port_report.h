@@ -11,6 +11,9 @@ namespace shaderport::driver {
 // True when any warning or error remains in `results`.
 bool HasFindings(std::span<const PortResult> results);
 
+// True when a finding at or above `fail_on` remains (`fix`/`port --fail-on`).
+bool FailsAt(std::span<const PortResult> results, Severity fail_on);
+
 // The remaining findings of every result, as `check` prints them.
 std::string FormatPortFindings(std::span<const PortResult> results, const SourceManager& sources,
                                bool color);

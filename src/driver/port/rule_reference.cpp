@@ -86,6 +86,24 @@ std::string RulesMarkdown() {
   return text;
 }
 
+std::string RulesList() {
+  std::vector<const rule::Rule*> all(rules::AllRules().begin(), rules::AllRules().end());
+  std::sort(all.begin(), all.end(),
+            [](const rule::Rule* a, const rule::Rule* b) { return a->Info().id < b->Info().id; });
+  size_t width = 0;
+  for (const rule::Rule* r : all) width = std::max(width, r->Info().id.size());
+  std::string text;
+  for (const rule::Rule* r : all) {
+    const rule::RuleInfo& info = r->Info();
+    std::string line(info.id);
+    line.resize(width + 2, ' ');
+    std::string scope(ScopeName(info.scope));
+    scope.resize(8, ' ');
+    text += line + scope + std::string(info.summary) + "\n";
+  }
+  return text;
+}
+
 std::vector<std::string> PortingRuleIds() {
   std::vector<std::string> ids;
   for (const rule::Rule* r : rules::AllRules()) ids.emplace_back(r->Info().id);

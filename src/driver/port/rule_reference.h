@@ -12,6 +12,10 @@ namespace shaderport::driver {
 // Every porting rule: id, scope, summary, help from the catalog, Before/After.
 std::string RulesMarkdown();
 
+// One line per porting rule, sorted by id, for terminals (`rules --list`): the id,
+// the scope (which commands report or apply it) and the one-line summary.
+std::string RulesList();
+
 // The ids of the porting rules, sorted: each has its own section in docs/rules.md.
 std::vector<std::string> PortingRuleIds();
 

@@ -38,12 +38,17 @@ TEST(CheckCliTest, OutputIsTheSameWhateverTheThreadCount) {
   EXPECT_FALSE(one.out.empty());
 }
 
-TEST(CheckCliTest, ExcludedFilesAreSkippedUnlessNamed) {
+TEST(CheckCliTest, ExcludedFilesAreSkippedEvenWhenNamedUnlessNoForceExclude) {
   const CommandResult walked = RunShaderport("check .", kProject);
   EXPECT_EQ(walked.out.find("excluded/"), std::string::npos);
+  // pre-commit names every staged file: exclude applies to named files too.
   const CommandResult named = RunShaderport("check excluded/broken.frag", kProject);
-  EXPECT_NE(named.out.find("excluded/broken.frag:1:1: error"), std::string::npos) << named.out;
-  EXPECT_EQ(named.exit_code, 1);
+  EXPECT_EQ(named.out.find("excluded/"), std::string::npos) << named.out;
+  EXPECT_EQ(named.exit_code, 0);
+  const CommandResult forced =
+      RunShaderport("check --no-force-exclude excluded/broken.frag", kProject);
+  EXPECT_NE(forced.out.find("excluded/broken.frag:1:1: error"), std::string::npos) << forced.out;
+  EXPECT_EQ(forced.exit_code, 1);
 }
 
 TEST(CheckCliTest, ExitCodes) {

@@ -209,7 +209,7 @@ TEST(InPlaceWrite, ModeAndOwnerAreKept) {
 void ExpectRefused(const fs::path& directory, const std::string& name, const std::string& original,
                    int code, const std::string& err, const std::string& reason) {
   EXPECT_EQ(code, kExitWriteFailed) << err;
-  EXPECT_NE(err.find("shaderport fix: cannot write " + name), std::string::npos) << err;
+  EXPECT_NE(err.find("shaderport: error: cannot write " + name), std::string::npos) << err;
   EXPECT_NE(err.find(reason), std::string::npos) << err;
   EXPECT_NE(err.find("the file is unchanged"), std::string::npos) << err;
   EXPECT_EQ(ReadWholeFile(directory / fs::path(name).filename()), original);

@@ -52,7 +52,9 @@ TEST(ProjectCli, CheckReportsFindingsOnTheTabAndExitsOne) {
   EXPECT_EQ(result.exit_code, 1) << result.out << result.err;
   EXPECT_NE(result.out.find("toy.json#Buffer A:2:"), std::string::npos) << result.out;
   EXPECT_EQ(result.out.find("toy.json#Image:"), std::string::npos) << result.out;
-  EXPECT_NE(result.out.find("(3 files checked)"), std::string::npos) << result.out;
+  // The summary counts the tabs as tabs of one project, not as three files.
+  EXPECT_NE(result.out.find("in 1 file (3 tabs of 1 ShaderToy project checked)"), std::string::npos)
+      << result.out;
 }
 
 TEST(ProjectCli, SarifPointsAtTheJsonBytesAndNamesThePass) {
@@ -144,7 +146,15 @@ TEST(ProjectCli, BrokenDocumentsAreUserErrors) {
   project.Write("dir/toy.json", Export("void mainImage(out vec4 o, in vec2 p) { o = vec4(1); }\n"));
   const CommandResult walk = RunShaderport("check dir", project.Root());
   EXPECT_EQ(walk.exit_code, 0) << walk.out;
-  EXPECT_NE(walk.out.find("(3 files checked)"), std::string::npos) << walk.out;
+  EXPECT_NE(walk.out.find("(3 tabs of 1 ShaderToy project checked)"), std::string::npos)
+      << walk.out;
+  // A document that cannot be read is reported, but is no checked tab; a shader file
+  // beside a project is counted as a file.
+  project.Write("dir/plain.frag", kWebGL1Fragment);
+  const CommandResult mixed = RunShaderport("check dir bad.json", project.Root());
+  EXPECT_NE(mixed.out.find("in 1 file (1 file and 3 tabs of 1 ShaderToy project checked)"),
+            std::string::npos)
+      << mixed.out;
 }
 
 }  // namespace

@@ -44,7 +44,13 @@ TEST(WalkCli, PortOutDirWithSeveralRootsAndNamedFiles) {
       RunShaderport("port --out-dir out shaders/a shaders/vendor/v.frag", project.Root());
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_TRUE(project.Exists("out/b.frag"));
-  // Named directly, an excluded file is still ported, as `check` still checks it.
+  // Named directly, an excluded file is left out too (as ruff's --force-exclude:
+  // pre-commit names every file)...
+  EXPECT_FALSE(project.Exists("out/shaders/vendor/v.frag"));
+  // ...unless --no-force-exclude: then it keeps the path it was named by.
+  const CommandResult named = RunShaderport(
+      "port --no-force-exclude --out-dir out shaders/a shaders/vendor/v.frag", project.Root());
+  ASSERT_EQ(named.exit_code, 0) << named.err;
   EXPECT_TRUE(project.Exists("out/shaders/vendor/v.frag"));
 }
 

@@ -115,6 +115,19 @@ TEST(ConfigParse, UnknownRuleIsAWarningButKept) {
   EXPECT_EQ(parsed.result.config.rules.size(), 1u);
 }
 
+TEST(ConfigParse, UnknownRuleSuggestsTheNearestId) {
+  Parsed typo("[rules]\n\"glslang/missing-precison\" = \"off\"\n\"glslng/*\" = \"off\"\n");
+  ASSERT_EQ(typo.result.diagnostics.size(), 2u);
+  EXPECT_NE(typo.result.diagnostics[0].message.find("did you mean 'glslang/missing-precision'?"),
+            std::string::npos)
+      << typo.result.diagnostics[0].message;
+  EXPECT_NE(typo.result.diagnostics[1].message.find("did you mean 'glslang/*'?"), std::string::npos)
+      << typo.result.diagnostics[1].message;
+  Parsed far("[rules]\n\"nosuch/rule\" = \"off\"\n");
+  ASSERT_EQ(far.result.diagnostics.size(), 1u);
+  EXPECT_EQ(far.result.diagnostics[0].message.find("did you mean"), std::string::npos);
+}
+
 TEST(ConfigParse, ColumnsAreBytesAfterMultiByteCharacters) {
   Parsed parsed("# é\n[check]\nfail-on = \"\xC3\xA9\"  \n");
   ASSERT_EQ(parsed.result.diagnostics.size(), 1u);

@@ -53,6 +53,15 @@ TEST_F(WalkInputsTest, TheFilterDropsOnlyWalkedFiles) {
   EXPECT_EQ(inputs.files[2].relative, (root_ / "s/skip/x.frag").lexically_normal());
 }
 
+TEST_F(WalkInputsTest, FilterNamedDropsNamedFilesTooAndCountsWhatItDropped) {
+  const auto keep = [](const fs::path& file) { return file.parent_path().filename() != "skip"; };
+  const InputSet inputs = WalkInputs({root_ / "s", root_ / "s/skip/x.frag"}, keep, true);
+  ASSERT_EQ(inputs.files.size(), 2u);
+  EXPECT_EQ(inputs.files[0].relative, "a/b.glsl");
+  EXPECT_EQ(inputs.files[1].relative, "top.frag");
+  EXPECT_EQ(inputs.dropped, 2u);  // s/skip/x.frag, found by the walk and named
+}
+
 TEST(OutDirPathTest, StaysInsideTheDirectory) {
   EXPECT_EQ(OutDirPath("out", "a/b.glsl", ".frag"), fs::path("out/a/b.frag"));
   EXPECT_EQ(OutDirPath("out", "./a/../c.vs", ".vert"), fs::path("out/c.vert"));
