@@ -16,7 +16,7 @@ namespace {
 bool IsWebglFrontEndRule(std::string_view rule_id) {
   static constexpr std::array<std::string_view, 4> kIds = {
       "preprocessor/identifier-too-long", "preprocessor/token-too-long",
-      "preprocessor/predefined-macro", "preprocessor/invalid-line"};
+      "preprocessor/predefined-macro", "preprocessor/line-too-large"};
   return std::find(kIds.begin(), kIds.end(), rule_id) != kIds.end();
 }
 

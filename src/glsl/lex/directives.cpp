@@ -209,7 +209,7 @@ void PpDriver::Line(std::span<const Token> args, SourceRange range) {
   }
   const long line = std::strtol(std::string(expanded[0].token.text).c_str(), nullptr, 0);
   if (line > std::numeric_limits<int32_t>::max()) {  // browsers: "integer overflow"
-    state_.Report(Severity::kError, "preprocessor/invalid-line", range,
+    state_.Report(Severity::kError, "preprocessor/line-too-large", range,
                   "#line " + std::string(expanded[0].token.text) + " does not fit in a 32-bit int");
     return;
   }
