@@ -71,6 +71,25 @@ bool AlignGlobalInitializer(const BrowserContext& context, Diagnostic& diagnosti
     return false;
   }
   if (context.version >= 300) return false;
+  // Only uniforms, other globals and constants: a built-in input such as gl_FragCoord
+  // or a call of the shader's own function is an error there too ("global variable
+  // initializers must be constant expressions (uniforms and globals are allowed)").
+  bool global = false;
+  const glsl::Declarator* declarator = DeclaratorOnLine(context, diagnostic, global);
+  if (declarator == nullptr || declarator->initializer == nullptr || !global) return false;
+  bool allowed = true;
+  glsl::ForEachNodeOf(*context.tree, *declarator->initializer,
+                      {glsl::NodeKind::kIdentifierExpr, glsl::NodeKind::kCallExpr},
+                      [&](const glsl::Node& node) {
+                        const uint32_t symbol = context.model->SymbolAt(node.id);
+                        if (symbol == glsl::kNoSymbol) return;
+                        const glsl::Symbol& used = context.model->symbols[symbol];
+                        if (used.kind == glsl::SymbolKind::kFunction ||
+                            (used.kind == glsl::SymbolKind::kBuiltinVariable && !used.is_const)) {
+                          allowed = false;
+                        }
+                      });
+  if (!allowed) return false;
   Demote(diagnostic, Severity::kWarning,
          "browsers accept non-constant global initialisers in GLSL ES 1.00 for legacy content "
          "and only warn (WebGL 1.0 spec, 'GLSL ES Global Variable Initialization'); glslang and "
@@ -136,6 +155,21 @@ bool AlignLenientMessages(const BrowserContext& context, Diagnostic& diagnostic)
            "browsers only warn about an integer literal too big for 32 bits in GLSL ES 1.00 "
            "('Integer overflow'); it is an error in GLSL ES 3.00");
     return true;
+  }
+  if (has("cannot change qualification after use")) {
+    Demote(diagnostic, Severity::kNote,
+           "not an error in browsers: 'invariant' may be declared for a built-in output after "
+           "it is written");
+    return true;
+  }
+  if (const size_t at = message.find("extension not supported: "); at != std::string::npos) {
+    const std::string name = message.substr(at + 25);
+    if (webgl::ContextOffersExtension(name, context.webgl2)) {
+      Demote(diagnostic, Severity::kNote,
+             "not an error in browsers: the WebGL context offers " + name +
+                 " and a page enables it for this shader; glslang does not know it");
+      return true;
+    }
   }
   if (context.vertex && has("overlapping use of location")) {
     Demote(diagnostic, Severity::kNote,
@@ -361,9 +395,9 @@ void HideUnofferedExtensions(const BrowserContext& context, FileId part, std::st
   }
 }
 
-// `__FILE__` in GLSL ES 3.00 code: browsers give 0, glslang wants an extension.
-void ReplaceFileMacro(const BrowserContext& context, std::string& text) {
-  if (context.version < 300 || text.find("__FILE__") == std::string::npos) return;
+// `__FILE__`: browsers give 0, glslang wants an extension for it.
+void ReplaceFileMacro(std::string& text) {
+  if (text.find("__FILE__") == std::string::npos) return;
   ReplaceWord(text, "__FILE__", "0       ");
 }
 
@@ -552,7 +586,7 @@ std::string TextForGlslang(const BrowserContext& context, const SourceFile& part
   // Same-length edits first: the offsets of our front end stay valid for the next.
   RenameDeclarableBuiltins(context, part.Id(), text);
   RenameGlslangOnlyKeywords(context, text);
-  ReplaceFileMacro(context, text);
+  ReplaceFileMacro(text);
   HideUnofferedExtensions(context, part.Id(), text);
   EmptyInactiveLines(context, part.Id(), text);
   ExpandMacroUses(context, part.Id(), part.Text(), text);

@@ -1,0 +1,3 @@
+#extension GL_EXT_draw_buffers : require
+precision mediump float;
+void main() { gl_FragData[0] = vec4(1.0); }

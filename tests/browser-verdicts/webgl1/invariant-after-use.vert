@@ -1,0 +1,3 @@
+attribute vec4 p;
+void main() { gl_Position = p; }
+invariant gl_Position;
