@@ -56,7 +56,12 @@ CheckRun RunCheck(const CheckOptions& options) {
   }
   InputSet inputs;
   if (options.in_memory) {
-    inputs.files.push_back({options.in_memory->name, options.in_memory->name, true});
+    // --stdin-filename counts as a named file: excluded, nothing is checked (ruff).
+    if (options.force_exclude && !configs.Includes(options.in_memory->name)) {
+      inputs.dropped = 1;
+    } else {
+      inputs.files.push_back({options.in_memory->name, options.in_memory->name, true});
+    }
   } else {
     inputs = WalkInputs(
         options.paths, [&](const fs::path& file) { return configs.Includes(file); },
