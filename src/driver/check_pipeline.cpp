@@ -56,7 +56,12 @@ CheckRun RunCheck(const CheckOptions& options) {
   }
   InputSet inputs;
   if (options.in_memory) {
-    inputs.files.push_back({options.in_memory->name, options.in_memory->name, true});
+    // --stdin-filename counts as a named file: excluded, nothing is checked (ruff).
+    if (options.force_exclude && !configs.Includes(options.in_memory->name)) {
+      inputs.dropped = 1;
+    } else {
+      inputs.files.push_back({options.in_memory->name, options.in_memory->name, true});
+    }
   } else {
     inputs = WalkInputs(
         options.paths, [&](const fs::path& file) { return configs.Includes(file); },
@@ -90,7 +95,7 @@ CheckRun RunCheck(const CheckOptions& options) {
     jobs.push_back(std::move(job));
   }
   for (FileReport& problem : configs.TakeProblems()) {
-    problem.entry = ReportEntry::kInput;  // a .shaderport.toml is not a checked file
+    problem.role = FileRole::kInput;  // a .shaderport.toml is not a checked file
     run.report.files.push_back(std::move(problem));
   }
   for (FileReport& problem : project_problems) run.report.files.push_back(std::move(problem));
@@ -163,7 +168,7 @@ CheckRun RunCheck(const CheckOptions& options) {
     if (options.fail_on) fail_on = *options.fail_on;
     reports[i].fail_on = fail_on;  // kept: a baseline judges the run again
     if (!jobs[i].project.empty()) {
-      reports[i].entry = ReportEntry::kTab;
+      reports[i].role = FileRole::kTab;
       reports[i].project = jobs[i].project;
     }
     for (const Diagnostic& diagnostic : reports[i].diagnostics) {

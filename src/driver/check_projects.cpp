@@ -54,7 +54,7 @@ void AddProjectJobs(const FileJob& base, SourceManager& sources,
     FileReport report;
     report.file = loaded.document;
     report.dialect = "shadertoy";
-    report.entry = ReportEntry::kInput;
+    report.role = FileRole::kInput;
     report.diagnostics = std::move(loaded.problems);
     problems.push_back(std::move(report));
   }

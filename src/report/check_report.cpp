@@ -11,8 +11,8 @@ ReportSummary Summarize(const CheckReport& report) {
   ReportSummary summary;
   std::set<std::string_view> projects;
   for (const FileReport& file : report.files) {
-    if (file.entry != ReportEntry::kInput) ++summary.files_checked;
-    if (file.entry == ReportEntry::kTab) {
+    if (file.role != FileRole::kInput) ++summary.files_checked;
+    if (file.role == FileRole::kTab) {
       ++summary.tabs_checked;
       projects.insert(file.project);
     }

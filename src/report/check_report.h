@@ -13,7 +13,7 @@
 namespace shaderport {
 
 // What an entry of a report stands for, so that the summary counts what was checked.
-enum class ReportEntry {
+enum class FileRole {
   kShader,  // a shader file
   kTab,     // a tab (pass) of a ShaderToy project; FileReport::project names the project
   kInput,   // findings about an input that is not itself checked: a .shaderport.toml,
@@ -30,7 +30,7 @@ struct FileReport {
   // The least severe diagnostic that fails the check for this file (its config's
   // fail-on or --fail-on), so that the run can be judged again after a baseline.
   Severity fail_on = Severity::kError;
-  ReportEntry entry = ReportEntry::kShader;
+  FileRole role = FileRole::kShader;
   std::string project{};  // kTab: the project (document and index, or folder) it belongs to
 };
 

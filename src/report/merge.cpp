@@ -128,7 +128,7 @@ bool CheckShardSet(std::vector<ParsedInput>& inputs, MergeFormat format, MergeRe
 // --- JSON ------------------------------------------------------------------
 
 // A report's own entries for a .shaderport.toml or a project document (whose tabs
-// are `doc.json#Tab`) hold findings about inputs, not checked files (ReportEntry).
+// are `doc.json#Tab`) hold findings about inputs, not checked files (FileRole).
 bool IsCheckedFile(const Json& file) {
   const std::filesystem::path path(file["path"].get<std::string>());
   const std::string extension = path.extension().string();

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <iterator>
 #include <memory>
 #include <optional>
 #include <string>
@@ -106,6 +107,14 @@ int RunFix(const FixArgs& args) {
     if (args.in_place) return UsageError("standard input cannot be fixed in place");
     const std::filesystem::path name =
         args.stdin_filename.empty() ? "<stdin>" : args.stdin_filename;
+    if (!args.stdin_filename.empty() && ExcludedByConfig(args.input, name)) {
+      // Excluded as a named file would be: the text goes back unchanged (ruff).
+      const std::string text{std::istreambuf_iterator<char>(std::cin), {}};
+      if (args.diff) return kExitOk;
+      if (!args.output.empty()) return WriteOrReport(args.output, text);
+      std::fwrite(text.data(), 1, text.size(), stdout);
+      return kExitOk;
+    }
     if (driver::IsProjectDocument(name)) {
       driver::project::FixedDocument fixed =
           driver::project::FixDocument(name, driver::ReadInputStream(std::cin), options, sources);

@@ -131,6 +131,15 @@ std::optional<std::vector<driver::InputFile>> SelectInputFiles(const InputArgume
   return std::move(inputs.files);
 }
 
+bool ExcludedByConfig(const InputArguments& arguments, const std::filesystem::path& name) {
+  if (arguments.no_force_exclude || arguments.no_config) return false;
+  SourceManager config_sources;
+  std::optional<std::filesystem::path> explicit_config;
+  if (!arguments.config.empty()) explicit_config = arguments.config;
+  driver::ConfigLookup configs(true, explicit_config, config_sources);
+  return configs.ExplicitConfigError().empty() && !configs.Includes(name);
+}
+
 void AddFailOnOption(CLI::App& command, std::string& fail_on) {
   command.add_option("--fail-on", fail_on,
                      "Lowest severity of a remaining finding that fails the run: error (default) "

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,6 +43,10 @@ struct InputArguments {
 std::optional<std::vector<driver::InputFile>> SelectInputFiles(const InputArguments& arguments,
                                                                const std::string& verb,
                                                                bool& config_failed);
+
+// True when the include/exclude globs of the config that governs `name` (the
+// --stdin-filename) leave it out and --no-force-exclude was not given.
+bool ExcludedByConfig(const InputArguments& arguments, const std::filesystem::path& name);
 
 // Registers --fail-on: the lowest severity of a remaining finding that makes the
 // exit code 1 (default error: warnings no fix can repair do not fail a hook).

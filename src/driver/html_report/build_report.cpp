@@ -156,6 +156,7 @@ HtmlReportRun BuildHtmlReport(const HtmlReportOptions& options) {
       return;
     }
     const FileReport& report = *job.checked;
+    entry.shader = report.role != FileRole::kInput;
     entry.path = report.file != nullptr ? std::string(report.file->Name()) : "";
     entry.dialect = report.dialect;
     entry.stage = report.stage;

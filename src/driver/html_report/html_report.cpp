@@ -78,8 +78,9 @@ const char* StepStatusName(StepStatus status) {
 
 ReportCounts CountReport(const HtmlReport& report) {
   ReportCounts counts;
-  counts.shaders = report.entries.size();
   for (const ReportEntry& entry : report.entries) {
+    if (!entry.shader) continue;
+    ++counts.shaders;
     Count(entry.check.status, counts.check);
     Count(entry.port.status, counts.port);
     Count(entry.render.status, counts.render);

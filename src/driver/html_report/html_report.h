@@ -27,6 +27,7 @@ struct ReportEntry {
   ReportStep port;      // WebGL2 port
   ReportStep render;    // smoke render of the port (or the site composition)
   std::string png;      // PNG bytes of the thumbnail; empty: none
+  bool shader = true;   // false for a .shaderport.toml's findings: shown, not counted
 };
 
 struct HtmlReport {

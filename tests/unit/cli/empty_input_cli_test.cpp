@@ -62,6 +62,10 @@ TEST(EmptyInputCli, TheSummaryDoesNotCountTheConfigFile) {
       << result.out;
   const CommandResult json = RunShaderport("check --format json .", project.Root());
   EXPECT_NE(json.out.find("\"filesChecked\": 1"), std::string::npos) << json.out;
+  // The HTML report shows the config's finding but counts one shader.
+  const CommandResult page = RunShaderport("report --html p.html --size 8 .", project.Root());
+  EXPECT_EQ(page.exit_code, 0) << page.err;
+  EXPECT_NE(page.out.find(": 1 shaders; check 1 pass, 0 warn"), std::string::npos) << page.out;
 }
 
 }  // namespace

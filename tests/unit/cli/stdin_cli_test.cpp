@@ -28,6 +28,24 @@ TEST(StdinCli, ReportsUnderTheGivenNameWithItsCommon) {
   EXPECT_EQ(elsewhere.out.rfind("other/image.glsl:1:50: error: ", 0), 0u) << elsewhere.out;
 }
 
+TEST(StdinCli, AnExcludedStdinFilenameIsLeftAlone) {
+  TempProject project("stdin-excluded");
+  project.Write(".shaderport.toml", "[check]\nexclude = [\"vendor/**\"]\n");
+  project.Write("piped.txt", kFixableEssl3);
+  const CommandResult check =
+      RunShaderport("check --stdin --stdin-filename vendor/a.frag < piped.txt", project.Root());
+  EXPECT_EQ(check.exit_code, 0) << check.out;
+  EXPECT_EQ(check.out, "0 errors, 0 warnings in 0 files (0 files checked)\n");
+  const CommandResult fix =
+      RunShaderport("fix --stdin --stdin-filename vendor/a.frag < piped.txt", project.Root());
+  EXPECT_EQ(fix.exit_code, 0) << fix.err;
+  EXPECT_EQ(fix.out, kFixableEssl3);  // unchanged
+  const CommandResult forced =
+      RunShaderport("check --no-force-exclude --stdin --stdin-filename vendor/a.frag < piped.txt",
+                    project.Root());
+  EXPECT_EQ(forced.exit_code, 1) << forced.out;
+}
+
 TEST(StdinCli, TheNameDecidesStageAndConfig) {
   TempProject project("stdin-config");
   project.Write("quiet/.shaderport.toml", "[rules]\n\"portability/*\" = \"off\"\n");
