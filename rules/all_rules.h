@@ -34,6 +34,7 @@ const rule::Rule& WebglExtensionSupportRule();  // webgl/extension-support
 const rule::Rule& WebglForbiddenOperatorRule();  // webgl/forbidden-operator
 const rule::Rule& WebglFragmentOutputLocationsRule();  // webgl/fragment-output-locations
 const rule::Rule& WebglFragDataAndColorRule();  // webgl/frag-data-and-color
+const rule::Rule& WebglFunctionAsValueRule();  // webgl/function-as-value
 const rule::Rule& WebglIndexExpressionRule();  // webgl/index-expression
 const rule::Rule& WebglInterpolationQualifierRule();  // webgl/interpolation-qualifier
 const rule::Rule& WebglInvariantRule();  // webgl/invariant

@@ -34,6 +34,7 @@ std::vector<const rule::Rule*> BuildRegistry() {
       &WebglForbiddenOperatorRule(),  // webgl/forbidden-operator
       &WebglFragmentOutputLocationsRule(),  // webgl/fragment-output-locations
       &WebglFragDataAndColorRule(),  // webgl/frag-data-and-color
+      &WebglFunctionAsValueRule(),  // webgl/function-as-value
       &WebglIndexExpressionRule(),  // webgl/index-expression
       &WebglInterpolationQualifierRule(),  // webgl/interpolation-qualifier
       &WebglInvariantRule(),  // webgl/invariant

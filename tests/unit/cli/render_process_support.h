@@ -31,8 +31,11 @@ inline constexpr const char* kSpinningShader =
     "}\n";
 
 // An 800 MB local array: Mesa's compiler and llvmpipe allocate far past 1 GiB.
+// Browsers reject an array this large (webgl/variable-size); the suppression lets
+// `check --render` draw it anyway, so that its render runs out of memory.
 inline constexpr const char* kHugeArrayShader =
     "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+    "  // shaderport-ignore-next-line(webgl/variable-size)\n"
     "  float a[200000000];\n"
     "  for (int i = 0; i < 200000000; i++) a[i] = float(i);\n"
     "  fragColor = vec4(a[int(fragCoord.x)], 0.0, 0.0, 1.0);\n"
