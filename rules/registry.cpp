@@ -27,7 +27,7 @@ std::vector<const rule::Rule*> BuildRegistry() {
       &WebglAttributeLocationRule(),  // webgl/attribute-location
       &WebglBlockLayoutRule(),  // webgl/block-layout
       &WebglCallDepthRule(),  // webgl/call-depth
-      &WebglConstInitializerRule(),  // webgl/const-initializer
+      &WebglDerivativeInConstantRule(),  // webgl/derivative-in-constant
       &WebglExpressionComplexityRule(),  // webgl/expression-complexity
       &WebglExtensionPlacementRule(),  // webgl/extension-placement
       &WebglExtensionSupportRule(),  // webgl/extension-support

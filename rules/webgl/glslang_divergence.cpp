@@ -74,22 +74,33 @@ bool AlignGlobalInitializer(const BrowserContext& context, Diagnostic& diagnosti
   // Only uniforms, other globals and constants: a built-in input such as gl_FragCoord
   // or a call of the shader's own function is an error there too ("global variable
   // initializers must be constant expressions (uniforms and globals are allowed)").
-  bool global = false;
-  const glsl::Declarator* declarator = DeclaratorOnLine(context, diagnostic, global);
-  if (declarator == nullptr || declarator->initializer == nullptr || !global) return false;
+  const uint32_t line = LineOf(context, diagnostic.range.begin);
+  bool found = false;
   bool allowed = true;
-  glsl::ForEachNodeOf(*context.tree, *declarator->initializer,
-                      {glsl::NodeKind::kIdentifierExpr, glsl::NodeKind::kCallExpr},
-                      [&](const glsl::Node& node) {
-                        const uint32_t symbol = context.model->SymbolAt(node.id);
-                        if (symbol == glsl::kNoSymbol) return;
-                        const glsl::Symbol& used = context.model->symbols[symbol];
-                        if (used.kind == glsl::SymbolKind::kFunction ||
-                            (used.kind == glsl::SymbolKind::kBuiltinVariable && !used.is_const)) {
-                          allowed = false;
-                        }
-                      });
-  if (!allowed) return false;
+  for (const glsl::Node* node : context.tree->Root()->declarations) {
+    const auto* declaration = node->As<glsl::VariableDeclaration>();
+    if (declaration == nullptr) continue;
+    for (const glsl::Declarator* declarator : declaration->declarators) {
+      if (declarator->initializer == nullptr || declarator->range.file != context.file->Id() ||
+          LineOf(context, declarator->range.begin) > line ||
+          line > LineOf(context, declarator->range.end)) {
+        continue;
+      }
+      found = true;
+      glsl::ForEachNodeOf(
+          *context.tree, *declarator->initializer,
+          {glsl::NodeKind::kIdentifierExpr, glsl::NodeKind::kCallExpr}, [&](const glsl::Node& use) {
+            const uint32_t symbol = context.model->SymbolAt(use.id);
+            if (symbol == glsl::kNoSymbol) return;
+            const glsl::Symbol& used = context.model->symbols[symbol];
+            if (used.kind == glsl::SymbolKind::kFunction ||
+                (used.kind == glsl::SymbolKind::kBuiltinVariable && !used.is_const)) {
+              allowed = false;
+            }
+          });
+    }
+  }
+  if (!found || !allowed) return false;
   Demote(diagnostic, Severity::kWarning,
          "browsers accept non-constant global initialisers in GLSL ES 1.00 for legacy content "
          "and only warn (WebGL 1.0 spec, 'GLSL ES Global Variable Initialization'); glslang and "

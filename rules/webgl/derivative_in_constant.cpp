@@ -1,11 +1,9 @@
-// webgl/const-initializer: a `const` initializer that reads a variable that is not
-// `const`, or calls dFdx, dFdy or fwidth. Neither is a constant expression (GLSL ES
-// section 4.3.3) and browsers reject the initializer ("assigning non-constant to
-// 'const float'"); glslang accepts some of them (a GLSL ES 1.00 local read from a
-// local, the derivative of a constant, which it folds to 0).
+// webgl/derivative-in-constant: dFdx, dFdy or fwidth in a `const` initializer.
+// Derivatives are never constant expressions (GLSL ES 3.00 section 4.3.3) and browsers
+// reject the initializer ("assigning non-constant to 'const float'"); glslang folds
+// the derivative of a constant to 0 and accepts it.
 //
-//   float y = 1.0; const float x = y;   // error
-//   const float d = dFdx(1.0);          // error
+//   const float d = dFdx(1.0);   // error
 #include <string>
 #include <string_view>
 
@@ -16,16 +14,16 @@
 namespace shaderport::rules {
 namespace {
 
-constexpr std::string_view kId = "webgl/const-initializer";
+constexpr std::string_view kId = "webgl/derivative-in-constant";
 
 bool IsDerivative(std::string_view name) {
   return name == "dFdx" || name == "dFdy" || name == "fwidth";
 }
 
-class ConstInitializerRule final : public rule::Rule {
+class DerivativeInConstantRule final : public rule::Rule {
  public:
   const rule::RuleInfo& Info() const override {
-    static const rule::RuleInfo info{kId, "A const initializer that is not a constant expression",
+    static const rule::RuleInfo info{kId, "A derivative in a const initializer",
                                      "const float d = dFdx(1.0);", "", rule::RuleScope::kCheck};
     return info;
   }
@@ -37,23 +35,6 @@ class ConstInitializerRule final : public rule::Rule {
           if (!declaration.qualifiers.Has(glsl::QualifierKind::kConst)) return;
           for (const glsl::Declarator* declarator : declaration.declarators) {
             if (declarator->initializer == nullptr) continue;
-            bool reported = false;
-            glsl::ForEachNodeOf(context.Tree(), *declarator->initializer,
-                                {glsl::NodeKind::kIdentifierExpr}, [&](const glsl::Node& inner) {
-                                  const glsl::Symbol* symbol = webgl::SymbolOf(context, inner);
-                                  if (reported || symbol == nullptr || symbol->is_const ||
-                                      (symbol->kind != glsl::SymbolKind::kVariable &&
-                                       symbol->kind != glsl::SymbolKind::kParameter)) {
-                                    return;
-                                  }
-                                  reported = true;
-                                  webgl::ReportError(
-                                      context, kId, inner.range,
-                                      "'" + symbol->name +
-                                          "' is not a constant; browsers reject it in the const "
-                                          "initializer of '" +
-                                          declarator->name.text + "'");
-                                });
             glsl::ForEachNodeOf(context.Tree(), *declarator->initializer,
                                 {glsl::NodeKind::kCallExpr}, [&](const glsl::Node& inner) {
                                   const auto& call = *inner.As<glsl::CallExpr>();
@@ -75,8 +56,8 @@ class ConstInitializerRule final : public rule::Rule {
 
 }  // namespace
 
-const rule::Rule& WebglConstInitializerRule() {
-  static const ConstInitializerRule rule;
+const rule::Rule& WebglDerivativeInConstantRule() {
+  static const DerivativeInConstantRule rule;
   return rule;
 }
 
