@@ -61,19 +61,10 @@ _SAMPLER_BY_CTYPE = {"cubemap": "samplerCube", "volume": "sampler3D"}
 
 
 def shadertoy_header(channel_samplers=("sampler2D",) * 4):
-    """ShaderToyHeader(PassType::kImage, channels)."""
-    header = ("#version 300 es\n"
-              "#ifdef GL_ES\n"
-              "precision highp float;\n"
-              "precision highp int;\n"
-              "precision mediump sampler3D;\n"
-              "#endif\n")
-    header += _UNIFORMS
-    for i, sampler in enumerate(channel_samplers):
-        header += "uniform %s iChannel%d;\n" % (sampler, i)
-    header += "out vec4 shadertoy_out_color;\n"
-    header += "#define HW_PERFORMANCE 1\n"
-    return header
+    """ShaderToyHeader(PassType::kImage, channels): shadertoy_compose.header, which
+    mirrors every pass kind (imported here, since it reads this module's uniforms)."""
+    import shadertoy_compose
+    return shadertoy_compose.header("image", channel_samplers)
 
 
 # ShaderToyEpilogue(PassType::kImage)
