@@ -92,7 +92,7 @@ namespace {
 
 // Which sampler a texture call's coordinate implies: 2 or 3 components, or 0 when
 // the call says nothing (textureSize, texelFetch, unknown types).
-int CoordinateSize(const rule::RuleContext& context, const glsl::CallExpr& call) {
+int CoordinateSize(const glsl::SemanticModel& model, const glsl::CallExpr& call) {
   const std::string_view name = call.callee.text;
   if (name.starts_with("textureCube")) return 3;
   if (name.starts_with("texture2D")) return 2;
@@ -100,23 +100,20 @@ int CoordinateSize(const rule::RuleContext& context, const glsl::CallExpr& call)
                         name == "textureOffset" || name == "textureLodOffset" ||
                         name == "textureGradOffset";
   if (!sampling || call.arguments.size() < 2 || call.arguments[1] == nullptr) return 0;
-  const glsl::Type& type = context.Model().TypeOf(call.arguments[1]->id);
+  const glsl::Type& type = model.TypeOf(call.arguments[1]->id);
   if (type.base != glsl::BaseType::kFloat || type.IsArray() || type.columns != 1) return 0;
   return type.rows == 2 || type.rows == 3 ? type.rows : 0;
 }
 
 }  // namespace
 
-std::array<ChannelChoice, 4> ChooseChannels(const rule::RuleContext& context,
-                                            const rule::HarnessDialect& dialect) {
-  std::array<ChannelChoice, 4> choices;
-  std::array<std::string, 4> names;
-  for (const rule::ProvidedVariable& provided : dialect.provides) {
-    if (provided.channel >= 0 && provided.channel < 4) names[provided.channel] = provided.name;
-  }
-  glsl::VisitPreorder(context.Tree(), [&](const glsl::Node& node, uint32_t) {
+std::array<ChannelUse, 4> ReadChannelUses(const glsl::SyntaxTree& tree,
+                                          const glsl::SemanticModel& model,
+                                          const std::array<std::string, 4>& names) {
+  std::array<ChannelUse, 4> uses;
+  glsl::VisitPreorder(tree, [&](const glsl::Node& node, uint32_t) {
     const auto* call = node.As<glsl::CallExpr>();
-    if (call == nullptr || call->call_kind != glsl::CallKind::kFunction ||
+    if (call == nullptr || !call->callee.text.starts_with("texture") ||
         call->arguments.empty() || call->arguments[0] == nullptr) {
       return true;
     }
@@ -124,13 +121,30 @@ std::array<ChannelChoice, 4> ChooseChannels(const rule::RuleContext& context,
     if (sampler == nullptr) return true;
     for (size_t channel = 0; channel < names.size(); ++channel) {
       if (names[channel].empty() || sampler->name != names[channel]) continue;
-      const int size = CoordinateSize(context, *call);
-      ChannelUse& use = choices[channel].use;
+      const int size = CoordinateSize(model, *call);
+      ChannelUse& use = uses[channel];
       if (size == 2 && use.first_2d == glsl::kNoNode) use.first_2d = call->id;
       if (size == 3 && use.first_cube == glsl::kNoNode) use.first_cube = call->id;
     }
     return true;
   });
+  return uses;
+}
+
+std::array<std::string, 4> ChannelNames(const rule::HarnessDialect& dialect) {
+  std::array<std::string, 4> names;
+  for (const rule::ProvidedVariable& provided : dialect.provides) {
+    if (provided.channel >= 0 && provided.channel < 4) names[provided.channel] = provided.name;
+  }
+  return names;
+}
+
+std::array<ChannelChoice, 4> ChooseChannels(const rule::RuleContext& context,
+                                            const rule::HarnessDialect& dialect) {
+  std::array<ChannelChoice, 4> choices;
+  const std::array<ChannelUse, 4> uses =
+      ReadChannelUses(context.Tree(), context.Model(), ChannelNames(dialect));
+  for (size_t channel = 0; channel < choices.size(); ++channel) choices[channel].use = uses[channel];
   for (size_t channel = 0; channel < choices.size(); ++channel) {
     ChannelChoice& choice = choices[channel];
     switch (context.Settings().channels[channel]) {
@@ -147,9 +161,7 @@ std::array<ChannelChoice, 4> ChooseChannels(const rule::RuleContext& context,
         choice.told = true;
         break;
       case rule::ChannelKind::kAuto:
-        choice.type = choice.use.first_cube != glsl::kNoNode && choice.use.first_2d == glsl::kNoNode
-                          ? "samplerCube"
-                          : "sampler2D";
+        choice.type = choice.use.OnlyCube() ? "samplerCube" : "sampler2D";
         break;
     }
   }

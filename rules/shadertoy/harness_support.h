@@ -46,7 +46,17 @@ struct ChannelUse {
   uint32_t first_2d = glsl::kNoNode;    // a call with a 2-component coordinate
   uint32_t first_cube = glsl::kNoNode;  // a 3-component coordinate, or textureCube*
   bool Conflicting() const { return first_2d != glsl::kNoNode && first_cube != glsl::kNoNode; }
+  // Sampled only as a cube map: what an untold channel is taken to be.
+  bool OnlyCube() const { return first_cube != glsl::kNoNode && first_2d == glsl::kNoNode; }
 };
+
+// How the code samples each of the channels named `names` (empty: no such channel).
+std::array<ChannelUse, 4> ReadChannelUses(const glsl::SyntaxTree& tree,
+                                          const glsl::SemanticModel& model,
+                                          const std::array<std::string, 4>& names);
+
+// The names of the dialect's channel variables by channel number ("" where none).
+std::array<std::string, 4> ChannelNames(const rule::HarnessDialect& dialect);
 
 // Sampler type of each provided channel (index = ProvidedVariable::channel): from
 // the settings when told, else cube when the code samples it only with 3-component

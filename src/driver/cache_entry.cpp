@@ -164,6 +164,8 @@ std::optional<std::string> EncodeCacheEntry(const FileReport& report, const Sour
   const size_t payload_at = out.Bytes().size();
   out.Text(report.dialect);
   out.Text(report.stage);
+  out.Text(report.harness);
+  out.Text(report.target);
   out.U32(static_cast<uint32_t>(generated.size()));
   for (const CachedText& file : generated) {
     out.Text(file.name);
@@ -216,6 +218,8 @@ std::optional<CacheEntry> DecodeCacheEntry(std::string_view bytes, const CacheKe
   CacheEntry entry;
   entry.dialect = in.Text();
   entry.stage = in.Text();
+  entry.harness = in.Text();
+  entry.target = in.Text();
   const uint32_t generated_count = in.Count(8);
   for (uint32_t i = 0; i < generated_count && in.Ok(); ++i) {
     CachedText file;
@@ -277,6 +281,8 @@ FileReport RestoreReport(CacheEntry entry, std::string path, std::string text,
   report.file = &sources.Add(std::move(path), std::move(text));
   report.dialect = std::move(entry.dialect);
   report.stage = std::move(entry.stage);
+  report.harness = std::move(entry.harness);
+  report.target = std::move(entry.target);
   std::vector<FileId> ids = {report.file->Id(), common != nullptr ? common->Id() : kNoFile};
   for (CachedText& file : entry.generated) {
     ids.push_back(sources.Add(std::move(file.name), std::move(file.text), true).Id());

@@ -17,7 +17,7 @@
 namespace shaderport::driver {
 
 // Bumped whenever the layout changes; entries of another version are misses.
-inline constexpr uint32_t kCacheEntryVersion = 1;
+inline constexpr uint32_t kCacheEntryVersion = 2;  // 2: harness and target
 
 struct CachedText {
   std::string name;
@@ -27,6 +27,8 @@ struct CachedText {
 struct CacheEntry {
   std::string dialect;
   std::string stage;
+  std::string harness;
+  std::string target;
   std::vector<CachedText> generated;  // synthetic files the ranges point into, in creation order
   // Range file ids here are kSelfFile, kCommonFile, kFirstGenerated + i or kNoFile.
   DiagnosticList diagnostics;

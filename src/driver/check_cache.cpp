@@ -24,8 +24,18 @@ CacheKey RunKey(const CheckOptions& options) {
       .Add(Value(options.dialect))
       .Add(Value(options.stage))
       .Add(Value(options.target));
-  for (const validate::ChannelType channel : options.channels) {
-    hasher.Add(static_cast<uint64_t>(channel));
+  for (size_t i = 0; i < options.channels.size(); ++i) {
+    hasher.Add(static_cast<uint64_t>(options.channels[i]))
+        .Add(uint64_t{options.channels_given[i] ? 1u : 0u});
+  }
+  // A --dialect harness: what of it decides how a file is composed.
+  if (const rule::HarnessDialect* harness = options.harness) {
+    hasher.Add(harness->name).Add(harness->prelude).Add(static_cast<uint64_t>(harness->declare));
+    for (const std::string& define : harness->defines) hasher.Add(define);
+    for (const rule::ProvidedVariable& provided : harness->provides) {
+      hasher.Add(provided.name).Add(provided.type).Add(static_cast<uint64_t>(provided.storage));
+      hasher.Add(provided.precision).Add(static_cast<uint64_t>(provided.channel + 1));
+    }
   }
   return hasher.Finish();
 }

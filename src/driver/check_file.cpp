@@ -8,9 +8,12 @@
 
 #include "base/limits.h"
 #include "driver/dialect.h"
+#include "driver/file_decision.h"
 #include "driver/front_end.h"
 #include "driver/read_input.h"
+#include "driver/project/record_json.h"
 #include "driver/render_check/render_file.h"
+#include "driver/render_check/render_multipass.h"
 #include "driver/suppress/suppressions.h"
 #include "driver/validate_kinds.h"
 #include "driver/webgl_checks.h"
@@ -28,61 +31,89 @@ bool IsLimitBreach(std::string_view rule_id) {
   return std::find(kLimitRules.begin(), kLimitRules.end(), rule_id) != kLimitRules.end();
 }
 
-DetectedKind ResolveKind(const FileJob& job, const CheckOptions& options,
-                         const glsl::LexedFile& lexed) {
-  DetectedKind kind = DetectKind(lexed, job.path);
+// What the user said about the file: flags over its .shaderport.toml entry, and a
+// project's own tab and inputs.
+DecisionGiven GivenFor(const FileJob& job, const CheckOptions& options) {
+  DecisionGiven given;
   if (job.config != nullptr) {
     const FileSettings settings = SettingsFor(*job.config, job.absolute_path);
-    if (settings.dialect) kind.dialect = *settings.dialect;
-    if (settings.stage) kind.stage = *settings.stage;
+    const std::string from = "[[files]] in " + (job.config->directory / kConfigFileName).string();
+    given.dialect = settings.dialect;
+    given.stage = settings.stage;
+    given.target = settings.target;
+    given.dialect_from = given.stage_from = given.target_from = from;
   }
-  if (options.dialect) kind.dialect = *options.dialect;
-  if (options.stage) kind.stage = *options.stage;
-  if (job.pass) {
-    kind.dialect = Dialect::kShaderToy;
-    kind.stage = Stage::kFragment;
-    kind.pass = *job.pass;
+  if (options.dialect) {
+    given.dialect = options.dialect;
+    given.dialect_from = "--dialect";
   }
-  return kind;
+  if (options.stage) {
+    given.stage = options.stage;
+    given.stage_from = "--stage";
+  }
+  if (options.target) {
+    given.target = options.target;
+    given.target_from = "--target";
+  }
+  given.harness = options.harness;
+  given.pass = job.pass;
+  for (size_t i = 0; i < given.channels.size(); ++i) {
+    if (job.channels) {
+      given.channels[i] = (*job.channels)[i];
+    } else if (options.channels_given[i]) {
+      given.channels[i] = options.channels[i];
+    }
+  }
+  if (job.channels) given.channels_from = "the project's inputs";
+  return given;
 }
 
-const validate::ChannelTypes& ChannelsOf(const FileJob& job, const CheckOptions& options) {
-  return job.channels ? *job.channels : options.channels;
+void RecordDecision(const FileDecision& decision, FileReport& report) {
+  report.dialect = std::string(DialectName(decision.kind.dialect));
+  report.stage = std::string(StageName(decision.kind.stage));
+  report.harness = decision.harness != nullptr ? decision.harness->name : "";
+  report.target = std::string(TargetName(decision.target));
 }
 
-// --target, then the config's [[files]] target, then the default for the code.
-Target ResolveTarget(const FileJob& job, const CheckOptions& options, const DetectedKind& kind,
-                     const glsl::LexedFile& lexed) {
-  if (options.target) return *options.target;
-  if (job.config != nullptr) {
-    const FileSettings settings = SettingsFor(*job.config, job.absolute_path);
-    if (settings.target) return *settings.target;
-  }
-  if (kind.dialect == Dialect::kShaderToy) return Target::kWebGL2;
-  // By the code's own #version, whatever --dialect says about how it is written.
-  const Dialect written = DetectKind(lexed, job.path).dialect;
-  return written == Dialect::kWebGL1 ? Target::kWebGL1 : Target::kWebGL2;
+FrontEndOptions FrontEndOptionsFor(const FileDecision& decision) {
+  FrontEndOptions front_options;
+  front_options.analyze = true;
+  front_options.channels = decision.channels;
+  // WebGL 2 contexts allow 1024-character names in GLSL ES 1.00 code too.
+  front_options.max_identifier_length = decision.target == Target::kWebGL2 ? 1024 : 256;
+  front_options.harness_header = decision.harness_header;
+  front_options.harness_version = decision.harness_version;
+  return front_options;
 }
 
-validate::ValidationRequest ComposeRequest(const FileJob& job, const CheckOptions& options,
-                                           const DetectedKind& kind, const SourceFile& file,
-                                           SourceManager& sources) {
-  const validate::Stage stage = ToValidateStage(kind.stage);
-  if (kind.dialect != Dialect::kShaderToy) {
-    validate::ValidationRequest request;
-    request.parts.push_back({file.Name(), file.Text(), file.Id(), validate::PartKind::kUser});
-    request.stage = stage;
-    request.default_version = 100;  // no #version means GLSL ES 1.00, as in WebGL
-    return request;
+// The file's decision and the front end's result for what it decided. The tree
+// completes the decision (a harness, cube-map channels); when that changes what the
+// code sees, the front end runs again on the same tokens. Not when a limit was hit.
+struct DecidedFile {
+  FileDecision decision;
+  FrontEndResult front;
+  bool limit_breached = false;
+};
+
+DecidedFile DecideAndAnalyze(const SourceFile& file, glsl::LexedFile lexed, const FileJob& job,
+                             const CheckOptions& options, SourceManager& sources) {
+  const DecisionGiven given = GivenFor(job, options);
+  DecidedFile result;
+  FileDecision& decision = result.decision;
+  decision = DecideFromTokens(lexed, job.path, given);
+  const SourceFile* common = decision.IsShaderToy() ? job.common : nullptr;
+  result.front = RunFrontEnd(file, std::move(lexed), common, decision.kind, sources,
+                             FrontEndOptionsFor(decision));
+  FrontEndResult& front = result.front;
+  result.limit_breached = std::any_of(front.diagnostics.begin(), front.diagnostics.end(),
+                                      [](const Diagnostic& d) { return IsLimitBreach(d.rule_id); });
+  if (!result.limit_breached && front.model &&
+      DecideFromTree(decision, front.lexed, front.parsed.tree, *front.model, given)) {
+    glsl::LexedFile tokens = std::move(front.lexed);
+    front = RunFrontEnd(file, std::move(tokens), common, decision.kind, sources,
+                        FrontEndOptionsFor(decision));
   }
-  const bool is_common = kind.pass == ShaderToyPass::kCommon;
-  validate::ValidationRequest request =
-      validate::ComposeShaderToyRequest(sources, ToPassType(kind.pass), ChannelsOf(job, options),
-                                        is_common ? nullptr : job.common, file);
-  // Common code has no entry point of its own: the site only compiles it inside
-  // a pass, so here it is compiled but not linked.
-  if (is_common) request.link = false;
-  return request;
+  return result;
 }
 
 // Suppression comments, then the project's rule levels, then the per-file cap.
@@ -98,43 +129,63 @@ void Finalize(const FileJob& job, const SourceFile& file, const FrontEndResult& 
   }
 }
 
-// Smoke-renders a file that validated (WebGL1 code through its port).
-void RenderChecked(const SourceFile& file, const DetectedKind& kind, const SourceFile* common,
-                   const validate::ChannelTypes& channels, const CheckOptions& options,
-                   SourceManager& sources, DiagnosticList& diagnostics) {
+RenderFileOptions RenderOptionsFor(const CheckOptions& options) {
   RenderFileOptions render_options;
   render_options.base.width = static_cast<uint32_t>(options.render_size);
   render_options.base.height = static_cast<uint32_t>(options.render_size);
   render_options.render.timeout =
       std::chrono::milliseconds(static_cast<int64_t>(options.render_timeout * 1000));
-  render_options.channel_types = channels;
+  return render_options;
+}
+
+// Smoke-renders a file that validated (WebGL1 code through its port).
+void RenderChecked(const SourceFile& file, const FileDecision& decision, const SourceFile* common,
+                   const CheckOptions& options, SourceManager& sources,
+                   DiagnosticList& diagnostics) {
+  RenderFileOptions render_options = RenderOptionsFor(options);
+  render_options.channel_types = decision.channels;
   render_options.common = common;
   render_options.sources = &sources;
+  render_options.harness = decision.harness;
   RenderFileResult rendered;
-  RenderSource(file, kind, render_options, rendered);
+  RenderSource(file, decision.kind, render_options, rendered);
   for (Diagnostic& diagnostic : rendered.diagnostics) diagnostics.push_back(std::move(diagnostic));
 }
 
 }  // namespace
 
 void RenderCheckedFile(const FileJob& job, const CheckOptions& options, SourceManager& sources,
-                       FileReport& report) {
+                       FileReport& report, bool draw) {
   if (report.file == nullptr || report.file->Text().empty()) return;
   const SourceFile& file = *report.file;
-  glsl::LexedFile lexed = glsl::Lex(file);
-  const DetectedKind kind = ResolveKind(job, options, lexed);
-  const SourceFile* common = kind.dialect == Dialect::kShaderToy ? job.common : nullptr;
-  const FrontEndResult front = RunFrontEnd(file, std::move(lexed), common, kind, sources);
+  const DecidedFile decided = DecideAndAnalyze(file, glsl::Lex(file), job, options, sources);
+  const FileDecision& decision = decided.decision;
+  const FrontEndResult& front = decided.front;
+  const SourceFile* common = decision.IsShaderToy() ? job.common : nullptr;
   // Drawn only when what remains after suppressions and configuration has no error.
   DiagnosticList settled = report.diagnostics;
   SuppressionOptions quiet;
   quiet.report_unused = false;
   ApplySuppressions(file, front.lexed, settled, front.preprocessed.inactive_regions, quiet);
   if (job.config != nullptr) ApplyRuleConfig(*job.config, settled);
-  if (!HasErrors(settled))
-    RenderChecked(file, kind, common, ChannelsOf(job, options), options, sources,
-                  report.diagnostics);
+  if (draw && !HasErrors(settled))
+    RenderChecked(file, decision, common, options, sources, report.diagnostics);
   Finalize(job, file, front, report.diagnostics);
+}
+
+void RenderCheckedProject(const FileJob& image_job, const CheckOptions& options,
+                          SourceManager& sources, FileReport& image_report) {
+  const RenderFileOptions render_options = RenderOptionsFor(options);
+  RenderFileResult rendered =
+      image_job.shadertoy_project != nullptr
+          ? RenderShaderToyJson(image_job.project,
+                                project::ToRecordJson(*image_job.shadertoy_project), sources,
+                                render_options)
+          : RenderProject(image_job.project, sources, render_options);
+  if (image_job.config != nullptr) ApplyRuleConfig(*image_job.config, rendered.diagnostics);
+  for (Diagnostic& diagnostic : rendered.diagnostics) {
+    image_report.diagnostics.push_back(std::move(diagnostic));
+  }
 }
 
 const SourceFile* LoadSharedFile(const std::filesystem::path& path, SourceManager& sources,
@@ -162,33 +213,32 @@ FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceMana
   const SourceFile& file =
       job.source != nullptr ? *job.source : sources.Add(job.path.string(), std::move(*input.text));
   report.file = &file;
-  // Lexed once: detection, the front end, suppressions and glslang's messages share it.
+  // Lexed once: the decision, the front end, suppressions and glslang's messages share it.
   glsl::LexedFile lexed = glsl::Lex(file);
-  const DetectedKind kind = ResolveKind(job, options, lexed);
-  report.dialect = std::string(DialectName(kind.dialect));
-  report.stage = std::string(StageName(kind.stage));
-
-  const SourceFile* common = kind.dialect == Dialect::kShaderToy ? job.common : nullptr;
-  // Our own front end runs first: it enforces the limits (glslang has none
-  // against, e.g., 100,000 nested parentheses), its tokens give the suppression
-  // comments and inactive regions, and its tree feeds the WebGL rules.
-  WebglCheckSettings webgl;
-  webgl.stage = kind.stage;
-  webgl.shadertoy = kind.dialect == Dialect::kShaderToy;
-  webgl.target = ResolveTarget(job, options, kind, lexed);
-  FrontEndOptions front_options;
-  front_options.analyze = true;
-  front_options.channels = ChannelsOf(job, options);
-  // WebGL 2 contexts allow 1024-character names in GLSL ES 1.00 code too.
-  front_options.max_identifier_length = webgl.target == Target::kWebGL2 ? 1024 : 256;
-  const FrontEndResult front =
-      RunFrontEnd(file, std::move(lexed), common, kind, sources, front_options);
-  for (const Diagnostic& diagnostic : front.diagnostics) {
-    if (IsLimitBreach(diagnostic.rule_id)) report.diagnostics.push_back(diagnostic);
+  DecidedFile decided = DecideAndAnalyze(file, std::move(lexed), job, options, sources);
+  const FileDecision& decision = decided.decision;
+  const FrontEndResult& front = decided.front;
+  const SourceFile* common = decision.IsShaderToy() ? job.common : nullptr;
+  RecordDecision(decision, report);
+  if (options.explain_only) {
+    report.decision = decision.reasons;
+    return report;
   }
-  if (!report.diagnostics.empty()) return report;
-
-  validate::ValidationRequest request = ComposeRequest(job, options, kind, file, sources);
+  // Our own front end ran first: it enforces the limits (glslang has none against,
+  // e.g., 100,000 nested parentheses); a file that hit one is not given to glslang.
+  if (decided.limit_breached) {
+    for (const Diagnostic& diagnostic : front.diagnostics) {
+      if (IsLimitBreach(diagnostic.rule_id)) report.diagnostics.push_back(diagnostic);
+    }
+    return report;
+  }
+  WebglCheckSettings webgl;
+  webgl.stage = decision.kind.stage;
+  webgl.shadertoy = decision.IsShaderToy();
+  webgl.target = decision.target;
+  webgl.forced_version = decision.ForcedVersion();
+  webgl.behind_header = decision.IsShaderToy();
+  validate::ValidationRequest request = ComposeForGlslang(decision, file, common, sources);
   const std::string glslang_text = TextForGlslang(file, file, front, webgl);
   const std::string common_text =
       common != nullptr ? TextForGlslang(file, *common, front, webgl) : std::string();

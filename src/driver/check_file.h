@@ -12,6 +12,9 @@
 #include "source/source_manager.h"
 
 namespace shaderport::driver {
+namespace project {
+struct ShaderToyProject;  // project/shadertoy_project.h
+}  // namespace project
 
 struct FileJob {
   std::filesystem::path path;
@@ -30,6 +33,8 @@ struct FileJob {
   // A tab of a project (a JSON project or a project folder): which project, for the
   // summary's count ("" for a shader file).
   std::string project;
+  // A tab of a JSON project: the whole project, drawn by --render as `render` draws it.
+  const project::ShaderToyProject* shadertoy_project = nullptr;
 };
 
 // Thread-safe: adds the file (and generated text) to `sources` and never throws
@@ -37,10 +42,18 @@ struct FileJob {
 FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceManager& sources);
 
 // Smoke-renders a file CheckFile found free of errors and adds the picture's
-// findings. Thread-safe: each calling thread draws with its own render worker
+// findings, then applies suppressions and configuration, which --render defers to
+// here. `draw` false only does the latter (a project's tab, drawn with its project).
+// Thread-safe: each calling thread draws with its own render worker
 // (render/isolated_render.h).
 void RenderCheckedFile(const FileJob& job, const CheckOptions& options, SourceManager& sources,
-                       FileReport& report);
+                       FileReport& report, bool draw = true);
+
+// --render for a ShaderToy project whose tabs were checked (after RenderCheckedFile
+// without drawing): the whole project is drawn as `render` draws it (Buffers each
+// frame, then Image), and the picture's findings join the Image tab's report.
+void RenderCheckedProject(const FileJob& image_job, const CheckOptions& options,
+                          SourceManager& sources, FileReport& image_report);
 
 // Reads and registers a file that other files use (ShaderToy Common); nullptr
 // and a diagnostic message in `error` when it cannot be used.

@@ -1,6 +1,7 @@
 // What a user can set for one `shaderport check` run.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <filesystem>
 #include <functional>
@@ -13,6 +14,7 @@
 #include "driver/dialect.h"
 #include "driver/read_input.h"
 #include "driver/shard.h"
+#include "rule/harness_dialect.h"
 #include "validate/shadertoy_contract.h"
 
 namespace shaderport::driver {
@@ -27,7 +29,11 @@ struct CheckOptions {
   std::vector<std::pair<std::filesystem::path, std::filesystem::path>>
       links;                                    // --target: the WebGL context (default: by version)
   std::optional<std::filesystem::path> common;  // --common: ShaderToy Common for every pass
-  validate::ChannelTypes channels{};            // --channel N=2d|cube|3d (default all 2D)
+  validate::ChannelTypes channels{};            // --channel N=2d|cube|3d
+  std::array<bool, 4> channels_given{};         // which --channel were given (else inferred)
+  // --dialect NAME|FILE.toml naming a harness dialect (rules/dialects/): the code is
+  // checked as that host composes it.
+  const rule::HarnessDialect* harness = nullptr;
   std::optional<std::filesystem::path> config;  // --config: instead of searching upward
   bool use_config = true;                       // --no-config
   // The config's include/exclude globs apply to files named on the command line
@@ -56,6 +62,9 @@ struct CheckOptions {
   std::optional<std::filesystem::path> cache_directory;
   std::string tool_identity;
   std::optional<ShardSpec> shard;  // --shard K/N: only this shard's files
+  // `explain-file`: decide what each file is (FileReport::decision) and stop there:
+  // no glslang, no links, no renders, no cache.
+  bool explain_only = false;
   // Free the text of each file that comes out with no finding as soon as it is checked
   // (`check`: its reports print findings only). Off for callers that show every file.
   bool release_clean_texts = false;

@@ -3,6 +3,7 @@
 #include <deque>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <set>
 
 #include "driver/check_cache.h"
@@ -40,6 +41,23 @@ const SourceFile* CommonFor(const fs::path& file, const CheckOptions& options,
   }
   commons.emplace(common_path, common);
   return common;
+}
+
+// The Image tab of each project none of whose tabs has an error.
+std::vector<size_t> ProjectsToDraw(const std::vector<FileJob>& jobs,
+                                   const std::vector<FileReport>& reports) {
+  std::map<std::string, size_t> image_of;
+  std::set<std::string> failing;
+  for (size_t i = 0; i < jobs.size(); ++i) {
+    if (jobs[i].project.empty()) continue;
+    if (HasErrors(reports[i].diagnostics)) failing.insert(jobs[i].project);
+    if (jobs[i].pass == ShaderToyPass::kImage) image_of.emplace(jobs[i].project, i);
+  }
+  std::vector<size_t> images;
+  for (const auto& [project, image] : image_of) {
+    if (!failing.contains(project)) images.push_back(image);
+  }
+  return images;
 }
 
 }  // namespace
@@ -124,7 +142,7 @@ CheckRun RunCheck(const CheckOptions& options) {
   };
   // --render results depend on Mesa and on time limits: such runs are not cached.
   std::optional<CheckCache> cache;
-  if (options.cache_directory && !options.render && !options.in_memory)
+  if (options.cache_directory && !options.render && !options.in_memory && !options.explain_only)
     cache.emplace(options, jobs);
   const std::vector<std::pair<size_t, size_t>> programs = FindPrograms(jobs, options);
   // A file with no finding is not read again unless it is linked or rendered below, or
@@ -151,14 +169,20 @@ CheckRun RunCheck(const CheckOptions& options) {
   // Programs link once both stages are checked (before renders, whose findings
   // must not stop a link).
   for (const auto& [vertex, fragment] : programs) {
+    if (options.explain_only) break;
     LinkProgram(jobs[vertex], jobs[fragment], options, sources, reports[vertex], reports[fragment]);
   }
   // Each job thread draws with its own render worker (render/isolated_render.h),
   // so N jobs keep N workers busy; findings land in the file's own slot.
-  if (options.render) {
+  // A ShaderToy project is drawn whole, as `render` draws it, once its tabs are done.
+  if (options.render && !options.explain_only) {
     ParallelFor(jobs.size(), render::ParallelRenderJobs(options.jobs), [&](size_t i) {
-      RenderCheckedFile(jobs[i], options, sources, reports[i]);
+      RenderCheckedFile(jobs[i], options, sources, reports[i], jobs[i].project.empty());
       file_done();
+    });
+    const std::vector<size_t> images = ProjectsToDraw(jobs, reports);
+    ParallelFor(images.size(), render::ParallelRenderJobs(options.jobs), [&](size_t i) {
+      RenderCheckedProject(jobs[images[i]], options, sources, reports[images[i]]);
     });
   }
 

@@ -74,6 +74,7 @@ void AddProjectJobs(const FileJob& base, SourceManager& sources,
       job.pass = pass.pass->kind;
       job.channels = ChannelTypesOf(*pass.pass);
       job.project = name + "#" + std::to_string(i);
+      job.shadertoy_project = &document.projects[i];
       job.common = pass.pass->kind == ShaderToyPass::kCommon ? nullptr : registered.common;
       // Common is a job of its own here: its findings are reported there, once.
       job.common_checked_separately = true;

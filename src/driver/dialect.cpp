@@ -112,20 +112,37 @@ DetectedKind DetectKind(const glsl::LexedFile& lexed, const std::filesystem::pat
   const bool has_main = facts.defines_main;
   if (facts.version_300) {
     kind.dialect = Dialect::kWebGL2;
+    kind.dialect_because = "#version 300 es";
   } else if (!has_main && !facts.version_directive &&
              (facts.defines_main_image || facts.defines_main_cubemap || facts.defines_main_sound)) {
     kind.dialect = Dialect::kShaderToy;
-    if (facts.defines_main_cubemap) kind.pass = ShaderToyPass::kCubemap;
-    if (facts.defines_main_sound) kind.pass = ShaderToyPass::kSound;
+    kind.dialect_because = "defines mainImage() and no main()";
+    if (facts.defines_main_cubemap) {
+      kind.pass = ShaderToyPass::kCubemap;
+      kind.dialect_because = "defines mainCubemap() and no main()";
+    }
+    if (facts.defines_main_sound) {
+      kind.pass = ShaderToyPass::kSound;
+      kind.dialect_because = "defines mainSound() and no main()";
+    }
   } else if (!has_main && !facts.version_directive && path.filename() == "common.glsl") {
     kind.dialect = Dialect::kShaderToy;
     kind.pass = ShaderToyPass::kCommon;
+    kind.dialect_because = "named common.glsl, with no main()";
+  } else if (facts.version_directive) {
+    kind.dialect_because = "#version 100";
   }
   if (auto stage = StageFromExtension(path)) {
     kind.stage = *stage;
+    kind.stage_because = "the file name's extension";
   } else if (kind.dialect != Dialect::kShaderToy &&
              (facts.writes_gl_position || facts.uses_attribute)) {
     kind.stage = Stage::kVertex;
+    kind.stage_because = facts.writes_gl_position ? "writes gl_Position" : "declares an attribute";
+  } else if (kind.dialect == Dialect::kShaderToy) {
+    kind.stage_because = "ShaderToy passes are fragment shaders";
+  } else {
+    kind.stage_because = "neither a vertex extension nor gl_Position: a fragment shader";
   }
   return kind;
 }

@@ -29,6 +29,9 @@ struct DetectedKind {
   Dialect dialect = Dialect::kWebGL1;
   Stage stage = Stage::kFragment;
   ShaderToyPass pass = ShaderToyPass::kImage;
+  // Why, for people (static text): "defines mainImage() and no main()".
+  std::string_view dialect_because = "no #version line: GLSL ES 1.00";
+  std::string_view stage_because = "the default stage";
 };
 
 // Looks at the code itself (comments and inactive text ignored): `#version 300 es`

@@ -39,6 +39,18 @@ std::shared_ptr<const glsl::ParseResult> ShaderToyHeaderTree(const validate::Cha
   }));
 }
 
+// A harness's declarations, parsed once per run and text (see ShaderToyHeaderTree).
+std::shared_ptr<const glsl::ParseResult> HarnessHeaderTree(std::string_view text, int version,
+                                                           SourceManager& sources) {
+  std::string key = "front-end:harness-header:" + std::string(text);
+  return std::static_pointer_cast<const glsl::ParseResult>(sources.Memo(key, [&] {
+    const SourceFile& header = sources.Add("<harness-header>", std::string(text), true);
+    glsl::PreprocessResult header_tokens;
+    return std::make_shared<const glsl::ParseResult>(
+        ParseUnit({&header}, version, false, header_tokens));
+  }));
+}
+
 void Append(DiagnosticList& to, const DiagnosticList& from) {
   to.insert(to.end(), from.begin(), from.end());
 }
@@ -65,19 +77,24 @@ FrontEndResult RunFrontEnd(const SourceFile& file, glsl::LexedFile lexed, const 
   }
   files.push_back(&file);
   file_tokens.push_back(&result.lexed);
-  // ShaderToy code is compiled by the site as GLSL ES 3.00 behind its header.
-  result.parsed = ParseUnit(files, shadertoy ? glsl::kEssl300 : 0, shadertoy, result.preprocessed,
+  // ShaderToy code is compiled by the site as GLSL ES 3.00 behind its header, a
+  // harness's code as its prelude says.
+  const int forced_version = shadertoy ? glsl::kEssl300 : options.harness_version;
+  result.parsed = ParseUnit(files, forced_version, shadertoy, result.preprocessed,
                             options.max_identifier_length, std::move(file_tokens));
   Append(result.diagnostics, result.preprocessed.diagnostics);
   Append(result.diagnostics, result.parsed.diagnostics);
 
   if (!options.analyze) return result;
   glsl::AnalyzeOptions analyze;
-  analyze.version = shadertoy ? glsl::kEssl300 : result.preprocessed.version.number;
+  analyze.version = forced_version != 0 ? forced_version : result.preprocessed.version.number;
   analyze.stage =
       kind.stage == Stage::kVertex ? glsl::ShaderStage::kVertex : glsl::ShaderStage::kFragment;
   if (shadertoy) {
     result.header = ShaderToyHeaderTree(options.channels, sources);
+    analyze.header = &result.header->tree;
+  } else if (!options.harness_header.empty()) {
+    result.header = HarnessHeaderTree(options.harness_header, analyze.version, sources);
     analyze.header = &result.header->tree;
   }
   result.model = glsl::Analyze(result.parsed.tree, analyze);

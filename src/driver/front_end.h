@@ -34,6 +34,10 @@ struct FrontEndOptions {
   validate::ChannelTypes channels{};
   // Longest identifier; 0 picks the limit from the #version (see PreprocessOptions).
   uint32_t max_identifier_length = 0;
+  // A harness other than ShaderToy (FileDecision::harness_header): the code sees its
+  // declarations, and is parsed as the version its prelude sets (0: its own).
+  std::string_view harness_header;
+  int harness_version = 0;
 };
 
 // `sources` receives the generated ShaderToy header when the dialect needs it.

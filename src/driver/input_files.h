@@ -4,8 +4,11 @@
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "driver/dialect.h"
 
 namespace shaderport::driver {
 
@@ -29,6 +32,10 @@ struct InputFile {
   // the layout `port --out-dir` and the like keep.
   std::filesystem::path relative;
   bool named = false;  // named on the command line, not found by walking
+  // What the file's .shaderport.toml [[files]] entries say about it (fix, port: the
+  // same overrides `check` applies; SelectInputFiles fills them in).
+  std::optional<Dialect> dialect{};
+  std::optional<Stage> stage{};
 };
 
 struct InputSet {

@@ -20,11 +20,16 @@ bool IsWebglFrontEndRule(std::string_view rule_id) {
   return std::find(kIds.begin(), kIds.end(), rule_id) != kIds.end();
 }
 
+int VersionOf(const FrontEndResult& front, const WebglCheckSettings& settings) {
+  if (settings.forced_version != 0) return settings.forced_version;
+  return settings.shadertoy ? 300 : front.preprocessed.version.number;
+}
+
 rules::BrowserContext ToBrowserContext(const FrontEndResult& front,
                                        const WebglCheckSettings& settings) {
   rules::BrowserContext context;
   context.webgl2 = settings.target == Target::kWebGL2;
-  context.version = settings.shadertoy ? 300 : front.preprocessed.version.number;
+  context.version = VersionOf(front, settings);
   context.vertex = settings.stage == Stage::kVertex;
   context.file = nullptr;
   context.lexed = &front.lexed;
@@ -37,11 +42,6 @@ rules::BrowserContext ToBrowserContext(const FrontEndResult& front,
 
 }  // namespace
 
-Target DefaultTarget(Dialect dialect, const glsl::PreprocessResult& preprocessed) {
-  if (dialect == Dialect::kShaderToy) return Target::kWebGL2;
-  return preprocessed.version.number >= 300 ? Target::kWebGL2 : Target::kWebGL1;
-}
-
 DiagnosticList RunWebglChecks(const SourceFile& file, const FrontEndResult& front,
                               const WebglCheckSettings& settings) {
   DiagnosticList found;
@@ -53,12 +53,12 @@ DiagnosticList RunWebglChecks(const SourceFile& file, const FrontEndResult& fron
   port_settings.mode = rule::PortMode::kFix;
   port_settings.stage =
       settings.stage == Stage::kVertex ? rule::ShaderStage::kVertex : rule::ShaderStage::kFragment;
-  port_settings.source_version = settings.shadertoy ? 300 : front.preprocessed.version.number;
+  port_settings.source_version = VersionOf(front, settings);
   port_settings.written_version =
       front.preprocessed.version.present ? front.preprocessed.version.number : 0;
   port_settings.target =
       settings.target == Target::kWebGL1 ? rule::WebglTarget::kWebGL1 : rule::WebglTarget::kWebGL2;
-  port_settings.behind_site_header = settings.shadertoy;
+  port_settings.behind_site_header = settings.behind_header;
   for (const rule::Rule* check : rules::CheckRules()) {
     rule::RuleContext context(file, front.lexed, front.preprocessed, front.parsed.tree,
                               *front.model, port_settings);

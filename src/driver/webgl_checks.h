@@ -15,11 +15,11 @@ struct WebglCheckSettings {
   Target target = Target::kWebGL2;
   Stage stage = Stage::kFragment;
   bool shadertoy = false;
+  // The version a host forces on the code (FileDecision::ForcedVersion), 0: its own.
+  int forced_version = 0;
+  // The code is compiled behind text a host generates (ShaderToy's, a harness prelude).
+  bool behind_header = false;
 };
-
-// The target a file runs in when nobody said: WebGL2 for GLSL ES 3.00 and ShaderToy
-// code, WebGL1 for GLSL ES 1.00 (as the page that would load it).
-Target DefaultTarget(Dialect dialect, const glsl::PreprocessResult& preprocessed);
 
 // Findings of the check and lint rules (rules/webgl/*, rules/portability/*) and of
 // our front end's WebGL limits.

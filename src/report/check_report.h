@@ -20,10 +20,20 @@ enum class FileRole {
             // a project document's own problems
 };
 
+// One part of what a file was decided to be, and why (driver/file_decision.h):
+// {"harness", "raymarch-blog", "uses uv without declaring it"}.
+struct DecisionPart {
+  std::string part;
+  std::string value;
+  std::string because;
+};
+
 struct FileReport {
   const SourceFile* file = nullptr;
   std::string dialect;  // "shadertoy", "webgl1", "webgl2" ("" when unknown)
   std::string stage;    // "vertex", "fragment" ("" when unknown)
+  std::string harness;  // the host that completes the code ("shadertoy", "raymarch-blog"; "": none)
+  std::string target;   // the WebGL context it is checked for: "webgl1", "webgl2" ("": unknown)
   // Sorted by position. A range may point into another file of the SourceManager
   // (e.g. a ShaderToy Common file); printers show the file the range is in.
   DiagnosticList diagnostics;
@@ -32,6 +42,7 @@ struct FileReport {
   Severity fail_on = Severity::kError;
   FileRole role = FileRole::kShader;
   std::string project{};  // kTab: the project (document and index, or folder) it belongs to
+  std::vector<DecisionPart> decision{};  // filled for `explain-file` only
 };
 
 struct CheckReport {

@@ -57,6 +57,8 @@ Json ReportToJson(const CheckReport& report, const ReportOptions& options) {
                                         : std::string()},
                      {"dialect", file.dialect},
                      {"stage", file.stage},
+                     {"harness", file.harness},
+                     {"target", file.target},
                      {"diagnostics", std::move(diagnostics)}});
   }
   const ReportSummary summary = Summarize(report);

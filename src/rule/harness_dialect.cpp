@@ -10,6 +10,27 @@ bool HarnessDialect::NameMatches(std::string_view name_or_alias) const {
   return false;
 }
 
+int HarnessDialect::PreludeVersion() const {
+  // The `#version` line of the prelude, words separated by blanks.
+  const size_t at = prelude.find("#version");
+  if (at == std::string::npos) return 0;
+  const size_t end = prelude.find('\n', at);
+  const std::string_view line =
+      std::string_view(prelude).substr(at, end == std::string::npos ? std::string::npos : end - at);
+  std::string words;
+  for (char c : line) {
+    if (c == ' ' || c == '\t' || c == '\r') {
+      if (!words.empty() && words.back() != ' ') words += ' ';
+    } else {
+      words += c;
+    }
+  }
+  while (!words.empty() && words.back() == ' ') words.pop_back();
+  if (words == "#version 100") return 100;
+  if (words == "#version 300 es") return 300;
+  return 0;
+}
+
 const ProvidedVariable* HarnessDialect::FindProvided(std::string_view variable) const {
   for (const ProvidedVariable& provided : provides) {
     if (provided.name == variable) return &provided;

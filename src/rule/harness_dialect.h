@@ -67,6 +67,12 @@ struct HarnessDialect {
   std::vector<std::pair<std::string, std::string>> renames;
   // Detection hints: identifiers whose use suggests this dialect beyond `provides`.
   std::vector<std::string> hints;
+  // Lines the host puts before the code when it compiles it ("#version 300 es" and a
+  // default precision for the raymarch blog); `check` compiles the code behind them.
+  std::string prelude;
+
+  // The GLSL version the prelude's `#version` line sets: 100, 300, or 0 for none.
+  int PreludeVersion() const;
 
   bool NameMatches(std::string_view name_or_alias) const;
   const ProvidedVariable* FindProvided(std::string_view variable) const;

@@ -174,6 +174,16 @@ class DialectParser {
     return nullptr;
   }
 
+  // Only `#version 100` or `#version 300 es` may set the version: it decides the target.
+  void ReadPrelude(const toml::key& key, const toml::node& value) {
+    auto text = String(key, value);
+    if (!text) return;
+    dialect_.prelude = std::move(*text);
+    if (dialect_.prelude.find("#version") != std::string::npos && dialect_.PreludeVersion() == 0) {
+      Error(value.source(), "'prelude' may only say '#version 100' or '#version 300 es'");
+    }
+  }
+
   void ReadTopLevel(const toml::key& key, const toml::node& value) {
     if (key == "name") {
       saw_name_ = true;
@@ -200,6 +210,8 @@ class DialectParser {
       ReadDefines(key, value);
     } else if (key == "hints") {
       dialect_.hints = Strings(key, value);
+    } else if (key == "prelude") {
+      ReadPrelude(key, value);
     } else if (key == "renames") {
       ReadRenames(key, value);
     } else if (key == "provides") {

@@ -1,6 +1,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -20,6 +21,7 @@
 #include "driver/read_input.h"
 #include "empty_input.h"
 #include "option_names.h"
+#include "port_arguments.h"
 #include "progress_line.h"
 #include "report/baseline.h"
 #include "report/merge.h"
@@ -71,20 +73,12 @@ std::optional<Baseline> ReadBaselineFile(const std::string& path, std::string& e
   return ParseBaseline(text.str(), error);
 }
 
-bool ParseChannel(const std::string& spec, validate::ChannelTypes& channels) {
-  // N=2d|cube|3d
-  if (spec.size() < 3 || spec[1] != '=' || spec[0] < '0' || spec[0] > '3') return false;
-  const std::string type = spec.substr(2);
-  const auto index = static_cast<size_t>(spec[0] - '0');
-  if (type == "2d") {
-    channels[index] = validate::ChannelType::k2D;
-  } else if (type == "cube") {
-    channels[index] = validate::ChannelType::kCube;
-  } else if (type == "3d") {
-    channels[index] = validate::ChannelType::k3D;
-  } else {
-    return false;
-  }
+bool ParseChannel(const std::string& spec, validate::ChannelTypes& channels,
+                  std::array<bool, 4>& given) {
+  const std::optional<ChannelSpec> parsed = ParseChannelSpec(spec);
+  if (!parsed) return false;
+  channels[parsed->index] = parsed->type;
+  given[parsed->index] = true;
   return true;
 }
 
@@ -97,16 +91,18 @@ bool UseColor(const std::string& mode) {
 
 int RunCheckCommand(const CheckArgs& args) {
   driver::CheckOptions options;
+  SourceManager dialect_sources;  // a --dialect FILE.toml, kept for its diagnostics
+  std::optional<rule::HarnessDialect> harness;
   for (const std::string& path : args.paths) options.paths.emplace_back(path);
   const auto format = ParseOutputFormat(args.format);
   if (!format) return UsageError(UnknownName("--format", args.format, kFormatNames));
   if (std::find(kWhenNames.begin(), kWhenNames.end(), args.color) == kWhenNames.end()) {
     return UsageError(UnknownName("--color", args.color, kWhenNames));
   }
-  if (!args.dialect.empty()) {
-    options.dialect = driver::ParseDialect(args.dialect);
-    if (!options.dialect) return UsageError(UnknownName("--dialect", args.dialect, kDialectNames));
+  if (!ResolveDialectOption(args.dialect, dialect_sources, options.dialect, harness)) {
+    return kExitUsage;
   }
+  if (harness && !options.dialect) options.harness = &*harness;
   if (!args.stage.empty()) {
     options.stage = driver::ParseStage(args.stage);
     if (!options.stage) return UsageError(UnknownName("--stage", args.stage, kStageNames));
@@ -128,7 +124,7 @@ int RunCheckCommand(const CheckArgs& args) {
     if (!options.fail_on) return UsageError(UnknownName("--fail-on", args.fail_on, kSeverityNames));
   }
   for (const std::string& spec : args.channels) {
-    if (!ParseChannel(spec, options.channels)) {
+    if (!ParseChannel(spec, options.channels, options.channels_given)) {
       return UsageError("bad --channel '" + spec + "' (expected N=2d|cube|3d, N from 0 to 3)");
     }
   }
@@ -267,7 +263,8 @@ void AddCheckCommand(CLI::App& app, int& exit_code) {
   command->add_option("--fail-on", args->fail_on,
                       "Lowest severity that fails the check: error (default) | warning | note");
   command->add_option("--dialect", args->dialect,
-                      "shadertoy | webgl1 | webgl2 (default: detected per file)");
+                      "shadertoy | webgl1 | webgl2 | a harness dialect name | FILE.toml "
+                      "(default: detected per file)");
   command->add_option("--stage", args->stage, "vertex | fragment (default: from the extension)");
   command->add_option("--target", args->target,
                       "webgl1 | webgl2: the WebGL context the shader runs in (default: webgl2 "

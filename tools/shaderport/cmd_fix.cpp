@@ -150,7 +150,7 @@ int RunFix(const FixArgs& args) {
         AddDocumentResults(std::move(fixed), results);
         continue;
       }
-      results.push_back(driver::PortFile(input.path, options, sources));
+      results.push_back(driver::PortFile(input.path, OptionsFor(options, input), sources));
       exit_code = std::max(exit_code, Emit(args, results.back(), input.path));
     }
   }

@@ -105,7 +105,7 @@ int RunPort(const PortArgs& args) {
   std::vector<driver::PortResult> results(inputs->size());
   std::vector<driver::EmittedOutput> emitted(inputs->size());
   driver::ParallelFor(inputs->size(), static_cast<unsigned>(std::max(0, args.jobs)), [&](size_t i) {
-    results[i] = driver::PortFile((*inputs)[i].path, options, sources);
+    results[i] = driver::PortFile((*inputs)[i].path, OptionsFor(options, (*inputs)[i]), sources);
     if (*emit_kind != toolchain::EmitKind::kEssl && !results[i].read_failed) {
       emitted[i] = driver::EmitPorted(results[i], emit_options, sources);
     }

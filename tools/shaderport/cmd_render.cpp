@@ -14,6 +14,7 @@
 #include "driver/render_check/render_file.h"
 #include "driver/render_check/render_multipass.h"
 #include "option_names.h"
+#include "port_arguments.h"
 #include "render/png_io.h"
 #include "report/output_format.h"
 
@@ -68,14 +69,10 @@ int RunRender(const RenderArgs& args) {
     options.render.backend = *backend;
   }
   for (const std::string& spec : args.channel_types) {
-    const std::string type = spec.size() > 2 ? spec.substr(2) : "";
-    if (spec.size() < 3 || spec[1] != '=' || spec[0] < '0' || spec[0] > '3' ||
-        (type != "2d" && type != "cube" && type != "3d")) {
-      return UsageError("--channel-type takes N=2d|cube|3d");
-    }
-    options.channel_types[static_cast<size_t>(spec[0] - '0')] =
-        type == "cube" ? validate::ChannelType::kCube
-                       : (type == "3d" ? validate::ChannelType::k3D : validate::ChannelType::k2D);
+    const std::optional<ChannelSpec> parsed = ParseChannelSpec(spec);
+    if (!parsed) return UsageError("--channel-type takes N=2d|cube|3d");
+    options.channel_types_given[parsed->index] = true;
+    options.channel_types[parsed->index] = parsed->type;
   }
   options.base.frames = args.frames;
   options.base.inputs.time = args.time;

@@ -23,5 +23,6 @@ void AddRulesCommand(CLI::App& app, int& exit_code);
 void AddExplainCommand(CLI::App& app, int& exit_code);
 void AddReportCommand(CLI::App& app, int& exit_code);
 void AddMergeCommand(CLI::App& app, int& exit_code);
+void AddExplainFileCommand(CLI::App& app, int& exit_code);
 
 }  // namespace shaderport::cli

@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   AddPortCommand(app, exit_code);
   AddRulesCommand(app, exit_code);
   AddExplainCommand(app, exit_code);
+  AddExplainFileCommand(app, exit_code);
   AddReportCommand(app, exit_code);
   AddMergeCommand(app, exit_code);
   try {

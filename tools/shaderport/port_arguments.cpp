@@ -15,21 +15,36 @@
 #include "rules/shadertoy/builtin_dialects.h"
 
 namespace shaderport::cli {
+
+std::optional<ChannelSpec> ParseChannelSpec(std::string_view spec) {
+  if (spec.size() < 3 || spec[1] != '=' || spec[0] < '0' || spec[0] > '3') return std::nullopt;
+  const std::string_view type = spec.substr(2);
+  ChannelSpec parsed{static_cast<size_t>(spec[0] - '0'), validate::ChannelType::k2D};
+  if (type == "cube") {
+    parsed.type = validate::ChannelType::kCube;
+  } else if (type == "3d") {
+    parsed.type = validate::ChannelType::k3D;
+  } else if (type != "2d") {
+    return std::nullopt;
+  }
+  return parsed;
+}
+
 namespace {
 
 bool ParseChannel(const std::string& spec, driver::PortOptions& options) {
-  const size_t eq = spec.find('=');
-  if (eq != 1 || spec[0] < '0' || spec[0] > '3') return false;
-  const std::string kind = spec.substr(2);
-  rule::ChannelKind& slot = options.channels[spec[0] - '0'];
-  if (kind == "2d") {
-    slot = rule::ChannelKind::k2D;
-  } else if (kind == "cube") {
-    slot = rule::ChannelKind::kCube;
-  } else if (kind == "3d") {
-    slot = rule::ChannelKind::k3D;
-  } else {
-    return false;
+  const std::optional<ChannelSpec> parsed = ParseChannelSpec(spec);
+  if (!parsed) return false;
+  switch (parsed->type) {
+    case validate::ChannelType::k2D:
+      options.channels[parsed->index] = rule::ChannelKind::k2D;
+      break;
+    case validate::ChannelType::kCube:
+      options.channels[parsed->index] = rule::ChannelKind::kCube;
+      break;
+    case validate::ChannelType::k3D:
+      options.channels[parsed->index] = rule::ChannelKind::k3D;
+      break;
   }
   return true;
 }
@@ -44,12 +59,14 @@ std::vector<std::string> DialectNames() {
   return names;
 }
 
-// --dialect: a built-in dialect name (shadertoy, webgl1, webgl2) or a TOML file.
-bool ResolveDialect(const std::string& value, driver::PortOptions& options, SourceManager& sources,
-                    std::optional<rule::HarnessDialect>& harness) {
+}  // namespace
+
+bool ResolveDialectOption(const std::string& value, SourceManager& sources,
+                          std::optional<driver::Dialect>& dialect,
+                          std::optional<rule::HarnessDialect>& harness) {
   if (value.empty()) return true;
-  if (auto dialect = driver::ParseDialect(value)) {
-    options.dialect = dialect;
+  if (auto named = driver::ParseDialect(value)) {
+    dialect = named;
     return true;
   }
   rule::DialectLoadResult loaded = rules::LoadDialect(value, sources);
@@ -61,17 +78,15 @@ bool ResolveDialect(const std::string& value, driver::PortOptions& options, Sour
     }
     return false;
   }
-  if (loaded.dialect->NameMatches("shadertoy")) options.dialect = driver::Dialect::kShaderToy;
+  if (loaded.dialect->NameMatches("shadertoy")) dialect = driver::Dialect::kShaderToy;
   harness = std::move(loaded.dialect);
-  options.harness = &*harness;
   return true;
 }
 
-}  // namespace
-
 bool ApplyPortArguments(const PortArguments& arguments, driver::PortOptions& options,
                         SourceManager& sources, std::optional<rule::HarnessDialect>& harness) {
-  if (!ResolveDialect(arguments.dialect, options, sources, harness)) return false;
+  if (!ResolveDialectOption(arguments.dialect, sources, options.dialect, harness)) return false;
+  if (harness) options.harness = &*harness;
   for (const std::string& spec : arguments.channels) {
     if (!ParseChannel(spec, options)) {
       PrintError("bad --channel '" + spec + "' (expected N=2d|cube|3d, N from 0 to 3)");
@@ -124,11 +139,26 @@ std::optional<std::vector<driver::InputFile>> SelectInputFiles(const InputArgume
   }
   for (const std::string& error : inputs.errors) PrintError(error);
   if (!inputs.errors.empty()) return std::nullopt;
+  for (driver::InputFile& input : inputs.files) {
+    if (const driver::Config* config = configs.For(input.path)) {
+      const driver::FileSettings settings =
+          driver::SettingsFor(*config, std::filesystem::absolute(input.path));
+      input.dialect = settings.dialect;
+      input.stage = settings.stage;
+    }
+  }
   if (inputs.files.empty() && inputs.dropped == 0 && !arguments.allow_empty) {
     PrintError(NothingToDo(arguments.paths, verb));
     return std::nullopt;
   }
   return std::move(inputs.files);
+}
+
+driver::PortOptions OptionsFor(const driver::PortOptions& options, const driver::InputFile& input) {
+  driver::PortOptions for_input = options;
+  if (!for_input.dialect && for_input.harness == nullptr) for_input.dialect = input.dialect;
+  if (!for_input.stage) for_input.stage = input.stage;
+  return for_input;
 }
 
 bool ExcludedByConfig(const InputArguments& arguments, const std::filesystem::path& name) {

@@ -6,12 +6,14 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "driver/input_files.h"
 #include "driver/port/port_file.h"
 #include "rule/harness_dialect.h"
 #include "source/source_manager.h"
+#include "validate/shadertoy_contract.h"
 
 namespace shaderport::cli {
 
@@ -21,10 +23,28 @@ struct PortArguments {
   std::string stage;                  // vertex | fragment
 };
 
+// `--channel N=2d|cube|3d` (and render's --channel-type): which channel, which type.
+struct ChannelSpec {
+  size_t index = 0;
+  validate::ChannelType type = validate::ChannelType::k2D;
+};
+std::optional<ChannelSpec> ParseChannelSpec(std::string_view spec);
+
+// --dialect: shadertoy, webgl1 or webgl2 sets `dialect`; a harness dialect's name or
+// TOML file is loaded into `harness` (ShaderToy's also sets `dialect`). Prints why and
+// returns false on a bad value (a usage error).
+bool ResolveDialectOption(const std::string& value, SourceManager& sources,
+                          std::optional<driver::Dialect>& dialect,
+                          std::optional<rule::HarnessDialect>& harness);
+
 // Fills `options`; a loaded dialect lives in `harness`. Prints why and returns
 // false on a bad value (a usage error).
 bool ApplyPortArguments(const PortArguments& arguments, driver::PortOptions& options,
                         SourceManager& sources, std::optional<rule::HarnessDialect>& harness);
+
+// `options` for one input: its .shaderport.toml [[files]] dialect and stage apply
+// where no flag gave them, as in `check`.
+driver::PortOptions OptionsFor(const driver::PortOptions& options, const driver::InputFile& input);
 
 // The files named by `paths` (directories walked for shader extensions, hidden
 // directories skipped, the include/exclude globs of each file's .shaderport.toml

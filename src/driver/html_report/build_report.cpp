@@ -15,6 +15,7 @@
 #include "driver/render_check/render_file.h"
 #include "render/isolated_render.h"
 #include "report/text_format.h"
+#include "rules/shadertoy/builtin_dialects.h"
 
 namespace shaderport::driver {
 namespace {
@@ -54,7 +55,13 @@ struct Job {
 };
 
 PortResult PortEntry(const Job& job, SourceManager& sources, ReportEntry& entry) {
+  // The port reads the file as the check did (one decision per file, file_decision.h).
   PortOptions port_options;
+  port_options.dialect = ParseDialect(job.checked->dialect);
+  port_options.stage = ParseStage(job.checked->stage);
+  if (!job.checked->harness.empty() && job.checked->harness != "shadertoy") {
+    port_options.harness = rules::FindBuiltinDialect(job.checked->harness);
+  }
   PortResult ported = PortSource(*job.checked->file, job.common, port_options, sources);
   entry.port.status = ported.validated ? StatusOf(ported.diagnostics) : StepStatus::kFail;
   entry.port.detail = ported.validated ? (ported.Changed() ? "validated WebGL2 (changed)"

@@ -5,6 +5,7 @@
 #include <set>
 #include <tuple>
 
+#include "driver/file_decision.h"
 #include "driver/front_end.h"
 #include "driver/read_input.h"
 #include "driver/validate_kinds.h"
@@ -21,23 +22,29 @@ namespace {
 // Beyond this many applied fixes, narrowing tries whole rules instead of single fixes.
 constexpr size_t kMaxSingleFixTrials = 24;
 
-validate::ChannelTypes ToChannelTypes(const PortOptions& options) {
-  validate::ChannelTypes types{};
-  for (size_t i = 0; i < types.size(); ++i) {
+// What the user said, in the terms of the shared decision (file_decision.h).
+DecisionGiven GivenFor(const PortOptions& options) {
+  DecisionGiven given;
+  given.dialect = options.dialect;
+  given.stage = options.stage;
+  given.pass = options.pass;
+  given.harness = options.harness;
+  for (size_t i = 0; i < given.channels.size(); ++i) {
     switch (options.channels[i]) {
+      case rule::ChannelKind::k2D:
+        given.channels[i] = validate::ChannelType::k2D;
+        break;
       case rule::ChannelKind::kCube:
-        types[i] = validate::ChannelType::kCube;
+        given.channels[i] = validate::ChannelType::kCube;
         break;
       case rule::ChannelKind::k3D:
-        types[i] = validate::ChannelType::k3D;
+        given.channels[i] = validate::ChannelType::k3D;
         break;
       case rule::ChannelKind::kAuto:
-      case rule::ChannelKind::k2D:
-        types[i] = validate::ChannelType::k2D;
         break;
     }
   }
-  return types;
+  return given;
 }
 
 size_t ErrorCount(const DiagnosticList& diagnostics) {
@@ -50,31 +57,15 @@ class Porter {
   Porter(const SourceFile& file, const SourceFile* common, const PortOptions& options,
          SourceManager& sources)
       : file_(file), common_(common), options_(options), sources_(sources) {
-    kind_ = DetectKind(file.Text(), file.Name());
-    if (options.dialect) kind_.dialect = *options.dialect;
-    if (options.stage) kind_.stage = *options.stage;
-    if (options.pass) {
-      kind_.dialect = Dialect::kShaderToy;
-      kind_.pass = *options.pass;
-      kind_.stage = Stage::kFragment;
-    }
-    if (kind_.dialect != Dialect::kShaderToy) common_ = nullptr;
+    decision_ = DecideFile(file, common, GivenFor(options), sources);
+    kind_ = decision_.kind;
+    if (!decision_.IsShaderToy()) common_ = nullptr;
     rules_ = options.rules;
     if (rules_.empty()) rules_ = rules::RulesForMode(options.mode);
     settings_.mode = options.mode;
     settings_.stage =
         kind_.stage == Stage::kVertex ? rule::ShaderStage::kVertex : rule::ShaderStage::kFragment;
-    settings_.harness = options.harness;
-    if (settings_.harness == nullptr && kind_.dialect == Dialect::kShaderToy) {
-      settings_.harness = rules::FindBuiltinDialect("shadertoy");
-    }
-    // Code written for another harness (glslsandbox, The Book of Shaders, a blog's
-    // harness) uses names it never declares: the shipped dialects recognise it.
-    if (settings_.harness == nullptr && !options.dialect) {
-      if (auto match = rule::DetectDialectInText(rules::BuiltinDialects(), file.Text())) {
-        settings_.harness = match->dialect;
-      }
-    }
+    settings_.harness = decision_.harness;
     settings_.source_version = kind_.dialect == Dialect::kWebGL1 ? 100 : 300;
     settings_.buffer_pass = kind_.pass == ShaderToyPass::kBuffer;
     for (int i = 0; i < 4; ++i) settings_.channels[i] = options.channels[i];
@@ -84,6 +75,7 @@ class Porter {
     PortResult result;
     result.file = &file_;
     result.kind = kind_;
+    result.decision = decision_;
     result.output_stage = kind_.stage;
     rule::FixEngineResult engine = RunEngine({});
     DiagnosticList validation;
@@ -132,7 +124,7 @@ class Porter {
       }
       FrontEndOptions front_options;
       front_options.analyze = true;
-      front_options.channels = ToChannelTypes(options_);
+      front_options.channels = decision_.channels;
       auto front = std::make_shared<FrontEndResult>(
           RunFrontEnd(current, kind.dialect == Dialect::kShaderToy ? common_ : nullptr, kind,
                       sources_, front_options));
@@ -153,12 +145,8 @@ class Porter {
   DiagnosticList Validate(std::string_view text, bool as_output) {
     const SourceFile current(file_.Id(), file_.Name(), std::string(text));
     validate::ValidationRequest request;
-    if (!as_output && kind_.dialect == Dialect::kShaderToy) {
-      const bool is_common = kind_.pass == ShaderToyPass::kCommon;
-      request = validate::ComposeShaderToyRequest(sources_, ToPassType(kind_.pass),
-                                                  ToChannelTypes(options_),
-                                                  is_common ? nullptr : common_, current);
-      if (is_common) request.link = false;
+    if (!as_output) {
+      request = ComposeForGlslang(decision_, current, common_, sources_);
     } else {
       request.parts.push_back({file_.Name(), current.Text(), file_.Id()});
       request.stage = ToValidateStage(kind_.stage);
@@ -229,6 +217,7 @@ class Porter {
   const SourceFile* common_;
   const PortOptions& options_;
   SourceManager& sources_;
+  FileDecision decision_;
   DetectedKind kind_;
   std::vector<const rule::Rule*> rules_;
   rule::PortSettings settings_;

@@ -10,6 +10,7 @@
 
 #include "diag/diagnostic.h"
 #include "driver/dialect.h"
+#include "driver/file_decision.h"
 #include "driver/read_input.h"
 #include "rule/rule.h"
 #include "source/edit.h"
@@ -35,7 +36,8 @@ struct PortResult {
   const SourceFile* file = nullptr;  // the original, in the SourceManager
   std::string text;                  // the result
   SourceMap map;                     // text -> original
-  DetectedKind kind;                 // how the original was read
+  DetectedKind kind;                 // how the original was read (decision.kind)
+  FileDecision decision;             // what the original is (file_decision.h)
   Stage output_stage = Stage::kFragment;
   DiagnosticList diagnostics;  // what remains, located in the original
   DiagnosticList fixed;        // findings whose fixes were applied

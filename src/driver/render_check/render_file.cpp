@@ -1,6 +1,7 @@
 #include "driver/render_check/render_file.h"
 
 #include "driver/dialect.h"
+#include "driver/file_decision.h"
 #include "driver/port/port_file.h"
 #include "driver/read_input.h"
 #include "driver/render_check/browser_optimizer.h"
@@ -136,9 +137,18 @@ RenderFileResult RenderFile(const std::filesystem::path& path, SourceManager& so
     return result;
   }
   const SourceFile& file = sources.Add(path.string(), std::move(*input.text));
+  DecisionGiven given;
+  given.harness = options.harness;
+  for (size_t i = 0; i < given.channels.size(); ++i) {
+    if (options.channel_types_given[i]) given.channels[i] = options.channel_types[i];
+  }
+  given.channels_from = "--channel-type";
+  const FileDecision decision = DecideFile(file, options.common, given, sources);
   RenderFileOptions with_sources = options;
   with_sources.sources = &sources;
-  RenderSource(file, DetectKind(file.Text(), path), with_sources, result);
+  with_sources.channel_types = decision.channels;
+  with_sources.harness = decision.harness;
+  RenderSource(file, decision.kind, with_sources, result);
   return result;
 }
 
@@ -195,6 +205,7 @@ void RenderSource(const SourceFile& file, const DetectedKind& kind,
     PortOptions port_options;
     port_options.dialect = Dialect::kWebGL1;
     port_options.stage = kind.stage;
+    port_options.harness = options.harness;
     const PortResult ported = PortSource(file, nullptr, port_options, *options.sources);
     if (!ported.validated) {
       result.diagnostics.push_back(

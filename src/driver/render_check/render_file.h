@@ -12,6 +12,7 @@
 
 #include "diag/diagnostic.h"
 #include "driver/dialect.h"
+#include "rule/harness_dialect.h"
 #include "render/render_checks.h"
 #include "render/render_request.h"
 #include "source/source_manager.h"
@@ -24,6 +25,11 @@ struct RenderFileOptions {
   render::RenderRequest base;    // size, frames and ShaderToy inputs; sources are ignored
   std::array<std::string, 4> channel_images;  // PNG paths for iChannel0..3 ("" = procedural)
   validate::ChannelTypes channel_types{};     // sampler kind per channel (ShaderToy)
+  // Which channel_types the user gave; RenderFile decides the others from the code
+  // (file_decision.h), as every command does.
+  std::array<bool, 4> channel_types_given{};
+  // The host that completes non-ShaderToy code (a harness dialect), if any.
+  const rule::HarnessDialect* harness = nullptr;
   const SourceFile* common = nullptr;         // ShaderToy Common code, if any
   // Where the WebGL2 port of WebGL1 code is registered; RenderFile sets it.
   SourceManager* sources = nullptr;
@@ -45,7 +51,7 @@ struct RenderFileResult {
   double milliseconds = 0;
 };
 
-// Reads, detects the dialect and stage, renders and checks one file.
+// Reads, decides what the file is (file_decision.h), renders and checks one file.
 RenderFileResult RenderFile(const std::filesystem::path& path, SourceManager& sources,
                             const RenderFileOptions& options);
 

@@ -131,6 +131,24 @@ TEST(ProjectCli, FolderLayoutRoundTripsAndRendersAsTheJson) {
   EXPECT_EQ(ReadWholeFile(project.Root() / "a.png"), ReadWholeFile(project.Root() / "b.png"));
 }
 
+// check --render draws a project as `render` does: Buffer A (one flat colour) feeds
+// Image, which shows it. Drawn tab by tab, Buffer A alone would be the flat picture and
+// Image would show a procedural texture; drawn whole, the Image is the flat one.
+TEST(ProjectCli, CheckRenderDrawsTheWholeProject) {
+  TempProject project("project-check-render");
+  nlohmann::json toy = nlohmann::json::parse(Export(
+      "void mainImage(out vec4 o, in vec2 p) {\n  o = vec4(0.8, 0.2, 0.1, 1.0);\n}\n"));
+  toy["Shader"]["renderpass"][0]["code"] =
+      "void mainImage(out vec4 o, in vec2 p) {\n  o = texture(iChannel0, p / iResolution.xy);\n}\n";
+  project.Write("toy.json", toy.dump(1));
+  const CommandResult result =
+      RunShaderport("check --render --render-size 16 toy.json", project.Root());
+  EXPECT_LE(result.exit_code, 1) << result.err;
+  EXPECT_NE(result.out.find("toy.json#Image:"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("render/single-colour"), std::string::npos) << result.out;
+  EXPECT_EQ(result.out.find("toy.json#Buffer A:"), std::string::npos) << result.out;
+}
+
 TEST(ProjectCli, BrokenDocumentsAreUserErrors) {
   TempProject project("project-broken");
   project.Write("bad.json", "{\"Shader\": {\"renderpass\": [}");
