@@ -12,6 +12,7 @@
 #include "driver/front_end.h"
 #include "driver/read_input.h"
 #include "driver/project/record_json.h"
+#include "driver/project/shadertoy_project.h"
 #include "driver/render_check/render_file.h"
 #include "driver/render_check/render_multipass.h"
 #include "driver/suppress/suppressions.h"
@@ -176,12 +177,28 @@ void RenderCheckedFile(const FileJob& job, const CheckOptions& options, SourceMa
 void RenderCheckedProject(const FileJob& image_job, const CheckOptions& options,
                           SourceManager& sources, FileReport& image_report) {
   const RenderFileOptions render_options = RenderOptionsFor(options);
-  RenderFileResult rendered =
-      image_job.shadertoy_project != nullptr
-          ? RenderShaderToyJson(image_job.project,
-                                project::ToRecordJson(*image_job.shadertoy_project), sources,
-                                render_options)
-          : RenderProject(image_job.project, sources, render_options);
+  RenderFileResult rendered;
+  if (const project::ShaderToyProject* whole = image_job.shadertoy_project) {
+    // Passes are named as the check named them: "toy.json#Image" (the tab's file name).
+    std::string name = image_job.path.string();
+    const project::ProjectPass* image = whole->Find(ShaderToyPass::kImage);
+    if (image != nullptr && name.ends_with("#" + image->name)) {
+      name.resize(name.size() - image->name.size() - 1);
+    }
+    rendered = RenderShaderToyJson(name, project::ToRecordJson(*whole), sources, render_options);
+  } else {
+    rendered = RenderProject(image_job.project, sources, render_options);
+    // A folder's Image tab is its own file: findings in the drawn copy of its code
+    // point at that file, as the check's do.
+    for (Diagnostic& diagnostic : rendered.diagnostics) {
+      if (diagnostic.range.file == kNoFile || image_report.file == nullptr) continue;
+      const SourceFile& drawn = sources.Get(diagnostic.range.file);
+      if (drawn.Name() == image_job.project + "#Image" &&
+          drawn.Text() == image_report.file->Text()) {
+        diagnostic.range.file = image_report.file->Id();
+      }
+    }
+  }
   if (image_job.config != nullptr) ApplyRuleConfig(*image_job.config, rendered.diagnostics);
   for (Diagnostic& diagnostic : rendered.diagnostics) {
     image_report.diagnostics.push_back(std::move(diagnostic));

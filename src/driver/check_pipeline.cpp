@@ -43,7 +43,7 @@ const SourceFile* CommonFor(const fs::path& file, const CheckOptions& options,
   return common;
 }
 
-// The Image tab of each project none of whose tabs has an error.
+// The tab that carries the picture of each project none of whose tabs has an error.
 std::vector<size_t> ProjectsToDraw(const std::vector<FileJob>& jobs,
                                    const std::vector<FileReport>& reports) {
   std::map<std::string, size_t> image_of;
@@ -51,7 +51,9 @@ std::vector<size_t> ProjectsToDraw(const std::vector<FileJob>& jobs,
   for (size_t i = 0; i < jobs.size(); ++i) {
     if (jobs[i].project.empty()) continue;
     if (HasErrors(reports[i].diagnostics)) failing.insert(jobs[i].project);
-    if (jobs[i].pass == ShaderToyPass::kImage) image_of.emplace(jobs[i].project, i);
+    // The Image tab, else the first tab checked (a folder's Buffer named alone).
+    auto [it, added] = image_of.emplace(jobs[i].project, i);
+    if (!added && jobs[i].pass == ShaderToyPass::kImage) it->second = i;
   }
   std::vector<size_t> images;
   for (const auto& [project, image] : image_of) {

@@ -161,8 +161,13 @@ TEST(FileDecision, CommandsDecideAlikeOnSharedShaderToyPasses) {
     }
   }
   ASSERT_GT(files.size(), 900u);
+#if defined(__SANITIZE_ADDRESS__)
+  // Sanitized builds run ten times slower: every eighth pass (the release build runs all).
+  std::vector<fs::path> sample;
+  for (size_t i = 0; i < files.size(); i += 8) sample.push_back(files[i]);
+  files = std::move(sample);
+#endif
   ExpectSameDecisions(files, CheckReports({root}));
-  // The harness the loose passes were given: ShaderToy's, for every one.
   fs::remove_all(root);
 }
 
