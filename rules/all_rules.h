@@ -27,6 +27,7 @@ const rule::Rule& TypingScalarToVectorRule();  // typing/scalar-to-vector
 const rule::Rule& WebglAttributeLocationRule();  // webgl/attribute-location
 const rule::Rule& WebglBlockLayoutRule();  // webgl/block-layout
 const rule::Rule& WebglCallDepthRule();  // webgl/call-depth
+const rule::Rule& WebglConstFromVariableRule();  // webgl/const-from-variable
 const rule::Rule& WebglDerivativeInConstantRule();  // webgl/derivative-in-constant
 const rule::Rule& WebglExpressionComplexityRule();  // webgl/expression-complexity
 const rule::Rule& WebglExtensionPlacementRule();  // webgl/extension-placement

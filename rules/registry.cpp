@@ -27,6 +27,7 @@ std::vector<const rule::Rule*> BuildRegistry() {
       &WebglAttributeLocationRule(),  // webgl/attribute-location
       &WebglBlockLayoutRule(),  // webgl/block-layout
       &WebglCallDepthRule(),  // webgl/call-depth
+      &WebglConstFromVariableRule(),  // webgl/const-from-variable
       &WebglDerivativeInConstantRule(),  // webgl/derivative-in-constant
       &WebglExpressionComplexityRule(),  // webgl/expression-complexity
       &WebglExtensionPlacementRule(),  // webgl/extension-placement

@@ -113,8 +113,8 @@ std::array<ChannelUse, 4> ReadChannelUses(const glsl::SyntaxTree& tree,
   std::array<ChannelUse, 4> uses;
   glsl::VisitPreorder(tree, [&](const glsl::Node& node, uint32_t) {
     const auto* call = node.As<glsl::CallExpr>();
-    if (call == nullptr || !call->callee.text.starts_with("texture") ||
-        call->arguments.empty() || call->arguments[0] == nullptr) {
+    if (call == nullptr || !call->callee.text.starts_with("texture") || call->arguments.empty() ||
+        call->arguments[0] == nullptr) {
       return true;
     }
     const auto* sampler = call->arguments[0]->As<glsl::IdentifierExpr>();
@@ -144,7 +144,8 @@ std::array<ChannelChoice, 4> ChooseChannels(const rule::RuleContext& context,
   std::array<ChannelChoice, 4> choices;
   const std::array<ChannelUse, 4> uses =
       ReadChannelUses(context.Tree(), context.Model(), ChannelNames(dialect));
-  for (size_t channel = 0; channel < choices.size(); ++channel) choices[channel].use = uses[channel];
+  for (size_t channel = 0; channel < choices.size(); ++channel)
+    choices[channel].use = uses[channel];
   for (size_t channel = 0; channel < choices.size(); ++channel) {
     ChannelChoice& choice = choices[channel];
     switch (context.Settings().channels[channel]) {

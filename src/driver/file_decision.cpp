@@ -106,7 +106,8 @@ std::string HarnessHeader(const rule::HarnessDialect& harness, const rule::CodeI
     if (version < 300) {
       // GLSL ES 1.00 has no file-scope in/out: an input is a varying, an output is gl_FragColor.
       if (provided.storage == rule::ProvidedStorage::kOutput) continue;
-      if (provided.storage == rule::ProvidedStorage::kInput) declaration = "varying" + declaration.substr(2);
+      if (provided.storage == rule::ProvidedStorage::kInput)
+        declaration = "varying" + declaration.substr(2);
     }
     header += declaration + "\n";
   }
@@ -230,9 +231,9 @@ validate::ValidationRequest ComposeForGlslang(const FileDecision& decision, cons
     return request;
   }
   const bool is_common = decision.kind.pass == ShaderToyPass::kCommon;
-  validate::ValidationRequest request = validate::ComposeShaderToyRequest(
-      sources, ToPassType(decision.kind.pass), decision.channels, is_common ? nullptr : common,
-      file);
+  validate::ValidationRequest request =
+      validate::ComposeShaderToyRequest(sources, ToPassType(decision.kind.pass), decision.channels,
+                                        is_common ? nullptr : common, file);
   // Common code has no entry point of its own: the site only compiles it inside
   // a pass, so here it is compiled but not linked.
   if (is_common) request.link = false;
@@ -246,9 +247,9 @@ FileDecision DecideFile(const SourceFile& file, const SourceFile* common,
   FrontEndOptions options;
   options.analyze = true;
   options.channels = decision.channels;
-  const FrontEndResult front = RunFrontEnd(
-      file, std::move(lexed), decision.IsShaderToy() ? common : nullptr, decision.kind, sources,
-      options);
+  const FrontEndResult front =
+      RunFrontEnd(file, std::move(lexed), decision.IsShaderToy() ? common : nullptr, decision.kind,
+                  sources, options);
   if (front.model) DecideFromTree(decision, front.lexed, front.parsed.tree, *front.model, given);
   return decision;
 }

@@ -32,8 +32,6 @@ struct FileReport {
   const SourceFile* file = nullptr;
   std::string dialect;  // "shadertoy", "webgl1", "webgl2" ("" when unknown)
   std::string stage;    // "vertex", "fragment" ("" when unknown)
-  std::string harness;  // the host that completes the code ("shadertoy", "raymarch-blog"; "": none)
-  std::string target;   // the WebGL context it is checked for: "webgl1", "webgl2" ("": unknown)
   // Sorted by position. A range may point into another file of the SourceManager
   // (e.g. a ShaderToy Common file); printers show the file the range is in.
   DiagnosticList diagnostics;
@@ -42,6 +40,9 @@ struct FileReport {
   Severity fail_on = Severity::kError;
   FileRole role = FileRole::kShader;
   std::string project{};  // kTab: the project (document and index, or folder) it belongs to
+  std::string
+      harness{};  // the host that completes the code ("shadertoy", "raymarch-blog"; "": none)
+  std::string target{};  // the WebGL context it is checked for: "webgl1", "webgl2" ("": unknown)
   std::vector<DecisionPart> decision{};  // filled for `explain-file` only
 };
 

@@ -136,8 +136,8 @@ TEST(ProjectCli, FolderLayoutRoundTripsAndRendersAsTheJson) {
 // Image would show a procedural texture; drawn whole, the Image is the flat one.
 TEST(ProjectCli, CheckRenderDrawsTheWholeProject) {
   TempProject project("project-check-render");
-  nlohmann::json toy = nlohmann::json::parse(Export(
-      "void mainImage(out vec4 o, in vec2 p) {\n  o = vec4(0.8, 0.2, 0.1, 1.0);\n}\n"));
+  nlohmann::json toy = nlohmann::json::parse(
+      Export("void mainImage(out vec4 o, in vec2 p) {\n  o = vec4(0.8, 0.2, 0.1, 1.0);\n}\n"));
   toy["Shader"]["renderpass"][0]["code"] =
       "void mainImage(out vec4 o, in vec2 p) {\n  o = texture(iChannel0, p / iResolution.xy);\n}\n";
   project.Write("toy.json", toy.dump(1));

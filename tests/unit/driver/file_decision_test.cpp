@@ -4,9 +4,9 @@
 #include "driver/file_decision.h"
 
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -126,8 +126,8 @@ TEST(FileDecision, CheckHoldsTheManifestColumns) {
     if (row.expect == "compiles") {
       EXPECT_TRUE(errors.empty()) << row.path << " compiles per MANIFEST; check says:" << errors;
     } else {
-      EXPECT_FALSE(errors.empty()) << row.path << " fails per MANIFEST (" << row.expect
-                                   << "); check finds no error";
+      EXPECT_FALSE(errors.empty())
+          << row.path << " fails per MANIFEST (" << row.expect << "); check finds no error";
     }
   }
 }
@@ -140,10 +140,16 @@ TEST(FileDecision, CommandsDecideAlikeOnTheCorpus) {
 
 // Every Image pass of the shared ShaderToy corpus as a loose file (with its Common
 // tab as common.glsl beside it), as a user who copied it would have it.
+// SHADERPORT_DECISION_CORPUS=records.jsonl runs the same over other records (fresh
+// passes of the Shadertoys dataset), whose code stays out of the repository.
 TEST(FileDecision, CommandsDecideAlikeOnSharedShaderToyPasses) {
-  std::ifstream in(fs::path(SHADERPORT_SHARED_DIR) / "corpus-shadertoy/permissive.jsonl");
+  const char* other = std::getenv("SHADERPORT_DECISION_CORPUS");
+  std::ifstream in(other != nullptr
+                       ? fs::path(other)
+                       : fs::path(SHADERPORT_SHARED_DIR) / "corpus-shadertoy/permissive.jsonl");
   if (!in) GTEST_SKIP() << "no shared ShaderToy corpus";
-  const fs::path root = fs::temp_directory_path() / ("shaderport-decision-" + std::to_string(getpid()));
+  const fs::path root =
+      fs::temp_directory_path() / ("shaderport-decision-" + std::to_string(getpid()));
   fs::remove_all(root);
   std::vector<fs::path> files;
   std::string line;
@@ -189,10 +195,10 @@ TEST(FileDecision, RaymarchCodeIsCheckedBehindItsHarness) {
 
 TEST(FileDecision, ChannelSampledAsCubeIsInferred) {
   SourceManager sources;
-  const SourceFile& file = sources.Add(
-      "cube.glsl",
-      "void mainImage(out vec4 c, in vec2 f) {\n"
-      "  c = texture(iChannel1, vec3(f, 1.0)) + texture(iChannel0, f / 2.0);\n}\n");
+  const SourceFile& file =
+      sources.Add("cube.glsl",
+                  "void mainImage(out vec4 c, in vec2 f) {\n"
+                  "  c = texture(iChannel1, vec3(f, 1.0)) + texture(iChannel0, f / 2.0);\n}\n");
   const FileDecision decision = DecideFile(file, nullptr, {}, sources);
   EXPECT_EQ(decision.channels[0], validate::ChannelType::k2D);
   EXPECT_EQ(decision.channels[1], validate::ChannelType::kCube);
