@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -53,10 +54,15 @@ bool ParseChannel(const std::string& spec, driver::PortOptions& options) {
 std::vector<std::string> DialectNames() {
   std::vector<std::string> names(kDialectNames.begin(), kDialectNames.end());
   for (const rule::HarnessDialect& dialect : rules::BuiltinDialects()) {
+    for (const std::string& name : dialect.aliases) names.push_back(name);
     names.push_back(dialect.name);
-    names.insert(names.end(), dialect.aliases.begin(), dialect.aliases.end());
   }
-  return names;
+  // ShaderToy is both a dialect and a harness: named once.
+  std::vector<std::string> unique;
+  for (std::string& name : names) {
+    if (std::find(unique.begin(), unique.end(), name) == unique.end()) unique.push_back(name);
+  }
+  return unique;
 }
 
 }  // namespace
@@ -68,6 +74,16 @@ bool ResolveDialectOption(const std::string& value, SourceManager& sources,
   if (auto named = driver::ParseDialect(value)) {
     dialect = named;
     return true;
+  }
+  // A word that names no dialect is a mistyped name, not a missing file.
+  const bool looks_like_file = value.find('/') != std::string::npos || value.ends_with(".toml");
+  if (!looks_like_file && !std::filesystem::exists(value)) {
+    bool known = false;
+    for (const std::string& name : DialectNames()) known = known || name == value;
+    if (!known) {
+      PrintError(UnknownName("--dialect", value, DialectNames()));
+      return false;
+    }
   }
   rule::DialectLoadResult loaded = rules::LoadDialect(value, sources);
   if (!loaded.dialect) {
