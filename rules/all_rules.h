@@ -25,6 +25,7 @@ const rule::Rule& TypingIntLiteralForFloatRule();  // typing/int-literal-for-flo
 const rule::Rule& TypingNonConstantGlobalInitializerRule();  // typing/non-constant-global-initializer
 const rule::Rule& TypingScalarToVectorRule();  // typing/scalar-to-vector
 const rule::Rule& WebglAttributeLocationRule();  // webgl/attribute-location
+const rule::Rule& WebglBackslashAtEndRule();  // webgl/backslash-at-end
 const rule::Rule& WebglBlockLayoutRule();  // webgl/block-layout
 const rule::Rule& WebglCallDepthRule();  // webgl/call-depth
 const rule::Rule& WebglConstFromVariableRule();  // webgl/const-from-variable

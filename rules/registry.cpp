@@ -25,6 +25,7 @@ std::vector<const rule::Rule*> BuildRegistry() {
       &TypingNonConstantGlobalInitializerRule(),  // typing/non-constant-global-initializer
       &TypingScalarToVectorRule(),  // typing/scalar-to-vector
       &WebglAttributeLocationRule(),  // webgl/attribute-location
+      &WebglBackslashAtEndRule(),  // webgl/backslash-at-end
       &WebglBlockLayoutRule(),  // webgl/block-layout
       &WebglCallDepthRule(),  // webgl/call-depth
       &WebglConstFromVariableRule(),  // webgl/const-from-variable

@@ -93,6 +93,25 @@ def load_seeds(shared_dir, project_corpus=None):
     return seeds
 
 
+# The raymarching blog's page (corpus/MANIFEST dialect raymarch-harness, shaderport's
+# harness dialect raymarch-blog): what it compiles before the code.
+RAYMARCH_PAGE = ("#version 300 es\nprecision highp float;\nin vec2 uv;\nuniform float time;\n"
+                 "out vec4 color;\n")
+
+
+def _manifest_dialects(corpus_dir):
+    dialects = {}
+    try:
+        with open(os.path.join(corpus_dir, "MANIFEST"), encoding="utf-8") as f:
+            for line in f.read().splitlines()[1:]:
+                fields = line.split("\t")
+                if len(fields) == 5:
+                    dialects[fields[0]] = fields[2]
+    except OSError:
+        pass
+    return dialects
+
+
 def _corpus_seed(path, corpus_dir):
     ext = os.path.splitext(path)[1]
     if ext not in (".frag", ".vert", ".glsl"):
@@ -100,7 +119,11 @@ def _corpus_seed(path, corpus_dir):
     with open(path, encoding="utf-8", errors="replace") as f:
         source = f.read()
     stage = "vertex" if ext == ".vert" else "fragment"
-    if re.search(r"\bmainImage\b", source) and not re.search(r"\bvoid\s+main\s*\(", source):
+    dialect = _manifest_dialects(corpus_dir).get(os.path.relpath(path, corpus_dir).replace(os.sep, "/"))
+    if dialect == "raymarch-harness":
+        # Compiled as its page compiles it, in the browser and by check alike.
+        source = RAYMARCH_PAGE + source
+    elif re.search(r"\bmainImage\b", source) and not re.search(r"\bvoid\s+main\s*\(", source):
         source = shadertoy_reference.compose_image_pass(source)
     elif ext == ".glsl" and re.search(r"\b(gl_Position|attribute)\b", source):
         stage = "vertex"
