@@ -4,6 +4,7 @@
 #include <optional>
 #include <string_view>
 
+#include "base/printable.h"
 #include "report/source_position.h"
 
 namespace shaderport {
@@ -36,25 +37,10 @@ std::string Quote(std::string_view text) {
       break;
     }
     ++shown;
-    if (c == '\n') {
-      out += "\\n";
-    } else if (c == '\r') {
-      out += "\\r";
-    } else if (c == '\t') {
-      out += "\\t";
-    } else {
-      out += c;
-    }
+    out += c;
   }
-  return out + "'";
-}
-
-std::string OneLine(std::string_view message) {
-  std::string out(message);
-  for (char& c : out) {
-    if (c == '\n' || c == '\r') c = ' ';
-  }
-  return out;
+  // Control characters escaped after the cut, so that an escape is never cut in two.
+  return "'" + EscapeControlCharacters(std::string_view(out).substr(1)) + "'";
 }
 
 class TextPrinter {
@@ -80,7 +66,10 @@ class TextPrinter {
   }
 
   std::string PathOf(const SourceFile* file) const {
-    return file ? DisplayPath(file->Name(), options_.base_directory) : "<unknown>";
+    // A file or pass name may hold a newline or an escape sequence: it must not forge
+    // a finding line or reach the terminal.
+    return file ? EscapeControlCharacters(DisplayPath(file->Name(), options_.base_directory))
+                : "<unknown>";
   }
 
   static std::string_view SeverityColour(Severity severity) {
@@ -108,8 +97,8 @@ class TextPrinter {
     if (!location.empty()) out_ += Paint(kBold, location) + " ";
     out_ += Paint(SeverityColour(severity), std::string(SeverityName(severity)) + ":");
     // One diagnostic is one line for tools that parse clang's format.
-    std::string text = " " + OneLine(message);
-    if (!rule_id.empty()) text += " [" + std::string(rule_id) + "]";
+    std::string text = " " + OneLinePrintable(message);
+    if (!rule_id.empty()) text += " [" + EscapeControlCharacters(rule_id) + "]";
     out_ += Paint(kBold, text);
     out_ += '\n';
   }

@@ -82,6 +82,12 @@ int RunPort(const PortArgs& args) {
                       std::to_string(inputs->size()) + " (use --out-dir)");
   }
   if (inputs->empty()) return config_exit;  // --allow-empty, or all excluded
+  if (!args.output.empty()) {
+    std::vector<std::filesystem::path> read;
+    for (const driver::InputFile& input : *inputs) read.push_back(input.path);
+    const std::string clash = OutputReplacesInput("-o", args.output, read);
+    if (!clash.empty()) return UsageError(clash);
+  }
   // ShaderToy projects (and any input of --emit html) give several files or a page.
   const bool any_project =
       std::any_of(inputs->begin(), inputs->end(), [](const driver::InputFile& input) {
@@ -157,7 +163,7 @@ int RunPort(const PortArgs& args) {
       std::error_code error;
       if (target.has_parent_path())
         std::filesystem::create_directories(target.parent_path(), error);
-      const std::string why = driver::WriteFileAtomically(target, output);
+      const std::string why = file_io::WriteFileAtomically(target, output);
       if (!why.empty()) {
         PrintError(why);
         exit_code = kExitInternal;

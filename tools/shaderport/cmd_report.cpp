@@ -34,6 +34,10 @@ int RunReport(const ReportArgs& args) {
   }
   driver::HtmlReportOptions options;
   for (const std::string& path : args.paths) options.paths.emplace_back(path);
+  if (const std::string clash = OutputReplacesInput("--html", args.html, options.paths);
+      !clash.empty()) {
+    return UsageError(clash);
+  }
   options.jobs = static_cast<unsigned>(args.jobs);
   options.size = args.size;
   options.tool_version = SHADERPORT_VERSION;
@@ -53,9 +57,9 @@ int RunReport(const ReportArgs& args) {
   for (const std::string& error : run.usage_errors) PrintError(error);
   if (!run.usage_errors.empty() && run.report.entries.empty()) return kExitUsage;
   const std::string html = driver::FormatHtmlReport(run.report);
-  const std::string error = driver::WriteFileAtomically(args.html, html);
+  const std::string error = file_io::WriteFileAtomically(args.html, html);
   if (!error.empty()) {
-    PrintError("cannot write " + args.html + ": " + error);
+    PrintError(error);
     return kExitInternal;
   }
   const driver::ReportCounts counts = driver::CountReport(run.report);
