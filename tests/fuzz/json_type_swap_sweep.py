@@ -63,6 +63,7 @@ def main():
     commands = {
         "check": ["check", "--no-cache", "DOC"],
         "render": ["render", "--hermetic", "DOC"],
+        "fix": ["fix", "--diff", "DOC"],
         "port": ["port", "--out-dir", "OUT", "DOC"],
         "report": ["report", "--hermetic", "--html", "OUT/r.html", "DOC"],
     }

@@ -56,6 +56,12 @@ int RunReport(const ReportArgs& args) {
   }
   for (const std::string& error : run.usage_errors) PrintError(error);
   if (!run.usage_errors.empty() && run.report.entries.empty()) return kExitUsage;
+  // A file found in a directory argument is an input too.
+  std::vector<std::filesystem::path> read;
+  for (const driver::ReportEntry& entry : run.report.entries) read.emplace_back(entry.path);
+  if (const std::string clash = OutputReplacesInput("--html", args.html, read); !clash.empty()) {
+    return UsageError(clash);
+  }
   const std::string html = driver::FormatHtmlReport(run.report);
   const std::string error = file_io::WriteFileAtomically(args.html, html);
   if (!error.empty()) {

@@ -67,6 +67,7 @@ TEST(OutputIsInputCli, EveryWriterRefusesToReplaceAnInput) {
   fs::create_hard_link(project.Root() / "s.frag", project.Root() / "hard.frag");
   for (const std::string& args : {
            std::string("report --html s.frag s.frag"),
+           std::string("report --hermetic --html s.frag here"),
            std::string("check --write-baseline s.frag s.frag"),
            std::string("check --no-cache --write-baseline ./s.frag here"),
            std::string("render r.glsl -o r.glsl"),

@@ -63,7 +63,7 @@ void WriteInputs(const TempProject& project) {
 }
 
 int RunWriter(const std::vector<std::string>& args, const fs::path& directory,
-        rlim_t file_size_limit = RLIM_INFINITY) {
+              rlim_t file_size_limit = RLIM_INFINITY) {
   // Standard error to /dev/null: a file there would itself meet the size limit.
   return WaitForExit(StartShaderport(
       args, {.directory = directory, .err_file = {}, .file_size_limit = file_size_limit}));
@@ -165,6 +165,38 @@ TEST_P(WriterFaults, KillMidRunLeavesOldOrNewFile) {
   }
   RecordProperty("previous_after_kill", previous_after);
   RecordProperty("new_after_kill", new_after);
+}
+
+// The result cache: a write that fails (file-size limit) or a run killed while it
+// stores entries leaves no temporary and no entry that a warm run would trust
+// wrongly: the warm run prints what a run without the cache prints.
+TEST(CacheWriterFaults, FailedAndKilledStoresLeaveNoTornEntry) {
+  TempProject project("cache-faults");
+  for (int i = 0; i < 12; ++i) {
+    project.Write("s/f" + std::to_string(i) + ".frag",
+                  std::string(kFixableEssl3) + "// " + std::to_string(i) + "\n");
+  }
+  const CommandResult plain = RunShaderport("check --no-cache s", project.Root());
+  ASSERT_EQ(plain.exit_code, 1);
+  const std::vector<std::string> check{"check", "--cache-dir", "cache", "-j", "1", "s"};
+  EXPECT_EQ(RunWriter(check, project.Root(), 16), 1);  // no entry fits: every store fails
+  const auto start = Clock::now();
+  ASSERT_EQ(RunWriter(check, project.Root()), 1);
+  const auto duration = Clock::now() - start;
+  for (int round = 0; round < 6; ++round) {
+    fs::remove_all(project.Root() / "cache");
+    const pid_t pid = StartShaderport(check, InDirectory(project.Root()));
+    std::this_thread::sleep_for(duration * (round + 1) / 7);
+    ::kill(pid, SIGKILL);
+    WaitForExit(pid);
+    if (fs::exists(project.Root() / "cache")) {
+      for (const auto& entry : fs::recursive_directory_iterator(project.Root() / "cache")) {
+        EXPECT_FALSE(entry.path().filename().string().ends_with(".tmp")) << entry.path();
+      }
+    }
+    const CommandResult warm = RunShaderport("check --cache-dir cache -j 1 s", project.Root());
+    EXPECT_EQ(warm.out, plain.out) << "round " << round;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryWriter, WriterFaults, ::testing::Range<size_t>(0, 5),
