@@ -171,3 +171,35 @@ TEST(BoundedReadsCli, FifoInTheCacheIsAMiss) {
 
 }  // namespace
 }  // namespace shaderport::testing
+
+namespace shaderport::testing {
+namespace {
+
+// `"channel": "0"` once made every command exit 3 with nlohmann's type_error.
+TEST(ProjectMembersCli, WrongTypedMemberIsAFindingAndTheOtherFilesAreChecked) {
+  TempProject project("wrong-typed-member");
+  project.Write("d/p.json",
+                R"({"Shader":{"info":{"id":"x"},"renderpass":[{"type":"image","name":"Image",)"
+                R"("code":"void mainImage(out vec4 c, in vec2 p) { c = vec4(1); }",)"
+                R"("inputs":[{"channel":"0","ctype":"buffer"}]}]}})");
+  project.Write("d/other.frag", kFixableEssl3);
+  const CommandResult check = RunShaderport("check --no-cache d", project.Root());
+  EXPECT_EQ(check.exit_code, 1) << check.err;
+  EXPECT_NE(check.out.find("d/p.json:1:"), std::string::npos) << check.out;
+  EXPECT_NE(check.out.find("\"channel\" at /Shader/renderpass/0/inputs/0/channel must be an "
+                           "integer from 0 to 3, not a string [input/invalid-project]"),
+            std::string::npos)
+      << check.out;
+  EXPECT_NE(check.out.find("d/other.frag:"), std::string::npos) << check.out;
+  for (const std::string& args :
+       {std::string("fix --diff d"), std::string("port --out-dir out d"),
+        std::string("render --hermetic d/p.json"), std::string("report --hermetic --html r.html d"),
+        std::string("fix -i d/p.json")}) {
+    const CommandResult result = RunShaderport(args, project.Root());
+    EXPECT_NE(result.exit_code, 3) << args << "\n" << result.err;
+    EXPECT_EQ(result.err.find("internal error"), std::string::npos) << args << result.err;
+  }
+}
+
+}  // namespace
+}  // namespace shaderport::testing
