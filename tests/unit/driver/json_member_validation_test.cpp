@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <random>
 #include <string>
 
 #include "../../fuzz/json_mutations.h"
@@ -98,6 +99,29 @@ TEST(JsonMemberValidation, NoMutationOfTheShippedExamplesThrows) {
   EXPECT_GT(runs, 300u);
   EXPECT_GT(with_problems, runs / 4);
   std::printf("%zu mutated documents, %zu with problems, none threw\n", runs, with_problems);
+}
+
+// Several mutations stacked (what the fuzz targets' custom mutator does over many
+// rounds), seeded: no exception from either reader, offsets inside the document.
+TEST(JsonMemberValidation, StackedRandomMutationsNeverThrow) {
+  const nlohmann::json seed = nlohmann::json::parse(
+      testing::ReadWholeFile(std::filesystem::path(SHADERPORT_SOURCE_DIR) /
+                             "tests/fuzz/seeds/shadertoy_json/api-export.json"));
+  std::mt19937_64 random(31);
+  for (int round = 0; round < 2000; ++round) {
+    nlohmann::json document = seed;
+    const int steps = 1 + static_cast<int>(random() % 4);
+    for (int step = 0; step < steps; ++step) document = fuzz::MutateJson(document, random);
+    const std::string text = document.dump();
+    ProjectDocument read;
+    ASSERT_NO_THROW(read = ReadShaderToyJson(text)) << text;
+    for (const ProjectProblem& problem : read.problems) ASSERT_LE(problem.offset, text.size());
+    SourceManager sources;
+    RenderFileOptions options;
+    options.channel_images[0] = "/nonexistent/stops-before-render.png";
+    if (read.problems.empty()) continue;  // a valid one would be drawn
+    ASSERT_NO_THROW(RenderShaderToyJson("m.json", text, sources, options)) << text;
+  }
 }
 
 }  // namespace
