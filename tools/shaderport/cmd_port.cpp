@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "base/printable.h"
 #include "cli_errors.h"
 #include "commands.h"
 #include "driver/check_projects.h"
@@ -140,8 +141,9 @@ int RunPort(const PortArgs& args) {
       if (!emitted[i].extension.empty()) extension = emitted[i].extension;
       if (emit_options.optimize) {
         std::fprintf(stderr, "%s: SPIR-V %zu -> %zu words (-%s)\n",
-                     (*inputs)[i].path.string().c_str(), emitted[i].words_before,
-                     emitted[i].words_after, emit_options.optimize->c_str());
+                     EscapeControlCharacters((*inputs)[i].path.string()).c_str(),
+                     emitted[i].words_before, emitted[i].words_after,
+                     emit_options.optimize->c_str());
       }
     }
     if (!args.output.empty()) targets[i] = args.output;

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "base/printable.h"
 #include "cli_errors.h"
 #include "commands.h"
 #include "driver/html_report/build_report.h"
@@ -72,9 +73,10 @@ int RunReport(const ReportArgs& args) {
   std::printf(
       "%s: %zu shaders; check %zu pass, %zu warn, %zu fail; port %zu pass, %zu warn, %zu fail; "
       "render %zu pass, %zu warn, %zu fail, %zu skipped; %zu thumbnails\n",
-      args.html.c_str(), counts.shaders, counts.check.pass, counts.check.warn, counts.check.fail,
-      counts.port.pass, counts.port.warn, counts.port.fail, counts.render.pass, counts.render.warn,
-      counts.render.fail, counts.render.skipped, counts.thumbnails);
+      EscapeControlCharacters(args.html).c_str(), counts.shaders, counts.check.pass,
+      counts.check.warn, counts.check.fail, counts.port.pass, counts.port.warn, counts.port.fail,
+      counts.render.pass, counts.render.warn, counts.render.fail, counts.render.skipped,
+      counts.thumbnails);
   return run.usage_errors.empty() ? kExitOk : kExitUsage;
 }
 
