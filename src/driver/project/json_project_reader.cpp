@@ -94,7 +94,11 @@ std::optional<ChannelBinding> ReadBinding(MemberReader input) {
 class Reader {
  public:
   Reader(std::string_view text, uint32_t base, ProjectDocument& out)
-      : text_(text), base_(base), out_(out), codes_(FindStringValues(text, "code")) {}
+      : text_(text),
+        base_(base),
+        out_(out),
+        first_problem_(out.problems.size()),
+        codes_(FindStringValues(text, "code")) {}
 
   void ReadTop(const json& top) {
     if (top.is_array()) {
@@ -102,7 +106,13 @@ class Reader {
     } else {
       ReadShader(top, "");
     }
+    // A member's own problem first: "no Image pass" may only follow from it (a "type"
+    // that is not a string), and render reports the first problem alone.
+    const size_t member_start = out_.problems.size();
     ReportMemberProblems();
+    std::rotate(out_.problems.begin() + static_cast<std::ptrdiff_t>(first_problem_),
+                out_.problems.begin() + static_cast<std::ptrdiff_t>(member_start),
+                out_.problems.end());
   }
 
  private:
@@ -289,6 +299,7 @@ class Reader {
   std::string_view text_;
   uint32_t base_;
   ProjectDocument& out_;
+  size_t first_problem_;  // where this document's problems begin in out_ (.jsonl: many)
   std::map<std::string, JsonLiteral> codes_;
   std::vector<MemberProblem> member_problems_;
 };

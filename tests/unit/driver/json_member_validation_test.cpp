@@ -46,6 +46,19 @@ TEST(JsonMemberValidation, RangeAndPresenceAreChecked) {
   EXPECT_EQ(read.problems[0].offset, text.find("{\"ctype\""));  // the input object
 }
 
+TEST(JsonMemberValidation, TheMembersProblemComesBeforeWhatFollowsFromIt) {
+  std::string text = kExport;
+  text.replace(text.find("\"0\""), 3, "0");
+  text.replace(text.find("\"image\""), 7, "0");  // no Image pass follows from this
+  const ProjectDocument read = ReadShaderToyJson(text);
+  ASSERT_EQ(read.problems.size(), 2u);
+  EXPECT_NE(read.problems[0].message.find("\"type\" at /Shader/renderpass/0/type must be a "
+                                          "string, not the integer 0"),
+            std::string::npos)
+      << read.problems[0].message;
+  EXPECT_NE(read.problems[1].message.find("no Image pass"), std::string::npos);
+}
+
 TEST(JsonMemberValidation, EachDocumentOfAJsonLinesFileKeepsItsOwnProblems) {
   std::string good = kExport;
   good.replace(good.find("\"0\""), 3, "0");
