@@ -45,7 +45,7 @@ struct PortArgs {
   std::string optimize;
   int hlsl_shader_model = 50;
   int msl_version = 20000;
-  int jobs = 0;
+  unsigned jobs = 0;  // unsigned: CLI11 refuses "-1" as it does for check
   std::string progress = "auto";
   std::string fail_on = "error";
 };
@@ -111,7 +111,7 @@ int RunPort(const PortArgs& args) {
   size_t files_done = 0;
   std::vector<driver::PortResult> results(inputs->size());
   std::vector<driver::EmittedOutput> emitted(inputs->size());
-  driver::ParallelFor(inputs->size(), static_cast<unsigned>(std::max(0, args.jobs)), [&](size_t i) {
+  driver::ParallelFor(inputs->size(), args.jobs, [&](size_t i) {
     results[i] = driver::PortFile((*inputs)[i].path, options, sources);
     if (*emit_kind != toolchain::EmitKind::kEssl && !results[i].read_failed) {
       emitted[i] = driver::EmitPorted(results[i], emit_options, sources);

@@ -83,6 +83,7 @@ int RunRender(const RenderArgs& args) {
     return UsageError("--timeout must be more than 0 and at most 3600 seconds");
   }
   if (!std::isfinite(args.time)) return UsageError("--time must be a finite number of seconds");
+  if (args.frame < 0) return UsageError("--frame must be 0 or more");
   if (!std::all_of(args.mouse.begin(), args.mouse.end(),
                    [](float v) { return std::isfinite(v); })) {
     return UsageError("--mouse coordinates must be finite numbers");

@@ -1,5 +1,6 @@
 // `shaderport report --html OUT.html PATH...`: checks, ports and renders every shader
 // and writes one self-contained HTML page. Findings never fail it: the page shows them.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -30,8 +31,10 @@ int RunReport(const ReportArgs& args) {
   if (args.html.empty()) return UsageError("--html OUT.html is required");
   if (args.jobs < 0) return UsageError("-j must be 0 or more");
   if (args.size < 1 || args.size > 1024) return UsageError("--size must be 1..1024");
-  if (args.timeout_seconds <= 0 || args.timeout_seconds > 3600) {
-    return UsageError("--timeout must be 0..3600 seconds");
+  // NaN fails every comparison: without isfinite it would pass this test.
+  if (!std::isfinite(args.timeout_seconds) || args.timeout_seconds <= 0 ||
+      args.timeout_seconds > 3600) {
+    return UsageError("--timeout must be more than 0 and at most 3600 seconds");
   }
   driver::HtmlReportOptions options;
   for (const std::string& path : args.paths) options.paths.emplace_back(path);

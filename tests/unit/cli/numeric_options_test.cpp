@@ -41,11 +41,17 @@ TEST(NumericOptionsCli, RenderSizeRefusesSignsAndWrapping) {
   }
 }
 
-TEST(NumericOptionsCli, RenderTimeAndMouseMustBeFinite) {
+TEST(NumericOptionsCli, OtherNumbersAreCheckedToo) {
   TempProject project("numeric-time");
   project.Write("s.frag", kImage);
-  EXPECT_EQ(RunShaderport("render --time nan s.frag", project.Root()).exit_code, 2);
-  EXPECT_EQ(RunShaderport("render --mouse 1,inf s.frag", project.Root()).exit_code, 2);
+  for (const std::string args :
+       {"render --time nan s.frag", "render --mouse 1,inf s.frag", "render --frame -5 s.frag",
+        "report --html r.html --timeout nan s.frag", "port -j -1 s.frag"}) {
+    const CommandResult result = RunShaderport(args, project.Root());
+    EXPECT_EQ(result.exit_code, 2) << args << result.err;
+    EXPECT_EQ(result.err.rfind("shaderport: error: ", 0), 0u) << args << result.err;
+  }
+  EXPECT_FALSE(project.Exists("r.html"));
 }
 
 }  // namespace
