@@ -85,7 +85,7 @@ std::optional<fs::path> FollowSymlinks(const fs::path& path, std::string& error)
 }
 
 // The mode a new file gets: 0666 less the umask, read without changing it.
-mode_t NewFileMode() {
+mode_t ReadNewFileMode() {
   std::ifstream status("/proc/self/status");
   std::string line;
   while (std::getline(status, line)) {
@@ -94,6 +94,13 @@ mode_t NewFileMode() {
     }
   }
   return 0644;
+}
+
+// Read once: shaderport never changes its umask, and a run that fills the result
+// cache creates thousands of files.
+mode_t NewFileMode() {
+  static const mode_t mode = ReadNewFileMode();
+  return mode;
 }
 
 // An O_TMPFILE inode in the directory; -1 with errno EOPNOTSUPP where the
