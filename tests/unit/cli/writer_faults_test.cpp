@@ -108,6 +108,18 @@ TEST_P(WriterFaults, ReadOnlyTargetIsRefused) {
   EXPECT_EQ(info.st_mode & 07777, 0444u);
 }
 
+TEST_P(WriterFaults, ReplacingKeepsTheMode) {
+  TempProject project(std::string("mode-") + writer_.name);
+  WriteInputs(project);
+  const fs::path target = project.Write("target", kPrevious);
+  ASSERT_EQ(::chmod(target.c_str(), 0640), 0);
+  EXPECT_LT(RunWriter(WithTarget(writer_, "target"), project.Root()), 2);
+  EXPECT_NE(ReadWholeFile(target), kPrevious);
+  struct stat info {};
+  ASSERT_EQ(::stat(target.c_str(), &info), 0);
+  EXPECT_EQ(info.st_mode & 07777, 0640u);
+}
+
 TEST_P(WriterFaults, FullDiskKeepsThePreviousFile) {
   TempProject project(std::string("enospc-") + writer_.name);
   WriteInputs(project);
