@@ -1,5 +1,7 @@
 #include "driver/project/json_members.h"
 
+#include "base/limits.h"
+
 namespace shaderport::driver::project {
 
 using nlohmann::json;
@@ -26,6 +28,11 @@ std::string DescribeJsonValue(const json& value) {
   }
 }
 
+void MemberProblems::Add(std::string pointer, std::string message) {
+  if (++count_ <= limits::kMaxDiagnosticsPerFile)
+    kept_.push_back({std::move(pointer), std::move(message)});
+}
+
 std::string MemberReader::PointerOf(std::string_view name) const {
   std::string pointer = pointer_ + "/";
   for (const char c : name) {
@@ -44,16 +51,16 @@ const json* MemberReader::Find(const char* name, Presence presence) {
   const auto it = object_.find(name);
   if (it != object_.end()) return &*it;
   if (presence == Presence::kRequired) {
-    problems_.push_back({pointer_, "missing member \"" + std::string(name) + "\" at " +
-                                       (pointer_.empty() ? "/" : pointer_)});
+    problems_.Add(pointer_, "missing member \"" + std::string(name) + "\" at " +
+                                (pointer_.empty() ? "/" : pointer_));
   }
   return nullptr;
 }
 
 void MemberReader::WrongType(const char* name, const json& value, std::string_view expected) {
-  problems_.push_back({PointerOf(name), "\"" + std::string(name) + "\" at " + PointerOf(name) +
-                                            " must be " + std::string(expected) + ", not " +
-                                            DescribeJsonValue(value)});
+  problems_.Add(PointerOf(name), "\"" + std::string(name) + "\" at " + PointerOf(name) +
+                                     " must be " + std::string(expected) + ", not " +
+                                     DescribeJsonValue(value));
 }
 
 std::optional<std::string> MemberReader::String(const char* name, Presence presence) {

@@ -17,17 +17,29 @@ struct MemberProblem {
   std::string message;
 };
 
+// The problems of one document: the first kMaxDiagnosticsPerFile are kept, the
+// rest only counted, so that a document of a million wrong members stays small.
+class MemberProblems {
+ public:
+  void Add(std::string pointer, std::string message);
+  size_t Count() const { return count_; }
+  std::vector<MemberProblem>& Kept() { return kept_; }
+
+ private:
+  std::vector<MemberProblem> kept_;
+  size_t count_ = 0;
+};
+
 enum class Presence { kOptional, kRequired };
 
 class MemberReader {
  public:
   // `object` must be a JSON object; `pointer` is its own pointer ("" for the root).
-  MemberReader(const nlohmann::json& object, std::string pointer,
-               std::vector<MemberProblem>& problems)
+  MemberReader(const nlohmann::json& object, std::string pointer, MemberProblems& problems)
       : object_(object), pointer_(std::move(pointer)), problems_(problems) {}
 
   const std::string& Pointer() const { return pointer_; }
-  std::vector<MemberProblem>& Problems() const { return problems_; }
+  MemberProblems& Problems() const { return problems_; }
   std::string PointerOf(std::string_view name) const;
 
   // nullopt when absent or a problem (which is then reported).
@@ -49,7 +61,7 @@ class MemberReader {
 
   const nlohmann::json& object_;
   std::string pointer_;
-  std::vector<MemberProblem>& problems_;
+  MemberProblems& problems_;
 };
 
 // "a string", "an array", "the number 1.5" ...: what a wrong value is, for messages.

@@ -124,17 +124,17 @@ class Reader {
   // one scan of the text for all of them). A hostile document may hold millions: the
   // first kMaxDiagnosticsPerFile are kept, and a last problem says so.
   void ReportMemberProblems() {
-    if (member_problems_.empty()) return;
-    const size_t kept = std::min(member_problems_.size(), limits::kMaxDiagnosticsPerFile);
+    std::vector<MemberProblem>& kept = member_problems_.Kept();
+    if (kept.empty()) return;
     std::set<std::string> pointers;
-    for (size_t i = 0; i < kept; ++i) pointers.insert(member_problems_[i].pointer);
+    for (const MemberProblem& problem : kept) pointers.insert(problem.pointer);
     const std::map<std::string, uint32_t> offsets = FindValueOffsets(text_, pointers);
-    for (size_t i = 0; i < kept; ++i) {
-      const auto at = offsets.find(member_problems_[i].pointer);
-      Problem(std::move(member_problems_[i].message), at != offsets.end() ? at->second : 0);
+    for (MemberProblem& problem : kept) {
+      const auto at = offsets.find(problem.pointer);
+      Problem(std::move(problem.message), at != offsets.end() ? at->second : 0);
     }
-    if (kept < member_problems_.size()) {
-      Problem(std::to_string(member_problems_.size() - kept) +
+    if (kept.size() < member_problems_.Count()) {
+      Problem(std::to_string(member_problems_.Count() - kept.size()) +
               " further problems with members were dropped");
     }
   }
@@ -149,7 +149,7 @@ class Reader {
     ShaderToyProject project;
     std::string passes_pointer;
     const json* passes = nullptr;
-    const size_t problems_before = member_problems_.size();
+    const size_t problems_before = member_problems_.Count();
     if (const json* inner = shader.contains("Shader") ? top.Object("Shader") : nullptr) {
       MemberReader exported(*inner, top.PointerOf("Shader"), member_problems_);
       ReadExport(exported, project);
@@ -171,7 +171,7 @@ class Reader {
     }
     if (passes == nullptr) {
       // A member of the wrong type was reported; an object that is no shader at all is.
-      if (member_problems_.size() == problems_before) {
+      if (member_problems_.Count() == problems_before) {
         Problem(
             "not a ShaderToy shader: expected {\"Shader\": {\"renderpass\": [...]}} or a "
             "record with \"passes\": [...]" +
@@ -203,9 +203,8 @@ class Reader {
 
   void ReadPass(const json& pass, const std::string& pointer, ShaderToyProject& project) {
     if (!pass.is_object()) {
-      member_problems_.push_back(
-          {pointer,
-           "a render pass at " + pointer + " must be an object, not " + DescribeJsonValue(pass)});
+      member_problems_.Add(pointer, "a render pass at " + pointer + " must be an object, not " +
+                                        DescribeJsonValue(pass));
       return;
     }
     MemberReader members(pass, pointer, member_problems_);
@@ -245,9 +244,9 @@ class Reader {
         const json& input = (*inputs)[i];
         const std::string input_pointer = inputs_pointer + "/" + std::to_string(i);
         if (!input.is_object()) {
-          member_problems_.push_back({input_pointer, "an input at " + input_pointer +
-                                                         " must be an object, not " +
-                                                         DescribeJsonValue(input)});
+          member_problems_.Add(input_pointer, "an input at " + input_pointer +
+                                                  " must be an object, not " +
+                                                  DescribeJsonValue(input));
           continue;
         }
         std::optional<ChannelBinding> binding =
@@ -264,8 +263,8 @@ class Reader {
       if (outputs != nullptr && !outputs->empty()) {
         const std::string first = members.PointerOf("outputs") + "/0";
         if (!(*outputs)[0].is_object()) {
-          member_problems_.push_back({first, "an output at " + first + " must be an object, not " +
-                                                 DescribeJsonValue((*outputs)[0])});
+          member_problems_.Add(first, "an output at " + first + " must be an object, not " +
+                                          DescribeJsonValue((*outputs)[0]));
         } else if (const json* id = MemberReader((*outputs)[0], first, member_problems_).Id("id")) {
           read.output_buffer = BufferIndexFromId(*id).value_or(-1);
         }
@@ -301,7 +300,7 @@ class Reader {
   ProjectDocument& out_;
   size_t first_problem_;  // where this document's problems begin in out_ (.jsonl: many)
   std::map<std::string, JsonLiteral> codes_;
-  std::vector<MemberProblem> member_problems_;
+  MemberProblems member_problems_;
 };
 
 size_t NestingDepth(std::string_view text) {
