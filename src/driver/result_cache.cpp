@@ -26,7 +26,7 @@ void TagCacheDirectory(const fs::path& directory) {
   file_io::WriteFileAtomically(tag,
                                "Signature: 8a477f597d28d172789f06886806bc55\n"
                                "# This file is a cache directory tag created by shaderport.\n",
-                               {.sync_to_disk = false});
+                               {.sync_to_disk = false, .user_named_target = false});
 }
 
 struct EntryFile {
@@ -69,7 +69,9 @@ bool ResultCache::Store(const CacheKey& key, std::string_view bytes) const {
   }
   // Not synced to disk: a torn entry fails its checksum and is a miss
   // (DecodeCacheEntry), and a flush per entry would slow every cold run.
-  return file_io::WriteFileAtomically(target, bytes, {.sync_to_disk = false}).empty();
+  return file_io::WriteFileAtomically(target, bytes,
+                                      {.sync_to_disk = false, .user_named_target = false})
+      .empty();
 }
 
 void ResultCache::Prune(const CacheLimits& limits, fs::file_time_type now) const {
@@ -79,7 +81,7 @@ void ResultCache::Prune(const CacheLimits& limits, fs::file_time_type now) const
   if (!error && now - last < limits.prune_interval) return;
   if (!fs::is_directory(entries_, error)) return;
   // Claim this prune before the walk, so concurrent runs skip it.
-  file_io::WriteFileAtomically(stamp, "", {.sync_to_disk = false});
+  file_io::WriteFileAtomically(stamp, "", {.sync_to_disk = false, .user_named_target = false});
   fs::last_write_time(stamp, now, error);
 
   std::vector<EntryFile> entries;

@@ -186,12 +186,13 @@ std::string WriteFileAtomically(const fs::path& path, std::string_view text,
                                 const AtomicWriteOptions& options) {
   // /dev/null, /dev/stdout (a link to a pipe), a FIFO: a stream, no old text to keep.
   struct stat followed {};
-  if (::stat(path.c_str(), &followed) == 0 &&
+  if (options.user_named_target && ::stat(path.c_str(), &followed) == 0 &&
       (S_ISCHR(followed.st_mode) || S_ISFIFO(followed.st_mode))) {
     return WriteToStream(path, text);
   }
   std::string error;
-  const std::optional<fs::path> target = FollowSymlinks(path, error);
+  const std::optional<fs::path> target =
+      options.user_named_target ? FollowSymlinks(path, error) : std::optional<fs::path>(path);
   if (!target) return error;
   const fs::path directory = target->has_parent_path() ? target->parent_path() : fs::path(".");
   const std::string name = target->filename().string();

@@ -18,6 +18,11 @@ struct AtomicWriteOptions {
   // reader detects a torn copy (the result cache checksums each entry, a torn one
   // is a miss) may skip it: it costs a disk flush per file.
   bool sync_to_disk = true;
+  // The user named the target (-o, --html, an input of fix -i): its symlinks are
+  // followed and a device or FIFO (/dev/null) is written as a stream. false for
+  // files shaderport names itself (result cache entries), where a symlink, device or
+  // FIFO was planted by someone else: it is refused, never written through.
+  bool user_named_target = true;
 };
 
 // A named temporary older than this is removed by the next write in its directory.

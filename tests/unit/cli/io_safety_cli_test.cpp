@@ -169,6 +169,27 @@ TEST(BoundedReadsCli, FifoInTheCacheIsAMiss) {
   EXPECT_EQ(warm.exit_code, 1) << warm.err;
 }
 
+// Someone who can write in the cache directory plants a symlink where an entry will
+// be stored: the store must not write through it (as root, into any file).
+TEST(BoundedReadsCli, SymlinkPlantedInTheCacheIsNotWrittenThrough) {
+  TempProject project("symlink-cache");
+  project.Write("s.frag", kFixableEssl3);
+  const std::vector<std::string> check{"check", "--cache-dir", "cache", "s.frag"};
+  ASSERT_EQ(RunWithDeadline(check, project.Root()).exit_code, 1);
+  const fs::path victim = project.Write("victim.txt", "keep me\n");
+  size_t planted = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(project.Root() / "cache")) {
+    if (!entry.is_regular_file() || entry.path().filename().string().size() != 32) continue;
+    fs::remove(entry.path());
+    fs::create_symlink(victim, entry.path());
+    ++planted;
+  }
+  ASSERT_GT(planted, 0u);
+  const Finished again = RunWithDeadline(check, project.Root());
+  EXPECT_EQ(again.exit_code, 1) << again.err;
+  EXPECT_EQ(ReadWholeFile(victim), "keep me\n");
+}
+
 }  // namespace
 }  // namespace shaderport::testing
 
