@@ -2,26 +2,19 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <vector>
 
+#include "base/file_io/read_regular_file.h"
 #include "base/limits.h"
 #include "rules/shadertoy/embedded_dialects.h"
 
 namespace shaderport::rules {
 namespace {
 
+// A dialect TOML as every file that is not an input is read: regular, bounded,
+// without blocking on a FIFO.
 std::optional<std::string> ReadSmallFile(const std::filesystem::path& path) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) return std::nullopt;
-  const auto size = std::filesystem::file_size(path, error);
-  if (error || size > limits::kMaxFileBytes) return std::nullopt;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream text;
-  text << in.rdbuf();
-  return std::move(text).str();
+  return file_io::ReadRegularFile(path, limits::kMaxConfigBytes).bytes;
 }
 
 std::vector<rule::HarnessDialect> LoadShipped() {

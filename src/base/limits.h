@@ -13,6 +13,12 @@ inline constexpr uint32_t kMaxMacroDepth = 200;          // nested macro expansi
 inline constexpr uint32_t kMaxConditionalDepth = 200;    // nested #if groups
 inline constexpr uint32_t kMaxSyntaxDepth = 256;         // nested expressions/statements
 inline constexpr size_t kMaxDiagnosticsPerFile = 1000;   // further ones are dropped with a note
+// Files read besides inputs (docs/limits.md, "Other files"): larger ones are refused
+// before a byte is read.
+inline constexpr size_t kMaxReportBytes = 64u << 20;      // a --baseline or a report to merge
+inline constexpr size_t kMaxImageBytes = 64u << 20;       // a channel PNG
+inline constexpr size_t kMaxCacheEntryBytes = 64u << 20;  // a result cache entry
+inline constexpr size_t kMaxConfigBytes = 1u << 20;       // a .shaderport.toml or dialect TOML
 // A render's text goes through spirv-opt only while its entry point, with every call
 // inlined, stays below this many SPIR-V instructions (past it, tens of seconds).
 inline constexpr uint64_t kMaxInlinedInstructions = 40'000;

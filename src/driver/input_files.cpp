@@ -4,10 +4,11 @@
 
 #include <algorithm>
 #include <array>
-#include <fstream>
 #include <string>
 #include <system_error>
 #include <unordered_set>
+
+#include "base/file_io/read_regular_file.h"
 
 namespace shaderport::driver {
 
@@ -27,10 +28,7 @@ namespace {
 bool LooksLikeShaderToyDocument(const fs::path& path) {
   const std::string extension = path.extension().string();
   if (extension != ".json" && extension != ".jsonl") return false;
-  std::ifstream in(path, std::ios::binary);
-  std::string head(65536, '\0');
-  in.read(head.data(), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<size_t>(in.gcount()));
+  const std::string head = file_io::ReadRegularFileHead(path, 65536);
   return head.find("\"renderpass\"") != std::string::npos ||
          head.find("\"passes\"") != std::string::npos;
 }

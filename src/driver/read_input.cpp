@@ -1,13 +1,8 @@
 #include "driver/read_input.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <cstdint>
-#include <cstring>
 
+#include "base/file_io/read_regular_file.h"
 #include "base/limits.h"
 
 namespace shaderport::driver {
@@ -58,44 +53,17 @@ InputText ClassifyInputText(std::string text) {
 }
 
 InputText ReadInputFile(const std::filesystem::path& path) {
-  // O_NONBLOCK: opening a FIFO without a writer must not wait; fstat on the open
-  // descriptor then rejects anything but a regular file before a byte is read.
-  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
-  if (fd < 0)
-    return Reject("input/unreadable", std::string("cannot open file: ") + std::strerror(errno));
-  struct stat info {};
-  if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {
-    const std::string what = S_ISDIR(info.st_mode)    ? "a directory"
-                             : S_ISFIFO(info.st_mode) ? "a FIFO"
-                             : S_ISSOCK(info.st_mode) ? "a socket"
-                                                      : "a device or special file";
-    ::close(fd);
-    return Reject("input/unreadable", "not a regular file: " + what);
+  file_io::ReadResult read = file_io::ReadRegularFile(path, limits::kMaxFileBytes);
+  switch (read.failure) {
+    case file_io::ReadFailure::kNone:
+      return ClassifyInputText(std::move(*read.bytes));
+    case file_io::ReadFailure::kTooLarge:
+      return Reject("input/too-large",
+                    "file is " + std::to_string(read.size >> 20) + " MiB, larger than the " +
+                        std::to_string(limits::kMaxFileBytes >> 20) + " MiB limit");
+    default:
+      return Reject("input/unreadable", std::move(read.message));
   }
-  const auto size = static_cast<size_t>(info.st_size);
-  if (size > limits::kMaxFileBytes) {
-    ::close(fd);
-    return Reject("input/too-large",
-                  "file is " + std::to_string(size >> 20) + " MiB, larger than the " +
-                      std::to_string(limits::kMaxFileBytes >> 20) + " MiB limit");
-  }
-  std::string text(size, '\0');
-  size_t done = 0;
-  int read_error = 0;
-  while (done < size) {
-    const ssize_t n = ::read(fd, text.data() + done, size - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) read_error = errno;
-    if (n <= 0) break;
-    done += static_cast<size_t>(n);
-  }
-  ::close(fd);
-  if (read_error != 0) {
-    return Reject("input/unreadable",
-                  std::string("cannot read file: ") + std::strerror(read_error));
-  }
-  if (done != size) return Reject("input/unreadable", "file changed size while being read");
-  return ClassifyInputText(std::move(text));
 }
 
 InputText ReadInputStream(std::istream& in) {

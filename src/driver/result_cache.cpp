@@ -1,14 +1,12 @@
 #include "driver/result_cache.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <fstream>
 #include <system_error>
 #include <vector>
 
+#include "base/file_io/atomic_write.h"
+#include "base/file_io/read_regular_file.h"
+#include "base/limits.h"
 #include "driver/cache_entry.h"
 
 namespace shaderport::driver {
@@ -16,28 +14,19 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The temporaries of versions before the atomic writer; a crash may have left some.
 constexpr std::string_view kTemporaryPrefix = ".tmp-";
 constexpr std::string_view kPruneStamp = ".last-prune";
-// An entry larger than this is not one we wrote.
-constexpr off_t kMaxEntryFileBytes = 64 << 20;
-
-bool WriteAll(int fd, std::string_view bytes) {
-  while (!bytes.empty()) {
-    const ssize_t written = ::write(fd, bytes.data(), bytes.size());
-    if (written < 0 && errno == EINTR) continue;
-    if (written <= 0) return false;
-    bytes.remove_prefix(static_cast<size_t>(written));
-  }
-  return true;
-}
 
 // The standard marker that tells backup and archiving tools to skip the directory.
 void TagCacheDirectory(const fs::path& directory) {
   const fs::path tag = directory / "CACHEDIR.TAG";
   std::error_code error;
   if (fs::exists(tag, error)) return;
-  std::ofstream(tag) << "Signature: 8a477f597d28d172789f06886806bc55\n"
-                        "# This file is a cache directory tag created by shaderport.\n";
+  file_io::WriteFileAtomically(tag,
+                               "Signature: 8a477f597d28d172789f06886806bc55\n"
+                               "# This file is a cache directory tag created by shaderport.\n",
+                               {.sync_to_disk = false, .user_named_target = false});
 }
 
 struct EntryFile {
@@ -66,24 +55,8 @@ fs::path ResultCache::EntryPath(const CacheKey& key) const {
 }
 
 std::optional<std::string> ResultCache::Load(const CacheKey& key) const {
-  const int fd = ::open(EntryPath(key).c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return std::nullopt;
-  std::optional<std::string> bytes;
-  struct stat status {};
-  if (::fstat(fd, &status) == 0 && S_ISREG(status.st_mode) &&
-      status.st_size <= kMaxEntryFileBytes) {
-    std::string buffer(static_cast<size_t>(status.st_size), '\0');
-    size_t done = 0;
-    while (done < buffer.size()) {
-      const ssize_t got = ::read(fd, buffer.data() + done, buffer.size() - done);
-      if (got < 0 && errno == EINTR) continue;
-      if (got <= 0) break;
-      done += static_cast<size_t>(got);
-    }
-    if (done == buffer.size()) bytes = std::move(buffer);
-  }
-  ::close(fd);
-  return bytes;
+  // A FIFO or device planted under the entry's name is a miss, not a hang.
+  return file_io::ReadRegularFile(EntryPath(key), limits::kMaxCacheEntryBytes).bytes;
 }
 
 bool ResultCache::Store(const CacheKey& key, std::string_view bytes) const {
@@ -94,16 +67,11 @@ bool ResultCache::Store(const CacheKey& key, std::string_view bytes) const {
     if (error) return false;
     TagCacheDirectory(directory_);
   }
-  std::string temporary = (target.parent_path() / kTemporaryPrefix).string() + "XXXXXX";
-  const int fd = ::mkstemp(temporary.data());
-  if (fd < 0) return false;
-  const bool written = WriteAll(fd, bytes);
-  const bool closed = ::close(fd) == 0;
-  if (!written || !closed || ::rename(temporary.c_str(), target.c_str()) != 0) {
-    ::unlink(temporary.c_str());
-    return false;
-  }
-  return true;
+  // Not synced to disk: a torn entry fails its checksum and is a miss
+  // (DecodeCacheEntry), and a flush per entry would slow every cold run.
+  return file_io::WriteFileAtomically(target, bytes,
+                                      {.sync_to_disk = false, .user_named_target = false})
+      .empty();
 }
 
 void ResultCache::Prune(const CacheLimits& limits, fs::file_time_type now) const {
@@ -112,7 +80,8 @@ void ResultCache::Prune(const CacheLimits& limits, fs::file_time_type now) const
   const fs::file_time_type last = fs::last_write_time(stamp, error);
   if (!error && now - last < limits.prune_interval) return;
   if (!fs::is_directory(entries_, error)) return;
-  std::ofstream{stamp};  // claim this prune before the walk, so concurrent runs skip it
+  // Claim this prune before the walk, so concurrent runs skip it.
+  file_io::WriteFileAtomically(stamp, "", {.sync_to_disk = false, .user_named_target = false});
   fs::last_write_time(stamp, now, error);
 
   std::vector<EntryFile> entries;
@@ -124,7 +93,9 @@ void ResultCache::Prune(const CacheLimits& limits, fs::file_time_type now) const
     const fs::file_time_type written = it->last_write_time(entry_error);
     const uintmax_t size = it->file_size(entry_error);
     if (entry_error) continue;
-    const bool temporary = it->path().filename().string().starts_with(kTemporaryPrefix);
+    const std::string name = it->path().filename().string();
+    const bool temporary =
+        name.starts_with(kTemporaryPrefix) || file_io::IsAtomicWriteTemporary(name);
     // A temporary file an hour old belongs to a run that died before its rename.
     const auto limit = temporary ? std::chrono::hours(1) : limits.max_age;
     if (now - written > limit) {

@@ -11,24 +11,34 @@
 #include <cstdio>
 #include <cstring>
 
+#include "base/file_io/read_regular_file.h"
+#include "base/limits.h"
+
 namespace shaderport::render {
 
-bool WritePng(const std::string& path, const ImageRgba8& image, std::string& error) {
+std::string EncodePng(const ImageRgba8& image) {
+  if (image.width == 0 || image.height == 0 || image.width > kMaxRenderSide ||
+      image.height > kMaxRenderSide ||
+      image.pixels.size() != size_t{image.width} * image.height * 4) {
+    return "";
+  }
   png_image png;
   std::memset(&png, 0, sizeof(png));
   png.version = PNG_IMAGE_VERSION;
   png.width = image.width;
   png.height = image.height;
   png.format = PNG_FORMAT_RGBA;
-  if (image.pixels.size() != size_t{image.width} * image.height * 4) {
-    error = "image buffer has the wrong size";
-    return false;
+  // First call sizes the buffer, second fills it.
+  png_alloc_size_t size = 0;
+  if (!png_image_write_to_memory(&png, nullptr, &size, 0, image.pixels.data(), 0, nullptr)) {
+    return "";
   }
-  if (!png_image_write_to_file(&png, path.c_str(), 0, image.pixels.data(), 0, nullptr)) {
-    error = "cannot write " + path + ": " + png.message;
-    return false;
+  std::string bytes(size, '\0');
+  if (!png_image_write_to_memory(&png, bytes.data(), &size, 0, image.pixels.data(), 0, nullptr)) {
+    return "";
   }
-  return true;
+  bytes.resize(size);
+  return bytes;
 }
 
 namespace {
@@ -43,9 +53,14 @@ FILE* OpenRegularFile(const std::string& path, std::string& error) {
   }
   struct stat info {};
   FILE* file = nullptr;
-  if (::fstat(fd, &info) == 0 && S_ISREG(info.st_mode)) file = ::fdopen(fd, "rb");
+  const bool regular = ::fstat(fd, &info) == 0 && S_ISREG(info.st_mode);
+  const bool small = static_cast<uintmax_t>(info.st_size) <= limits::kMaxImageBytes;
+  if (regular && small) file = ::fdopen(fd, "rb");
   if (file == nullptr) {
-    error = "cannot read " + path + ": not a regular file";
+    error = "cannot read " + path + ": " +
+            (!regular ? std::string("not a regular file")
+                      : "larger than the " + file_io::SizeLimitText(limits::kMaxImageBytes) +
+                            " limit for an image");
     ::close(fd);
   }
   return file;

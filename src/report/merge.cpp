@@ -33,10 +33,26 @@ struct ParsedInput {
   std::string version;  // the tool's
 };
 
+bool IsObjectWith(const Json& json, const char* key) {
+  return json.is_object() && json.contains(key);
+}
+
+// The shape every later step relies on, so that no step indexes a member that is
+// not there (const operator[] on a missing key is undefined) or of another type.
+// Members of the wrong type deeper down throw, and MergeReports reports that.
 std::optional<MergeFormat> FormatOf(const Json& json) {
   if (!json.is_object()) return std::nullopt;
-  if (json.contains("runs") && json.contains("$schema")) return MergeFormat::kSarif;
-  if (json.contains("files") && json.contains("summary")) return MergeFormat::kJson;
+  if (json.contains("runs") && json.contains("$schema")) {
+    const Json& runs = json["runs"];
+    if (!runs.is_array() || runs.size() != 1 || !IsObjectWith(runs[0], "tool") ||
+        !IsObjectWith(runs[0]["tool"], "driver") || !runs[0]["tool"]["driver"].is_object()) {
+      return std::nullopt;
+    }
+    return MergeFormat::kSarif;
+  }
+  if (json.contains("files") && json.contains("summary") && json["summary"].is_object()) {
+    return MergeFormat::kJson;
+  }
   return std::nullopt;
 }
 
@@ -48,7 +64,9 @@ std::string ToolVersion(const Json& json, MergeFormat format) {
              json["runs"][0].contains("tool") && json["runs"][0]["tool"].contains("driver")) {
     tool = &json["runs"][0]["tool"]["driver"];
   }
-  if (tool == nullptr || !tool->is_object() || tool->value("name", "") != "shaderport") return {};
+  if (tool == nullptr || !tool->is_object()) return {};
+  const auto name = tool->find("name");
+  if (name == tool->end() || *name != "shaderport") return {};  // compared, never converted
   const Json version = tool->value("version", Json());
   return version.is_string() ? version.get<std::string>() : std::string();
 }
@@ -58,7 +76,7 @@ std::string ToolVersion(const Json& json, MergeFormat format) {
 Json* ShardSpecOf(Json& json, MergeFormat format) {
   if (format == MergeFormat::kJson) return json.contains("shard") ? &json["shard"] : nullptr;
   Json& run = json["runs"][0];
-  if (!run.contains("properties") || !run["properties"].contains(kSarifShardSpecProperty)) {
+  if (!run.contains("properties") || !IsObjectWith(run["properties"], kSarifShardSpecProperty)) {
     return nullptr;
   }
   return &run["properties"][kSarifShardSpecProperty];
@@ -334,7 +352,10 @@ bool MergeSarif(std::vector<ParsedInput>& inputs, MergeResult& result) {
 
 }  // namespace
 
-MergeResult MergeReports(const std::vector<MergeInput>& inputs, std::optional<MergeFormat> format) {
+namespace {
+
+MergeResult MergeReportsOrThrow(const std::vector<MergeInput>& inputs,
+                                std::optional<MergeFormat> format) {
   MergeResult result;
   if (inputs.empty()) {
     result.errors.push_back("no reports to merge");
@@ -379,6 +400,20 @@ MergeResult MergeReports(const std::vector<MergeInput>& inputs, std::optional<Me
     result.worst.reset();
   }
   return result;
+}
+
+}  // namespace
+
+MergeResult MergeReports(const std::vector<MergeInput>& inputs, std::optional<MergeFormat> format) {
+  // A report that has the right outline but a member of the wrong type deeper down
+  // (a rule id that is a number) is the user's input, not an internal error.
+  try {
+    return MergeReportsOrThrow(inputs, format);
+  } catch (const nlohmann::json::exception& error) {
+    MergeResult result;
+    result.errors.push_back(std::string("not a report this shaderport can merge: ") + error.what());
+    return result;
+  }
 }
 
 std::string AddShardMarkers(std::string_view output, MergeFormat format, const CheckReport& report,

@@ -4,6 +4,7 @@
 #include <optional>
 #include <string_view>
 
+#include "base/printable.h"
 #include "report/source_position.h"
 
 namespace shaderport {
@@ -18,6 +19,13 @@ constexpr std::string_view kReset = "\x1b[0m";
 
 // Quoted text in fix-it lines is cut to this many bytes: the JSON output has it all.
 constexpr size_t kMaxQuotedBytes = 60;
+// A source line longer than kMaxSnippetBytes is shown as kSnippetWindowBytes around
+// the finding, starting kSnippetContextBytes before it.
+constexpr size_t kMaxSnippetBytes = 1024;
+constexpr size_t kSnippetWindowBytes = 240;
+constexpr size_t kSnippetContextBytes = 80;
+
+bool IsContinuationByte(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }
 
 std::string Plural(size_t count, std::string_view word) {
   std::string out = std::to_string(count) + " " + std::string(word);
@@ -36,25 +44,10 @@ std::string Quote(std::string_view text) {
       break;
     }
     ++shown;
-    if (c == '\n') {
-      out += "\\n";
-    } else if (c == '\r') {
-      out += "\\r";
-    } else if (c == '\t') {
-      out += "\\t";
-    } else {
-      out += c;
-    }
+    out += c;
   }
-  return out + "'";
-}
-
-std::string OneLine(std::string_view message) {
-  std::string out(message);
-  for (char& c : out) {
-    if (c == '\n' || c == '\r') c = ' ';
-  }
-  return out;
+  // Control characters escaped after the cut, so that an escape is never cut in two.
+  return "'" + EscapeControlCharacters(std::string_view(out).substr(1)) + "'";
 }
 
 class TextPrinter {
@@ -80,7 +73,10 @@ class TextPrinter {
   }
 
   std::string PathOf(const SourceFile* file) const {
-    return file ? DisplayPath(file->Name(), options_.base_directory) : "<unknown>";
+    // A file or pass name may hold a newline or an escape sequence: it must not forge
+    // a finding line or reach the terminal.
+    return file ? EscapeControlCharacters(DisplayPath(file->Name(), options_.base_directory))
+                : "<unknown>";
   }
 
   static std::string_view SeverityColour(Severity severity) {
@@ -108,8 +104,8 @@ class TextPrinter {
     if (!location.empty()) out_ += Paint(kBold, location) + " ";
     out_ += Paint(SeverityColour(severity), std::string(SeverityName(severity)) + ":");
     // One diagnostic is one line for tools that parse clang's format.
-    std::string text = " " + OneLine(message);
-    if (!rule_id.empty()) text += " [" + std::string(rule_id) + "]";
+    std::string text = " " + OneLinePrintable(message);
+    if (!rule_id.empty()) text += " [" + EscapeControlCharacters(rule_id) + "]";
     out_ += Paint(kBold, text);
     out_ += '\n';
   }
@@ -146,21 +142,43 @@ class TextPrinter {
 
   // The source line, the caret line and, for an insertion on that line, the text
   // to insert under it. Returns the fix-it that was shown as an insertion line.
+  // A line longer than kMaxSnippetBytes (minified or generated code, a one-line JSON
+  // document) is shown as a window around the start of the range, marked "...":
+  // printing it whole for each of its findings made output grow as findings x length.
   const FixIt* PrintSnippet(const ResolvedRange& where, const std::vector<FixIt>& fixes) {
-    const std::string_view line = where.file->LineText(where.start.line);
+    const std::string_view full_line = where.file->LineText(where.start.line);
     const std::string blank_gutter(Gutter(where.start.line).size() - 2, ' ');
-    out_ += Gutter(where.start.line) + Printable(line) + '\n';
+    const uint32_t full_end_column = static_cast<uint32_t>(full_line.size()) + 1;
+    const uint32_t start_index = std::min(where.start.column - 1, full_end_column - 1);
+    size_t window_begin = 0;
+    std::string_view line = full_line;
+    if (full_line.size() > kMaxSnippetBytes) {
+      window_begin = start_index > kSnippetContextBytes ? start_index - kSnippetContextBytes : 0;
+      while (window_begin > 0 && IsContinuationByte(full_line[window_begin])) --window_begin;
+      size_t window_end = std::min(full_line.size(), window_begin + kSnippetWindowBytes);
+      while (window_end < full_line.size() && IsContinuationByte(full_line[window_end])) {
+        --window_end;
+      }
+      line = full_line.substr(window_begin, window_end - window_begin);
+    }
+    const std::string before = window_begin > 0 ? "..." : "";
+    const std::string after = window_begin + line.size() < full_line.size() ? "..." : "";
+    out_ += Gutter(where.start.line) + before + Printable(line) + after + '\n';
 
-    // A range over several lines is underlined to the end of its first line.
+    // Columns inside the window; a range over several lines, or past the window, is
+    // underlined to the end of what is shown.
+    const auto shift = static_cast<uint32_t>(window_begin);
     const uint32_t line_end_column = static_cast<uint32_t>(line.size()) + 1;
     const uint32_t end_column =
-        where.end.line == where.start.line ? where.end.column : line_end_column;
-    const uint32_t start_index = std::min(where.start.column - 1, line_end_column - 1);
-    const uint32_t end_index = std::max(std::min(end_column - 1, line_end_column - 1), start_index);
-    const uint32_t width = CountCodePoints(line.substr(start_index, end_index - start_index));
+        where.end.line == where.start.line ? where.end.column - shift : line_end_column;
+    const uint32_t start = start_index - shift;
+    const uint32_t end_index = std::max(std::min(end_column - 1, line_end_column - 1), start);
+    const uint32_t width = CountCodePoints(line.substr(start, end_index - start));
     std::string marks = "^";
     if (width > 1) marks += std::string(width - 1, '~');
-    out_ += blank_gutter + "| " + PadTo(line, where.start.column) + Paint(kGreen, marks) + '\n';
+    const std::string pad(before.size(), ' ');
+    out_ += blank_gutter + "| " + pad + PadTo(line, start + 1) + Paint(kGreen, marks) + '\n';
+    if (full_line.size() > kMaxSnippetBytes) return nullptr;  // fixes get their own lines
 
     for (const FixIt& fix : fixes) {
       auto fix_where = Resolve(report_.sources, fix.range);

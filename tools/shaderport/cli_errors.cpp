@@ -3,18 +3,31 @@
 #include <cstdio>
 
 #include "base/did_you_mean.h"
+#include "base/file_io/same_file.h"
+#include "base/printable.h"
 #include "commands.h"
 
 namespace shaderport::cli {
 
 void PrintError(std::string_view message) {
-  std::fprintf(stderr, "shaderport: error: %.*s\n", static_cast<int>(message.size()),
-               message.data());
+  // Messages name files, whose names may hold control characters: one line, no escapes
+  // reaching the terminal.
+  const std::string printable = EscapeControlCharacters(message);
+  std::fprintf(stderr, "shaderport: error: %.*s\n", static_cast<int>(printable.size()),
+               printable.data());
 }
 
 int UsageError(std::string_view message) {
   PrintError(message);
   return kExitUsage;
+}
+
+std::string OutputReplacesInput(std::string_view option, const std::filesystem::path& output,
+                                std::span<const std::filesystem::path> inputs) {
+  const std::optional<std::filesystem::path> input = file_io::InputReplacedBy(output, inputs);
+  if (!input) return "";
+  return std::string(option) + " " + output.string() + " is the input " + input->string() +
+         ": writing would replace it; nothing was written";
 }
 
 std::string DidYouMean(std::string_view typed, std::span<const std::string> names) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -12,6 +13,9 @@
 #include <string>
 #include <vector>
 
+#include "base/file_io/atomic_write.h"
+#include "base/file_io/read_regular_file.h"
+#include "base/limits.h"
 #include "cache_settings.h"
 #include "cli_errors.h"
 #include "commands.h"
@@ -31,6 +35,9 @@
 
 namespace shaderport::cli {
 namespace {
+
+// The longest --render-timeout, as for `render --timeout` (docs/limits.md).
+constexpr double kMaxRenderTimeoutSeconds = 3600;
 
 struct CheckArgs {
   std::vector<std::string> paths;
@@ -64,13 +71,12 @@ struct CheckArgs {
 };
 
 std::optional<Baseline> ReadBaselineFile(const std::string& path, std::string& error) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  if (!(text << in.rdbuf())) {
-    error = std::filesystem::exists(path) ? "cannot read it" : "no such file";
+  file_io::ReadResult read = file_io::ReadRegularFile(path, limits::kMaxReportBytes);
+  if (!read.bytes) {
+    error = read.message;
     return std::nullopt;
   }
-  return ParseBaseline(text.str(), error);
+  return ParseBaseline(*read.bytes, error);
 }
 
 bool ParseChannel(const std::string& spec, validate::ChannelTypes& channels,
@@ -136,7 +142,11 @@ int RunCheckCommand(const CheckArgs& args) {
   if (args.render_size < 1 || args.render_size > 4096) {
     return UsageError("--render-size must be between 1 and 4096");
   }
-  if (args.render_timeout <= 0) return UsageError("--render-timeout must be positive");
+  // NaN fails every comparison: without isfinite it would pass this test.
+  if (!std::isfinite(args.render_timeout) || args.render_timeout <= 0 ||
+      args.render_timeout > kMaxRenderTimeoutSeconds) {
+    return UsageError("--render-timeout must be more than 0 and at most 3600 seconds");
+  }
   options.render = args.render;
   options.render_size = args.render_size;
   options.render_timeout = args.render_timeout;
@@ -148,6 +158,11 @@ int RunCheckCommand(const CheckArgs& args) {
   if (!args.no_cache) {
     options.cache_directory = CacheDirectory(args.cache_dir);
     options.tool_identity = ToolIdentity();
+  }
+  if (!args.write_baseline.empty()) {
+    const std::vector<std::filesystem::path> named(args.paths.begin(), args.paths.end());
+    const std::string clash = OutputReplacesInput("--write-baseline", args.write_baseline, named);
+    if (!clash.empty()) return UsageError(clash);
   }
   std::optional<Baseline> baseline;
   if (!args.baseline.empty()) {
@@ -225,9 +240,18 @@ int RunCheckCommand(const CheckArgs& args) {
     }
   }
   std::string write_error;
+  if (!args.write_baseline.empty()) {
+    // A file found in a directory argument is an input too.
+    std::vector<std::filesystem::path> checked;
+    for (const FileReport& file : run.report.files) {
+      if (file.file != nullptr) checked.emplace_back(file.file->Name());
+    }
+    const std::string clash = OutputReplacesInput("--write-baseline", args.write_baseline, checked);
+    if (!clash.empty()) return UsageError(clash);
+  }
   if (!args.write_baseline.empty() && run.usage_errors.empty()) {
     const Baseline written = BaselineOfReport(run.report, report_options.base_directory);
-    write_error = driver::WriteFileAtomically(args.write_baseline, FormatBaseline(written));
+    write_error = file_io::WriteFileAtomically(args.write_baseline, FormatBaseline(written));
     baseline_notice = std::to_string(written.entries.size()) +
                       (written.entries.size() == 1 ? " finding" : " findings") +
                       " written to the baseline " + args.write_baseline + "\n";

@@ -39,7 +39,7 @@ struct FixArgs {
 };
 
 int WriteOrReport(const std::filesystem::path& path, const std::string& text) {
-  const std::string error = driver::WriteFileAtomically(path, text);
+  const std::string error = file_io::WriteFileAtomically(path, text);
   if (error.empty()) return kExitOk;
   PrintError(error);
   return kExitInternal;

@@ -1,9 +1,11 @@
 #include <cstdio>
-#include <fstream>
-#include <sstream>
+#include <filesystem>
 #include <string>
 #include <vector>
 
+#include "base/file_io/atomic_write.h"
+#include "base/file_io/read_regular_file.h"
+#include "base/limits.h"
 #include "cli_errors.h"
 #include "commands.h"
 #include "option_names.h"
@@ -31,13 +33,17 @@ int RunMergeCommand(const MergeArgs& args) {
   const std::optional<Severity> fail_on = SeverityFromName(args.fail_on);
   if (!fail_on) return UsageError(UnknownName("--fail-on", args.fail_on, kSeverityNames));
   if (args.files.empty()) return UsageError("no reports to merge");
+  if (!args.output.empty()) {
+    const std::vector<std::filesystem::path> read(args.files.begin(), args.files.end());
+    if (const std::string clash = OutputReplacesInput("-o", args.output, read); !clash.empty()) {
+      return UsageError(clash);
+    }
+  }
   std::vector<MergeInput> inputs;
   for (const std::string& name : args.files) {
-    std::ifstream in(name, std::ios::binary);
-    if (!in) return UsageError(name + ": cannot be read");
-    std::ostringstream text;
-    text << in.rdbuf();
-    inputs.push_back({name, text.str()});
+    file_io::ReadResult read = file_io::ReadRegularFile(name, limits::kMaxReportBytes);
+    if (!read.bytes) return UsageError(name + ": " + read.message);
+    inputs.push_back({name, std::move(*read.bytes)});
   }
   const MergeResult merged = MergeReports(inputs, format);
   for (const std::string& error : merged.errors) PrintError(error);
@@ -45,13 +51,10 @@ int RunMergeCommand(const MergeArgs& args) {
   if (args.output.empty()) {
     std::fwrite(merged.output.data(), 1, merged.output.size(), stdout);
     if (std::fflush(stdout) != 0) return kExitInternal;
-  } else {
-    std::ofstream out(args.output, std::ios::binary);
-    out << merged.output;
-    if (!out.flush()) {
-      PrintError("cannot write " + args.output);
-      return kExitInternal;
-    }
+  } else if (const std::string error = file_io::WriteFileAtomically(args.output, merged.output);
+             !error.empty()) {
+    PrintError(error);
+    return kExitInternal;
   }
   return merged.worst && *merged.worst >= *fail_on ? kExitFindings : kExitOk;
 }

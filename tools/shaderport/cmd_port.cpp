@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "base/printable.h"
 #include "cli_errors.h"
 #include "commands.h"
 #include "driver/check_projects.h"
@@ -44,7 +45,7 @@ struct PortArgs {
   std::string optimize;
   int hlsl_shader_model = 50;
   int msl_version = 20000;
-  int jobs = 0;
+  unsigned jobs = 0;  // unsigned: CLI11 refuses "-1" as it does for check
   std::string progress = "auto";
   std::string fail_on = "error";
 };
@@ -82,6 +83,12 @@ int RunPort(const PortArgs& args) {
                       std::to_string(inputs->size()) + " (use --out-dir)");
   }
   if (inputs->empty()) return config_exit;  // --allow-empty, or all excluded
+  if (!args.output.empty()) {
+    std::vector<std::filesystem::path> read;
+    for (const driver::InputFile& input : *inputs) read.push_back(input.path);
+    const std::string clash = OutputReplacesInput("-o", args.output, read);
+    if (!clash.empty()) return UsageError(clash);
+  }
   // ShaderToy projects (and any input of --emit html) give several files or a page.
   const bool any_project =
       std::any_of(inputs->begin(), inputs->end(), [](const driver::InputFile& input) {
@@ -104,7 +111,7 @@ int RunPort(const PortArgs& args) {
   size_t files_done = 0;
   std::vector<driver::PortResult> results(inputs->size());
   std::vector<driver::EmittedOutput> emitted(inputs->size());
-  driver::ParallelFor(inputs->size(), static_cast<unsigned>(std::max(0, args.jobs)), [&](size_t i) {
+  driver::ParallelFor(inputs->size(), args.jobs, [&](size_t i) {
     results[i] = driver::PortFile((*inputs)[i].path, OptionsFor(options, (*inputs)[i]), sources);
     if (*emit_kind != toolchain::EmitKind::kEssl && !results[i].read_failed) {
       emitted[i] = driver::EmitPorted(results[i], emit_options, sources);
@@ -134,8 +141,9 @@ int RunPort(const PortArgs& args) {
       if (!emitted[i].extension.empty()) extension = emitted[i].extension;
       if (emit_options.optimize) {
         std::fprintf(stderr, "%s: SPIR-V %zu -> %zu words (-%s)\n",
-                     (*inputs)[i].path.string().c_str(), emitted[i].words_before,
-                     emitted[i].words_after, emit_options.optimize->c_str());
+                     EscapeControlCharacters((*inputs)[i].path.string()).c_str(),
+                     emitted[i].words_before, emitted[i].words_after,
+                     emit_options.optimize->c_str());
       }
     }
     if (!args.output.empty()) targets[i] = args.output;
@@ -157,7 +165,7 @@ int RunPort(const PortArgs& args) {
       std::error_code error;
       if (target.has_parent_path())
         std::filesystem::create_directories(target.parent_path(), error);
-      const std::string why = driver::WriteFileAtomically(target, output);
+      const std::string why = file_io::WriteFileAtomically(target, output);
       if (!why.empty()) {
         PrintError(why);
         exit_code = kExitInternal;

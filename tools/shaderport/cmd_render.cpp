@@ -1,15 +1,20 @@
 // `shaderport render PATH -o OUT.png`: draws one shader headless and checks the picture.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <string_view>
 
+#include "base/file_io/atomic_write.h"
+#include "base/file_io/writable_path.h"
+#include "base/printable.h"
 #include "cli_errors.h"
 #include "commands.h"
 #include "driver/check_file.h"
 #include "driver/check_projects.h"
 #include "driver/input_files.h"
-#include "driver/port/writable_path.h"
 #include "driver/project/folder_project.h"
 #include "driver/render_check/render_file.h"
 #include "driver/render_check/render_multipass.h"
@@ -40,14 +45,27 @@ struct RenderArgs {
   std::string fail_on = "error";
 };
 
-bool ParseSize(const std::string& text, uint32_t& width, uint32_t& height) {
-  unsigned w = 0;
-  unsigned h = 0;
-  char tail = 0;
-  if (std::sscanf(text.c_str(), "%ux%u%c", &w, &h, &tail) != 2) return false;
-  if (w == 0 || h == 0 || w > render::kMaxRenderSide || h > render::kMaxRenderSide) return false;
-  width = w;
-  height = h;
+// One side of --size: 1 to 4 decimal digits (sscanf's %u would take "-1" as 4294967295
+// and wrap, so the digits are read by hand).
+std::optional<uint32_t> ParseSide(std::string_view text) {
+  if (text.empty() || text.size() > 4) return std::nullopt;
+  uint32_t side = 0;
+  for (const char c : text) {
+    if (c < '0' || c > '9') return std::nullopt;
+    side = side * 10 + static_cast<uint32_t>(c - '0');
+  }
+  if (side == 0 || side > render::kMaxRenderSide) return std::nullopt;
+  return side;
+}
+
+bool ParseSize(std::string_view text, uint32_t& width, uint32_t& height) {
+  const size_t x = text.find('x');
+  if (x == std::string_view::npos) return false;
+  const std::optional<uint32_t> w = ParseSide(text.substr(0, x));
+  const std::optional<uint32_t> h = ParseSide(text.substr(x + 1));
+  if (!w || !h) return false;
+  width = *w;
+  height = *h;
   return true;
 }
 
@@ -60,8 +78,16 @@ int RunRender(const RenderArgs& args) {
   if (!args.mouse.empty() && args.mouse.size() != 2 && args.mouse.size() != 4) {
     return UsageError("--mouse takes x,y or x,y,click_x,click_y");
   }
-  if (args.timeout_seconds <= 0 || args.timeout_seconds > 3600) {
-    return UsageError("--timeout must be 0..3600 seconds");
+  // NaN fails every comparison: without isfinite it would pass this test.
+  if (!std::isfinite(args.timeout_seconds) || args.timeout_seconds <= 0 ||
+      args.timeout_seconds > 3600) {
+    return UsageError("--timeout must be more than 0 and at most 3600 seconds");
+  }
+  if (!std::isfinite(args.time)) return UsageError("--time must be a finite number of seconds");
+  if (args.frame < 0) return UsageError("--frame must be 0 or more");
+  if (!std::all_of(args.mouse.begin(), args.mouse.end(),
+                   [](float v) { return std::isfinite(v); })) {
+    return UsageError("--mouse coordinates must be finite numbers");
   }
   if (!args.backend.empty()) {
     const auto backend = render::BackendFromName(args.backend);
@@ -95,8 +121,13 @@ int RunRender(const RenderArgs& args) {
   }
   if (!args.output.empty()) {
     // Before drawing: "rendered" must never be printed for a picture that cannot be kept.
-    if (const std::string why = driver::UnwritablePath(args.output); !why.empty()) {
+    if (const std::string why = file_io::UnwritablePath(args.output); !why.empty()) {
       return UsageError(why);
+    }
+    std::vector<std::filesystem::path> read{args.path, args.common};
+    read.insert(read.end(), args.channels.begin(), args.channels.end());
+    if (const std::string clash = OutputReplacesInput("-o", args.output, read); !clash.empty()) {
+      return UsageError(clash);
     }
   }
   SourceManager sources;
@@ -116,8 +147,10 @@ int RunRender(const RenderArgs& args) {
                                             : driver::RenderFile(args.path, sources, options);
   int code = kExitOk;
   if (result.image && !args.output.empty()) {
-    std::string error;
-    if (!render::WritePng(args.output, *result.image, error)) {
+    const std::string png = render::EncodePng(*result.image);
+    const std::string error = png.empty() ? "cannot encode the picture as PNG"
+                                          : file_io::WriteFileAtomically(args.output, png);
+    if (!error.empty()) {
       PrintError(error);
       code = kExitInternal;
     }
@@ -142,9 +175,9 @@ int RunRender(const RenderArgs& args) {
     if (fails && code == kExitOk) code = kExitFindings;
   }
   if (result.image) {
-    std::printf("%s: rendered %ux%u in %.0f ms%s%s\n", args.path.c_str(), result.image->width,
-                result.image->height, result.milliseconds, args.output.empty() ? "" : " -> ",
-                args.output.c_str());
+    std::printf("%s: rendered %ux%u in %.0f ms%s%s\n", EscapeControlCharacters(args.path).c_str(),
+                result.image->width, result.image->height, result.milliseconds,
+                args.output.empty() ? "" : " -> ", EscapeControlCharacters(args.output).c_str());
   }
   return code;
 }

@@ -1,10 +1,12 @@
 // `shaderport report --html OUT.html PATH...`: checks, ports and renders every shader
 // and writes one self-contained HTML page. Findings never fail it: the page shows them.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "base/printable.h"
 #include "cli_errors.h"
 #include "commands.h"
 #include "driver/html_report/build_report.h"
@@ -29,11 +31,17 @@ int RunReport(const ReportArgs& args) {
   if (args.html.empty()) return UsageError("--html OUT.html is required");
   if (args.jobs < 0) return UsageError("-j must be 0 or more");
   if (args.size < 1 || args.size > 1024) return UsageError("--size must be 1..1024");
-  if (args.timeout_seconds <= 0 || args.timeout_seconds > 3600) {
-    return UsageError("--timeout must be 0..3600 seconds");
+  // NaN fails every comparison: without isfinite it would pass this test.
+  if (!std::isfinite(args.timeout_seconds) || args.timeout_seconds <= 0 ||
+      args.timeout_seconds > 3600) {
+    return UsageError("--timeout must be more than 0 and at most 3600 seconds");
   }
   driver::HtmlReportOptions options;
   for (const std::string& path : args.paths) options.paths.emplace_back(path);
+  if (const std::string clash = OutputReplacesInput("--html", args.html, options.paths);
+      !clash.empty()) {
+    return UsageError(clash);
+  }
   options.jobs = static_cast<unsigned>(args.jobs);
   options.size = args.size;
   options.tool_version = SHADERPORT_VERSION;
@@ -52,19 +60,26 @@ int RunReport(const ReportArgs& args) {
   }
   for (const std::string& error : run.usage_errors) PrintError(error);
   if (!run.usage_errors.empty() && run.report.entries.empty()) return kExitUsage;
+  // A file found in a directory argument is an input too.
+  std::vector<std::filesystem::path> read;
+  for (const driver::ReportEntry& entry : run.report.entries) read.emplace_back(entry.path);
+  if (const std::string clash = OutputReplacesInput("--html", args.html, read); !clash.empty()) {
+    return UsageError(clash);
+  }
   const std::string html = driver::FormatHtmlReport(run.report);
-  const std::string error = driver::WriteFileAtomically(args.html, html);
+  const std::string error = file_io::WriteFileAtomically(args.html, html);
   if (!error.empty()) {
-    PrintError("cannot write " + args.html + ": " + error);
+    PrintError(error);
     return kExitInternal;
   }
   const driver::ReportCounts counts = driver::CountReport(run.report);
   std::printf(
       "%s: %zu shaders; check %zu pass, %zu warn, %zu fail; port %zu pass, %zu warn, %zu fail; "
       "render %zu pass, %zu warn, %zu fail, %zu skipped; %zu thumbnails\n",
-      args.html.c_str(), counts.shaders, counts.check.pass, counts.check.warn, counts.check.fail,
-      counts.port.pass, counts.port.warn, counts.port.fail, counts.render.pass, counts.render.warn,
-      counts.render.fail, counts.render.skipped, counts.thumbnails);
+      EscapeControlCharacters(args.html).c_str(), counts.shaders, counts.check.pass,
+      counts.check.warn, counts.check.fail, counts.port.pass, counts.port.warn, counts.port.fail,
+      counts.render.pass, counts.render.warn, counts.render.fail, counts.render.skipped,
+      counts.thumbnails);
   return run.usage_errors.empty() ? kExitOk : kExitUsage;
 }
 

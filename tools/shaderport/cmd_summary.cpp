@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "base/printable.h"
 #include "cli_errors.h"
 #include "commands.h"
 #include "driver/summary.h"
@@ -23,14 +24,15 @@ int RunSummary(const std::vector<std::string>& args, unsigned jobs) {
   size_t unreadable = 0;
   for (const driver::SummaryRow& row : rows) {
     if (!row.problem.empty()) {
-      std::printf("%-48s %s\n", row.path.c_str(), row.problem.c_str());
+      std::printf("%-48s %s\n", EscapeControlCharacters(row.path).c_str(),
+                  EscapeControlCharacters(row.problem).c_str());
       ++unreadable;
       continue;
     }
     const std::string typed = std::to_string(row.typed) + "/" + std::to_string(row.expressions);
-    std::printf("%-48s %-9s %-8s %7zu %7zu %6zu %11s %9zu %6zu\n", row.path.c_str(),
-                row.dialect.c_str(), row.stage.c_str(), row.bytes, row.tokens, row.nodes,
-                typed.c_str(), row.mismatches, row.errors);
+    std::printf("%-48s %-9s %-8s %7zu %7zu %6zu %11s %9zu %6zu\n",
+                EscapeControlCharacters(row.path).c_str(), row.dialect.c_str(), row.stage.c_str(),
+                row.bytes, row.tokens, row.nodes, typed.c_str(), row.mismatches, row.errors);
     total.bytes += row.bytes;
     total.tokens += row.tokens;
     total.nodes += row.nodes;

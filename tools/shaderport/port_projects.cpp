@@ -157,7 +157,7 @@ int PortProjectInputs(const std::vector<driver::InputFile>& inputs,
     std::error_code error;
     if (target_paths[i].has_parent_path())
       fs::create_directories(target_paths[i].parent_path(), error);
-    const std::string why = driver::WriteFileAtomically(target_paths[i], texts[i]);
+    const std::string why = file_io::WriteFileAtomically(target_paths[i], texts[i]);
     if (!why.empty()) {
       PrintError(why);
       exit_code = kExitInternal;

@@ -1,8 +1,8 @@
 #include "driver/config/find_config.h"
 
-#include <fstream>
-#include <sstream>
 #include <system_error>
+
+#include "base/file_io/read_regular_file.h"
 
 namespace shaderport::driver {
 
@@ -30,18 +30,13 @@ ConfigResult LoadConfig(const std::filesystem::path& path, SourceManager& source
     result.diagnostics.push_back(std::move(d));
     return result;
   };
-  std::error_code error;
-  const uintmax_t size = std::filesystem::file_size(path, error);
-  if (error) return failure("cannot read " + path.string() + ": " + error.message());
-  if (size > kMaxConfigBytes) {
+  file_io::ReadResult read = file_io::ReadRegularFile(path, kMaxConfigBytes);
+  if (read.failure == file_io::ReadFailure::kTooLarge) {
     return failure(path.string() + " is larger than " + std::to_string(kMaxConfigBytes) +
                    " bytes; it is not read");
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return failure("cannot open " + path.string());
-  std::ostringstream text;
-  text << in.rdbuf();
-  return ParseConfig(text.str(), path.string(), sources);
+  if (!read.bytes) return failure("cannot read " + path.string() + ": " + read.message);
+  return ParseConfig(*read.bytes, path.string(), sources);
 }
 
 }  // namespace shaderport::driver

@@ -4,13 +4,14 @@
 #include <filesystem>
 #include <optional>
 
+#include "base/limits.h"
 #include "driver/config/config.h"
 #include "source/source_manager.h"
 
 namespace shaderport::driver {
 
 // Largest config file read; anything bigger is not a hand-written config.
-inline constexpr uintmax_t kMaxConfigBytes = 1u << 20;
+inline constexpr uintmax_t kMaxConfigBytes = limits::kMaxConfigBytes;
 
 // The nearest .shaderport.toml in the directory of `file` or any parent, as
 // ESLint and clang-tidy look for theirs; nullopt when there is none up to the root.

@@ -14,6 +14,7 @@
 #include "driver/port/port_file.h"
 #include "driver/render_check/render_file.h"
 #include "render/isolated_render.h"
+#include "render/png_io.h"
 #include "report/text_format.h"
 #include "rules/shadertoy/builtin_dialects.h"
 
@@ -90,7 +91,7 @@ void RenderEntry(const Job& job, const PortResult& ported, const HtmlReportOptio
     entry.render.detail = "original shader (the port did not validate)";
   }
   if (rendered.image) {
-    entry.png = EncodePng(*rendered.image);
+    entry.png = render::EncodePng(*rendered.image);
     entry.render.status = StatusOf(rendered.diagnostics);
   } else if (HasErrors(rendered.diagnostics)) {
     entry.render.status = StepStatus::kFail;

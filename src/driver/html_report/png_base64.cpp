@@ -1,35 +1,8 @@
 #include "driver/html_report/png_base64.h"
 
-#include <png.h>
-
-#include <cstring>
+#include <cstdint>
 
 namespace shaderport::driver {
-
-std::string EncodePng(const render::ImageRgba8& image) {
-  if (image.width == 0 || image.height == 0 || image.width > render::kMaxRenderSide ||
-      image.height > render::kMaxRenderSide ||
-      image.pixels.size() != size_t{image.width} * image.height * 4) {
-    return "";
-  }
-  png_image png;
-  std::memset(&png, 0, sizeof(png));
-  png.version = PNG_IMAGE_VERSION;
-  png.width = image.width;
-  png.height = image.height;
-  png.format = PNG_FORMAT_RGBA;
-  // First call sizes the buffer, second fills it (libpng's simplified API, no longjmp).
-  png_alloc_size_t size = 0;
-  if (!png_image_write_to_memory(&png, nullptr, &size, 0, image.pixels.data(), 0, nullptr)) {
-    return "";
-  }
-  std::string bytes(size, '\0');
-  if (!png_image_write_to_memory(&png, bytes.data(), &size, 0, image.pixels.data(), 0, nullptr)) {
-    return "";
-  }
-  bytes.resize(size);
-  return bytes;
-}
 
 std::string Base64Encode(std::string_view bytes) {
   static constexpr char kAlphabet[] =

@@ -5,13 +5,7 @@
 #include <string>
 #include <string_view>
 
-#include "render/render_request.h"
-
 namespace shaderport::driver {
-
-// The image as PNG bytes (8-bit RGBA, no time chunk: equal images give equal bytes);
-// empty when the image is malformed or libpng fails.
-std::string EncodePng(const render::ImageRgba8& image);
 
 // Standard base64 (RFC 4648, with padding).
 std::string Base64Encode(std::string_view bytes);

@@ -6,6 +6,7 @@
 #include "driver/project/folder_project.h"
 #include "driver/project/port_document.h"
 #include "driver/render_check/render_multipass.h"
+#include "render/png_io.h"
 
 namespace shaderport::driver {
 
@@ -57,7 +58,7 @@ void FillProjectEntry(const std::filesystem::path& project,
   const RenderFileResult rendered = RenderProject(project, sources, render_options);
   entry.render.detail = "the project as the site draws it (every pass)";
   if (rendered.image) {
-    entry.png = EncodePng(*rendered.image);
+    entry.png = render::EncodePng(*rendered.image);
     entry.render.status = StatusOf(rendered.diagnostics);
   } else {
     entry.render.status =

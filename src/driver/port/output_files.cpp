@@ -5,6 +5,8 @@
 #include <map>
 #include <vector>
 
+#include "base/file_io/same_file.h"
+
 namespace shaderport::driver {
 namespace {
 
@@ -118,6 +120,14 @@ std::string OutputClash(const std::vector<std::filesystem::path>& inputs,
     if (it != written.end()) {
       return "the result of " + inputs[it->second].string() + " (" + targets[it->second].string() +
              ") would replace the input " + input.string();
+    }
+  }
+  // A hard link has another path: the device and inode of a target that exists tell.
+  for (size_t i = 0; i < targets.size(); ++i) {
+    if (targets[i].empty()) continue;
+    if (const auto input = file_io::InputReplacedBy(targets[i], inputs)) {
+      return "the result of " + inputs[i].string() + " (" + targets[i].string() +
+             ") would replace the input " + input->string();
     }
   }
   return {};

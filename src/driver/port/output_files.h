@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "driver/port/atomic_write.h"  // WriteFileAtomically
+#include "base/file_io/atomic_write.h"  // WriteFileAtomically
 
 namespace shaderport::driver {
 

@@ -71,8 +71,13 @@ void AppendUtf8(std::string& out, unsigned code_point) {
 
 }  // namespace
 
-std::map<std::string, JsonLiteral> FindStringValues(std::string_view json, std::string_view key) {
-  std::map<std::string, JsonLiteral> found;
+namespace {
+
+// Calls `on_value(stack, begin, end)` for every value of the document, in order, with
+// the stack of the containers around it (an object's frame holds the member's key).
+// `end` is one past a string or scalar; for a container, its opening bracket + 1.
+template <typename OnValue>
+void WalkValues(std::string_view json, OnValue on_value) {
   std::vector<Frame> stack;
   // Marks the end of a value: an array moves to its next element.
   auto value_done = [&] {
@@ -87,6 +92,7 @@ std::map<std::string, JsonLiteral> FindStringValues(std::string_view json, std::
   while (i < json.size()) {
     const char c = json[i];
     if (c == '{' || c == '[') {
+      on_value(stack, i, i + 1);
       Frame frame;
       frame.object = c == '{';
       stack.push_back(frame);
@@ -102,9 +108,7 @@ std::map<std::string, JsonLiteral> FindStringValues(std::string_view json, std::
             DecodeWithOffsets(json, {static_cast<uint32_t>(i), static_cast<uint32_t>(end)}).text;
         stack.back().expect_key = false;
       } else {
-        if (!stack.empty() && stack.back().object && stack.back().key == key)
-          found.emplace(PointerOf(stack),
-                        JsonLiteral{static_cast<uint32_t>(i), static_cast<uint32_t>(end)});
+        on_value(stack, i, end);
         value_done();
       }
       i = end;
@@ -112,12 +116,37 @@ std::map<std::string, JsonLiteral> FindStringValues(std::string_view json, std::
       ++i;
     } else {
       // A number or literal: runs to the next delimiter.
+      const size_t begin = i;
       while (i < json.size() && json[i] != ',' && json[i] != '}' && json[i] != ']' &&
              json[i] != ' ' && json[i] != '\n' && json[i] != '\r' && json[i] != '\t')
         ++i;
+      on_value(stack, begin, i);
       value_done();
     }
   }
+}
+
+}  // namespace
+
+std::map<std::string, JsonLiteral> FindStringValues(std::string_view json, std::string_view key) {
+  std::map<std::string, JsonLiteral> found;
+  WalkValues(json, [&](const std::vector<Frame>& stack, size_t begin, size_t end) {
+    if (json[begin] == '"' && !stack.empty() && stack.back().object && stack.back().key == key)
+      found.emplace(PointerOf(stack),
+                    JsonLiteral{static_cast<uint32_t>(begin), static_cast<uint32_t>(end)});
+  });
+  return found;
+}
+
+std::map<std::string, uint32_t> FindValueOffsets(std::string_view json,
+                                                 const std::set<std::string>& pointers) {
+  std::map<std::string, uint32_t> found;
+  if (pointers.empty()) return found;
+  WalkValues(json, [&](const std::vector<Frame>& stack, size_t begin, size_t) {
+    std::string pointer = PointerOf(stack);
+    if (pointers.count(pointer) != 0)
+      found.emplace(std::move(pointer), static_cast<uint32_t>(begin));
+  });
   return found;
 }
 

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <map>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -20,6 +21,11 @@ struct JsonLiteral {
 // Every string value whose member name is `key`, by JSON pointer (RFC 6901), e.g.
 // "/Shader/renderpass/2/code". `json` must be a valid document (parse it first).
 std::map<std::string, JsonLiteral> FindStringValues(std::string_view json, std::string_view key);
+
+// The offset of the first byte of each value whose JSON pointer is in `pointers`
+// (one scan of the text). `json` must be a valid document.
+std::map<std::string, uint32_t> FindValueOffsets(std::string_view json,
+                                                 const std::set<std::string>& pointers);
 
 struct DecodedString {
   std::string text;

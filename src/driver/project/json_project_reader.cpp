@@ -1,9 +1,13 @@
 #include "driver/project/json_project_reader.h"
 
 #include <algorithm>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 
+#include "base/limits.h"
 #include "driver/project/json_code_strings.h"
+#include "driver/project/json_members.h"
 
 namespace shaderport::driver::project {
 namespace {
@@ -33,21 +37,6 @@ bool IsCubeBufferId(const json& id) {
          (id.is_string() && id.get<std::string>() == "4dX3Rr");
 }
 
-std::string StringMember(const json& object, const char* name, const char* other = nullptr) {
-  auto it = object.find(name);
-  if ((it == object.end() || !it->is_string()) && other != nullptr) it = object.find(other);
-  return it != object.end() && it->is_string() ? it->get<std::string>() : std::string();
-}
-
-// The site writes booleans of samplers as strings ("true"); accept both.
-bool FlagMember(const json& object, const char* name, bool fallback) {
-  const auto it = object.find(name);
-  if (it == object.end()) return fallback;
-  if (it->is_boolean()) return it->get<bool>();
-  if (it->is_string()) return it->get<std::string>() == "true";
-  return fallback;
-}
-
 std::optional<ShaderToyPass> PassKindFromType(std::string_view type) {
   if (type == "image") return ShaderToyPass::kImage;
   if (type == "buffer") return ShaderToyPass::kBuffer;
@@ -57,12 +46,15 @@ std::optional<ShaderToyPass> PassKindFromType(std::string_view type) {
   return std::nullopt;
 }
 
-ChannelBinding ReadBinding(const json& input) {
+// One member of "inputs"; nullopt (with the problem reported) when it names no
+// channel 0-3.
+std::optional<ChannelBinding> ReadBinding(MemberReader input) {
   ChannelBinding binding;
-  binding.channel = input.value("channel", -1);
-  binding.ctype = StringMember(input, "ctype", "type");
-  binding.src = StringMember(input, "src", "filepath");
-  const json id = input.contains("id") ? input["id"] : json();
+  const std::optional<int64_t> channel = input.Integer("channel", 0, 3, Presence::kRequired);
+  binding.ctype = input.EitherString("ctype", "type").value_or("");
+  binding.src = input.EitherString("src", "filepath").value_or("");
+  const json* id_member = input.Id("id");
+  const json id = id_member != nullptr ? *id_member : json();
   const std::string& ctype = binding.ctype;
   if (ctype == "buffer") {
     binding.source = ChannelSource::kBuffer;
@@ -82,24 +74,31 @@ ChannelBinding ReadBinding(const json& input) {
   } else if (ctype == "music" || ctype == "musicstream" || ctype == "mic") {
     binding.source = ChannelSource::kAudio;
   }
-  const auto sampler = input.find("sampler");
-  if (sampler != input.end() && sampler->is_object()) {
-    const std::string filter = StringMember(*sampler, "filter");
-    const std::string wrap = StringMember(*sampler, "wrap");
-    const std::string internal = StringMember(*sampler, "internal");
-    if (!filter.empty()) binding.sampler.filter = filter;
-    if (!wrap.empty()) binding.sampler.wrap = wrap;
-    if (!internal.empty()) binding.sampler.internal = internal;
-    binding.sampler.vflip = FlagMember(*sampler, "vflip", true);
-    binding.sampler.srgb = FlagMember(*sampler, "srgb", false);
+  if (const json* sampler_member = input.Object("sampler")) {
+    MemberReader sampler(*sampler_member, input.PointerOf("sampler"), input.Problems());
+    if (auto filter = sampler.String("filter"); filter && !filter->empty()) {
+      binding.sampler.filter = *filter;
+    }
+    if (auto wrap = sampler.String("wrap"); wrap && !wrap->empty()) binding.sampler.wrap = *wrap;
+    if (auto internal = sampler.String("internal"); internal && !internal->empty()) {
+      binding.sampler.internal = *internal;
+    }
+    binding.sampler.vflip = sampler.Flag("vflip").value_or(true);
+    binding.sampler.srgb = sampler.Flag("srgb").value_or(false);
   }
+  if (!channel) return std::nullopt;
+  binding.channel = static_cast<int>(*channel);
   return binding;
 }
 
 class Reader {
  public:
   Reader(std::string_view text, uint32_t base, ProjectDocument& out)
-      : text_(text), base_(base), out_(out), codes_(FindStringValues(text, "code")) {}
+      : text_(text),
+        base_(base),
+        out_(out),
+        first_problem_(out.problems.size()),
+        codes_(FindStringValues(text, "code")) {}
 
   void ReadTop(const json& top) {
     if (top.is_array()) {
@@ -107,6 +106,13 @@ class Reader {
     } else {
       ReadShader(top, "");
     }
+    // A member's own problem first: "no Image pass" may only follow from it (a "type"
+    // that is not a string), and render reports the first problem alone.
+    const size_t member_start = out_.problems.size();
+    ReportMemberProblems();
+    std::rotate(out_.problems.begin() + static_cast<std::ptrdiff_t>(first_problem_),
+                out_.problems.begin() + static_cast<std::ptrdiff_t>(member_start),
+                out_.problems.end());
   }
 
  private:
@@ -114,37 +120,63 @@ class Reader {
     out_.problems.push_back({base_ + offset, std::move(message)});
   }
 
+  // Members of the wrong type, out of range or missing, each at its value (found in
+  // one scan of the text for all of them). A hostile document may hold millions: the
+  // first kMaxDiagnosticsPerFile are kept, and a last problem says so.
+  void ReportMemberProblems() {
+    std::vector<MemberProblem>& kept = member_problems_.Kept();
+    if (kept.empty()) return;
+    std::set<std::string> pointers;
+    for (const MemberProblem& problem : kept) pointers.insert(problem.pointer);
+    const std::map<std::string, uint32_t> offsets = FindValueOffsets(text_, pointers);
+    for (MemberProblem& problem : kept) {
+      const auto at = offsets.find(problem.pointer);
+      Problem(std::move(problem.message), at != offsets.end() ? at->second : 0);
+    }
+    if (kept.size() < member_problems_.Count()) {
+      Problem(std::to_string(member_problems_.Count() - kept.size()) +
+              " further problems with members were dropped");
+    }
+  }
+
   void ReadShader(const json& shader, const std::string& pointer) {
     if (!shader.is_object()) {
-      Problem("expected a ShaderToy shader object at " + (pointer.empty() ? "/" : pointer));
+      Problem("expected a ShaderToy shader object at " + (pointer.empty() ? "/" : pointer) +
+              ", not " + DescribeJsonValue(shader));
       return;
     }
+    MemberReader top(shader, pointer, member_problems_);
     ShaderToyProject project;
     std::string passes_pointer;
     const json* passes = nullptr;
-    if (shader.contains("Shader") && shader["Shader"].is_object()) {
-      ReadExport(shader["Shader"], project);
-      passes = Member(shader["Shader"], "renderpass");
-      passes_pointer = pointer + "/Shader/renderpass";
+    const size_t problems_before = member_problems_.Count();
+    if (const json* inner = shader.contains("Shader") ? top.Object("Shader") : nullptr) {
+      MemberReader exported(*inner, top.PointerOf("Shader"), member_problems_);
+      ReadExport(exported, project);
+      passes = exported.Array("renderpass", Presence::kRequired);
+      passes_pointer = exported.PointerOf("renderpass");
     } else if (shader.contains("renderpass")) {
-      ReadExport(shader, project);
-      passes = Member(shader, "renderpass");
-      passes_pointer = pointer + "/renderpass";
+      ReadExport(top, project);
+      passes = top.Array("renderpass");
+      passes_pointer = top.PointerOf("renderpass");
     } else if (shader.contains("passes")) {
       project.format = ProjectFormat::kCorpusRecord;
-      project.id = StringMember(shader, "id");
-      project.name = StringMember(shader, "name");
-      project.author = StringMember(shader, "author");
-      project.license = StringMember(shader, "license");
-      project.description = StringMember(shader, "description");
-      passes = Member(shader, "passes");
-      passes_pointer = pointer + "/passes";
+      project.id = top.String("id").value_or("");
+      project.name = top.String("name").value_or("");
+      project.author = top.String("author").value_or("");
+      project.license = top.String("license").value_or("");
+      project.description = top.String("description").value_or("");
+      passes = top.Array("passes");
+      passes_pointer = top.PointerOf("passes");
     }
     if (passes == nullptr) {
-      Problem(
-          "not a ShaderToy shader: expected {\"Shader\": {\"renderpass\": [...]}} or a "
-          "record with \"passes\": [...]" +
-          (pointer.empty() ? std::string() : " at " + pointer));
+      // A member of the wrong type was reported; an object that is no shader at all is.
+      if (member_problems_.Count() == problems_before) {
+        Problem(
+            "not a ShaderToy shader: expected {\"Shader\": {\"renderpass\": [...]}} or a "
+            "record with \"passes\": [...]" +
+            (pointer.empty() ? std::string() : " at " + pointer));
+      }
       return;
     }
     for (size_t i = 0; i < passes->size(); ++i)
@@ -158,40 +190,46 @@ class Reader {
     out_.projects.push_back(std::move(project));
   }
 
-  const json* Member(const json& object, const char* name) {
-    const auto it = object.find(name);
-    if (it == object.end() || !it->is_array()) return nullptr;
-    return &*it;
-  }
-
-  static void ReadExport(const json& shader, ShaderToyProject& project) {
+  void ReadExport(MemberReader& shader, ShaderToyProject& project) {
     project.format = ProjectFormat::kApiExport;
-    const auto info = shader.find("info");
-    if (info == shader.end() || !info->is_object()) return;
-    project.id = StringMember(*info, "id");
-    project.name = StringMember(*info, "name");
-    project.author = StringMember(*info, "username", "author");
-    project.description = StringMember(*info, "description");
+    const json* info_member = shader.Object("info");
+    if (info_member == nullptr) return;
+    MemberReader info(*info_member, shader.PointerOf("info"), member_problems_);
+    project.id = info.String("id").value_or("");
+    project.name = info.String("name").value_or("");
+    project.author = info.EitherString("username", "author").value_or("");
+    project.description = info.String("description").value_or("");
   }
 
   void ReadPass(const json& pass, const std::string& pointer, ShaderToyProject& project) {
-    const auto literal = codes_.find(pointer + "/code");
-    const uint32_t where = literal != codes_.end() ? literal->second.begin : 0;
-    if (!pass.is_object() || literal == codes_.end()) {
-      Problem("a render pass without a \"code\" string at " + pointer, where);
+    if (!pass.is_object()) {
+      member_problems_.Add(pointer, "a render pass at " + pointer + " must be an object, not " +
+                                        DescribeJsonValue(pass));
       return;
     }
-    const std::string type = StringMember(pass, "type");
-    const std::optional<ShaderToyPass> kind = PassKindFromType(type);
+    MemberReader members(pass, pointer, member_problems_);
+    const auto literal = codes_.find(pointer + "/code");
+    const uint32_t where = literal != codes_.end() ? literal->second.begin : 0;
+    if (literal == codes_.end()) {
+      if (!pass.contains("code")) {
+        Problem("a render pass without a \"code\" string at " + pointer);
+      } else {
+        members.String("code");  // reports the type it has instead
+      }
+      return;
+    }
+    const std::optional<std::string> type = members.String("type", Presence::kRequired);
+    if (!type) return;
+    const std::optional<ShaderToyPass> kind = PassKindFromType(*type);
     if (!kind) {
-      Problem("unknown pass type \"" + type + "\" at " + pointer +
+      Problem("unknown pass type \"" + *type + "\" at " + pointer +
                   " (the site has image, buffer, common, cubemap, sound)",
               where);
       return;
     }
     ProjectPass read;
     read.kind = *kind;
-    read.name = StringMember(pass, "name");
+    read.name = members.String("name").value_or("");
     if (read.name.empty()) read.name = TabName(*kind);
     DecodedString code = DecodeWithOffsets(text_, literal->second);
     read.code = std::move(code.text);
@@ -200,23 +238,36 @@ class Reader {
     read.origin.document_offsets = std::move(code.offsets);
     if (base_ != 0)
       for (uint32_t& offset : read.origin.document_offsets) offset += base_;
-    if (const auto inputs = pass.find("inputs"); inputs != pass.end() && inputs->is_array()) {
-      for (const json& input : *inputs) {
-        if (!input.is_object()) continue;
-        ChannelBinding binding = ReadBinding(input);
-        if (binding.channel < 0 || binding.channel > 3 || read.Input(binding.channel) != nullptr)
+    if (const json* inputs = members.Array("inputs")) {
+      const std::string inputs_pointer = members.PointerOf("inputs");
+      for (size_t i = 0; i < inputs->size(); ++i) {
+        const json& input = (*inputs)[i];
+        const std::string input_pointer = inputs_pointer + "/" + std::to_string(i);
+        if (!input.is_object()) {
+          member_problems_.Add(input_pointer, "an input at " + input_pointer +
+                                                  " must be an object, not " +
+                                                  DescribeJsonValue(input));
           continue;
-        read.inputs.push_back(std::move(binding));
+        }
+        std::optional<ChannelBinding> binding =
+            ReadBinding(MemberReader(input, input_pointer, member_problems_));
+        if (!binding || read.Input(binding->channel) != nullptr) continue;
+        read.inputs.push_back(std::move(*binding));
       }
       std::sort(
           read.inputs.begin(), read.inputs.end(),
           [](const ChannelBinding& a, const ChannelBinding& b) { return a.channel < b.channel; });
     }
+    const json* outputs = members.Array("outputs");
     if (read.kind == ShaderToyPass::kBuffer) {
-      if (const auto outputs = pass.find("outputs");
-          outputs != pass.end() && outputs->is_array() && !outputs->empty() &&
-          (*outputs)[0].is_object() && (*outputs)[0].contains("id")) {
-        read.output_buffer = BufferIndexFromId((*outputs)[0]["id"]).value_or(-1);
+      if (outputs != nullptr && !outputs->empty()) {
+        const std::string first = members.PointerOf("outputs") + "/0";
+        if (!(*outputs)[0].is_object()) {
+          member_problems_.Add(first, "an output at " + first + " must be an object, not " +
+                                          DescribeJsonValue((*outputs)[0]));
+        } else if (const json* id = MemberReader((*outputs)[0], first, member_problems_).Id("id")) {
+          read.output_buffer = BufferIndexFromId(*id).value_or(-1);
+        }
       }
       if (read.output_buffer < 0) read.output_buffer = BufferIndexFromName(read.name).value_or(-1);
       if (read.output_buffer < 0) {
@@ -247,7 +298,9 @@ class Reader {
   std::string_view text_;
   uint32_t base_;
   ProjectDocument& out_;
+  size_t first_problem_;  // where this document's problems begin in out_ (.jsonl: many)
   std::map<std::string, JsonLiteral> codes_;
+  MemberProblems member_problems_;
 };
 
 size_t NestingDepth(std::string_view text) {

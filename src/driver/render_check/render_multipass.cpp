@@ -1,5 +1,6 @@
 #include "driver/render_check/render_multipass.h"
 
+#include <algorithm>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <vector>
@@ -51,6 +52,14 @@ render::PassChannelKind ChannelKindOf(const std::string& ctype, int buffer) {
   return Kind::kUnbound;
 }
 
+// Member `key` of `object` when it is a string, else `fallback` (nlohmann's
+// value() throws on another type). RenderShaderToyJson validates the document
+// first; this keeps the reads safe on their own.
+std::string StringOr(const nlohmann::json& object, const char* key, std::string fallback) {
+  const auto it = object.find(key);
+  return it != object.end() && it->is_string() ? it->get<std::string>() : std::move(fallback);
+}
+
 // The input's `sampler`: filter nearest | linear | mipmap, wrap clamp | repeat,
 // vflip (a boolean or "true"/"false"); absent members keep the site's defaults.
 void ReadSampler(const nlohmann::json& input, render::PassChannel& channel) {
@@ -75,14 +84,15 @@ PassInputs InputsOf(const nlohmann::json& pass) {
   if (found == pass.end() || !found->is_array()) return inputs;
   for (const auto& input : *found) {
     if (!input.is_object()) continue;
-    const int channel = input.value("channel", -1);
-    if (channel < 0 || channel > 3) continue;
-    const auto c = static_cast<size_t>(channel);
-    const std::string ctype = input.value("ctype", "");
+    const auto channel = input.find("channel");
+    if (channel == input.end() || !channel->is_number_integer() || *channel < 0 || *channel > 3)
+      continue;
+    const auto c = channel->get<size_t>();
+    const std::string ctype = StringOr(input, "ctype", "");
     inputs.types[c] = validate::ChannelTypeFromCtype(ctype);
     inputs.fed[c] = true;
     if (ctype == "buffer")
-      inputs.buffers[c] = project::BufferIndexFromSource(input.value("src", "")).value_or(-1);
+      inputs.buffers[c] = project::BufferIndexFromSource(StringOr(input, "src", "")).value_or(-1);
     render::PassChannel& bound = inputs.channels[c];
     bound = render::PassChannel{};
     bound.kind = ChannelKindOf(ctype, inputs.buffers[c]);
@@ -102,6 +112,17 @@ RenderFileResult RenderShaderToyJson(std::string_view name, std::string_view jso
   const SourceFile& json_file = sources.Add(std::string(name), std::string(json_text));
   result.file = &json_file;
   const SourceRange anchor{json_file.Id(), 0, 0};
+  // Member by member (types, ranges, what is required), as check reads projects: a
+  // problem is a finding on the document, at the member.
+  const project::ProjectDocument validated = project::ReadShaderToyJson(json_text);
+  if (!validated.problems.empty()) {
+    const uint32_t at = std::min<uint32_t>(validated.problems.front().offset,
+                                           static_cast<uint32_t>(json_text.size()));
+    result.diagnostics.push_back(MakeDiagnostic(Severity::kError, "input/invalid-project",
+                                                {json_file.Id(), at, at},
+                                                validated.problems.front().message));
+    return result;
+  }
   const nlohmann::json shader = nlohmann::json::parse(json_text, nullptr, false);
   if (shader.is_discarded() || !shader.is_object() || !shader.contains("passes") ||
       !shader["passes"].is_array()) {
@@ -114,7 +135,7 @@ RenderFileResult RenderShaderToyJson(std::string_view name, std::string_view jso
   std::vector<const nlohmann::json*> buffers;
   for (const auto& pass : shader["passes"]) {
     if (!pass.is_object() || !pass.contains("code") || !pass["code"].is_string()) continue;
-    const std::string type = pass.value("type", "");
+    const std::string type = StringOr(pass, "type", "");
     if (type == "common") {
       common = &sources.Add(std::string(name) + "#Common", pass["code"].get<std::string>());
     } else if (type == "image") {
@@ -130,7 +151,7 @@ RenderFileResult RenderShaderToyJson(std::string_view name, std::string_view jso
   // Compose one pass: header, Common, code, epilogue, remembering the line map.
   auto compose = [&](const nlohmann::json& pass, validate::PassType type,
                      const PassInputs& inputs) {
-    const SourceFile& code = sources.Add(std::string(name) + "#" + pass.value("name", "pass"),
+    const SourceFile& code = sources.Add(std::string(name) + "#" + StringOr(pass, "name", "pass"),
                                          pass["code"].get<std::string>());
     auto composed = std::make_shared<ComposedText>();
     composed->Append(validate::ShaderToyHeader(type, inputs.types), nullptr);
@@ -142,7 +163,7 @@ RenderFileResult RenderShaderToyJson(std::string_view name, std::string_view jso
   std::vector<std::shared_ptr<ComposedText>> buffer_texts;
   RenderFileOptions pass_options = options;
   for (const nlohmann::json* pass : buffers) {
-    const int index = project::BufferIndexFromName(pass->value("name", "")).value_or(-1);
+    const int index = project::BufferIndexFromName(StringOr(*pass, "name", "")).value_or(-1);
     if (index < 0) continue;
     const PassInputs inputs = InputsOf(*pass);
     auto [composed, code] = compose(*pass, validate::PassType::kBuffer, inputs);
@@ -184,6 +205,7 @@ RenderFileResult RenderProject(const std::filesystem::path& path, SourceManager&
   RenderFileResult result;
   project::ProjectDocument document;
   std::string name = path.string();
+  std::string text;  // the document's text, where findings point
   if (project::IsProjectFolder(path)) {
     document = project::ReadFolderProject(path);
     name = path.string();
@@ -196,24 +218,30 @@ RenderFileResult RenderProject(const std::filesystem::path& path, SourceManager&
       result.diagnostics.back().rule_id = input.rule_id;
       return result;
     }
-    // The corpus record is what RenderShaderToyJson reads as it is.
-    const nlohmann::json probe = nlohmann::json::parse(*input.text, nullptr, false);
-    if (path.extension() == ".json" && probe.is_object() && probe.contains("passes"))
-      return RenderShaderToyJson(name, *input.text, sources, options);
     document = path.extension() == ".jsonl" ? project::ReadShaderToyJsonLines(*input.text)
                                             : project::ReadShaderToyJson(*input.text);
+    text = std::move(*input.text);
   }
   std::string problem;
-  if (!document.problems.empty()) problem = document.problems.front().message;
+  uint32_t at = 0;
+  if (!document.problems.empty()) {
+    problem = document.problems.front().message;
+    at = std::min<uint32_t>(document.problems.front().offset, static_cast<uint32_t>(text.size()));
+  }
   if (problem.empty() && document.projects.size() != 1)
     problem = "the file holds " + std::to_string(document.projects.size()) +
               " projects; render draws one (split the file)";
   if (!problem.empty()) {
-    const SourceFile& file = sources.Add(name, "");
+    const SourceFile& file = sources.Add(name, std::move(text));
     result.file = &file;
-    result.diagnostics.push_back(Note({file.Id(), 0, 0}, problem, Severity::kError));
+    result.diagnostics.push_back(Note({file.Id(), at, at}, problem, Severity::kError));
     result.diagnostics.back().rule_id = "input/invalid-project";
     return result;
+  }
+  // The corpus record is what RenderShaderToyJson reads as it is.
+  if (path.extension() == ".json" &&
+      document.projects.front().format == project::ProjectFormat::kCorpusRecord) {
+    return RenderShaderToyJson(name, text, sources, options);
   }
   return RenderShaderToyJson(name, project::ToRecordJson(document.projects.front()), sources,
                              options);

@@ -134,7 +134,8 @@ TEST(ExitContract, EveryCommandExitsAndSpeaksAsDocumented) {
       {"report clean.frag", 2, "shaderport: error: report: --html is required"},
       // merge
       {"merge clean.json", 0, ""},
-      {"merge missing.json", 2, "shaderport: error: missing.json: cannot be read"},
+      {"merge missing.json", 2,
+       "shaderport: error: missing.json: cannot open file: No such file or directory"},
       {"merge --format jsn clean.json", 2,
        "shaderport: error: unknown --format 'jsn'; did you mean 'json'?"},
       // rules, explain

@@ -89,17 +89,18 @@ TEST_F(RenderSandboxTest, NoRenderProcessOutlivesAKilledParent) {
 }
 
 // Pass names in a ShaderToy JSON export only name sources in diagnostics: no file
-// is written from them, whatever they hold.
+// is written from them, whatever they hold. (The buffers name their outputs by id:
+// a buffer that names no Buffer A-D is an invalid project for render as for check.)
 TEST_F(RenderSandboxTest, JsonPassNamesNeverBecomePaths) {
   const fs::path outside = project_.Root() / "outside";
   fs::create_directories(project_.Root() / "work/deep");
   const std::string escape = (outside / "abs").string();
   const std::string json =
-      R"({"ver":"0.1","info":{"id":"x","name":"../../evil"},"renderpass":[],"passes":[)"
-      R"({"name":"../../escaped","type":"buffer","code":"void mainImage(out vec4 o, in vec2 p) { o = vec4(1.0); }","inputs":[],"outputs":[]},)"
+      R"({"ver":"0.1","info":{"id":"x","name":"../../evil"},"passes":[)"
+      R"({"name":"../../escaped","type":"buffer","code":"void mainImage(out vec4 o, in vec2 p) { o = vec4(1.0); }","inputs":[],"outputs":[{"id":"4dXGR8","channel":0}]},)"
       R"({"name":")" +
       escape +
-      R"(","type":"buffer","code":"void mainImage(out vec4 o, in vec2 p) { o = vec4(0.5); }","inputs":[],"outputs":[]},)"
+      R"(","type":"buffer","code":"void mainImage(out vec4 o, in vec2 p) { o = vec4(0.5); }","inputs":[],"outputs":[{"id":"XsXGR8","channel":0}]},)"
       R"({"name":"a/b/../../c","type":"common","code":"float common_value() { return 0.25; }"},)"
       R"({"name":"../../image/..","type":"image","code":"void mainImage(out vec4 o, in vec2 p) { o = vec4(p / 64.0, common_value(), 1.0) + undefined_name; }","inputs":[],"outputs":[]}]})";
   project_.Write("work/deep/shader.json", json);

@@ -5,6 +5,7 @@
 
 #include "driver/html_report/html_report.h"
 #include "driver/html_report/png_base64.h"
+#include "render/png_io.h"
 
 namespace shaderport::driver {
 namespace {
@@ -29,12 +30,12 @@ TEST(HtmlReportFormat, EncodesPngWithSignatureAndRejectsBadImages) {
   image.width = 2;
   image.height = 3;
   image.pixels.assign(2 * 3 * 4, 200);
-  const std::string png = EncodePng(image);
+  const std::string png = render::EncodePng(image);
   ASSERT_GE(png.size(), 24u);
   EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
-  EXPECT_EQ(png, EncodePng(image));  // deterministic
+  EXPECT_EQ(png, render::EncodePng(image));  // deterministic
   image.pixels.pop_back();
-  EXPECT_EQ(EncodePng(image), "");
+  EXPECT_EQ(render::EncodePng(image), "");
 }
 
 TEST(HtmlReportFormat, PageEscapesEverythingUserControlledAndCounts) {

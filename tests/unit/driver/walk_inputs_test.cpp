@@ -78,6 +78,17 @@ TEST(OutputClashTest, NamesTwoInputsForOneTargetAndAReplacedInput) {
             "the result of o/b.frag (o/b.frag) would replace the input o/b.frag");
 }
 
+TEST(OutputClashTest, AHardLinkToAnInputIsTheInput) {
+  const fs::path dir = fs::temp_directory_path() / ("clash-" + std::to_string(::getpid()));
+  fs::create_directories(dir / "o");
+  std::ofstream(dir / "a.glsl") << "x";
+  fs::create_hard_link(dir / "a.glsl", dir / "o" / "a.frag");
+  EXPECT_EQ(OutputClash({dir / "a.glsl"}, {dir / "o" / "a.frag"}),
+            "the result of " + (dir / "a.glsl").string() + " (" + (dir / "o" / "a.frag").string() +
+                ") would replace the input " + (dir / "a.glsl").string());
+  fs::remove_all(dir);
+}
+
 TEST(ReadInputStreamTest, ReadsTextAndStopsPastTheLimit) {
   std::istringstream text("void main() {}\n");
   EXPECT_EQ(ReadInputStream(text).text, "void main() {}\n");

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <fstream>
 #include <string>
 
 #include "golden.h"
@@ -48,7 +49,9 @@ inline void ExpectMatchesGolden(const ImageRgba8& image, const std::string& name
   std::string error;
   const std::string path = GoldenPath(name);
   if (UpdatingGoldens()) {
-    ASSERT_TRUE(WritePng(path, image, error)) << error;
+    const std::string png = EncodePng(image);
+    ASSERT_FALSE(png.empty());
+    std::ofstream(path, std::ios::binary) << png;
     return;
   }
   ImageRgba8 golden;

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <fstream>
 
 #include "render/isolated_render.h"
 #include "render/png_io.h"
@@ -81,8 +82,10 @@ TEST(RenderInputs, UserPngIsChannelZeroUpright) {
   image.height = 2;
   image.pixels = {255, 0, 0, 255, 255, 0, 0, 255, 0, 0, 255, 255, 0, 0, 255, 255};
   const std::string path = ::testing::TempDir() + "/render-channel0.png";
+  const std::string png = EncodePng(image);
+  ASSERT_FALSE(png.empty());
+  std::ofstream(path, std::ios::binary) << png;
   std::string error;
-  ASSERT_TRUE(WritePng(path, image, error)) << error;
   RenderRequest request = FragmentRequest(
       ShaderToyText("void mainImage(out vec4 c, in vec2 p) {\n"
                     "  c = texelFetch(iChannel0, ivec2(p / iResolution.xy * 2.0), 0);\n}\n"),

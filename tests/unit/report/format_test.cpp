@@ -81,6 +81,31 @@ TEST(TextFormat, CaretKeepsTabsAndCountsCharacters) {
   EXPECT_NE(text.find("      | \t^~~\n"), std::string::npos) << text;
 }
 
+// A 4 MB one-line document with a thousand findings printed the whole line for
+// each (4 GB of output); a long line is shown as a window around the finding.
+TEST(TextFormat, LongLinesAreShownAsAWindowAroundTheFinding) {
+  std::string line(5000, 'a');
+  line.replace(3000, 3, "XYZ");
+  OneFile one(line + "\n");
+  one.Add(Severity::kError, 3000, 3003);
+  const std::string text = FormatText(one.report, one.options);
+  const size_t shown = text.find("    1 | ...");
+  ASSERT_NE(shown, std::string::npos) << text;
+  const size_t shown_end = text.find('\n', shown);
+  EXPECT_LT(shown_end - shown, 260u);
+  EXPECT_EQ(text.substr(shown_end - 3, 3), "...");
+  // The caret stands under X in the window shown.
+  const size_t caret_line = shown_end + 1;
+  const size_t caret = text.find('^', caret_line);
+  EXPECT_EQ(caret - caret_line, text.find("XYZ", shown) - shown);
+  EXPECT_EQ(text.substr(caret, 3), "^~~");
+  // A line of normal length is shown whole.
+  OneFile normal(std::string(1000, 'b') + "\n");
+  normal.Add(Severity::kError, 900, 901);
+  EXPECT_NE(FormatText(normal.report, normal.options).find(std::string(1000, 'b')),
+            std::string::npos);
+}
+
 TEST(TextFormat, ColourOnlyWhenAsked) {
   OneFile one("x;\n");
   one.Add(Severity::kWarning, 0, 1);

@@ -5,11 +5,11 @@
 #include <filesystem>
 #include <string>
 
-namespace shaderport::driver {
+namespace shaderport::file_io {
 
 // "" when `target` looks writable: its directory exists and may be written, and
 // it is not itself a directory. Else "cannot write TARGET: REASON". A write can
 // still fail later (a full disk); this only catches the mistakes in the path.
 std::string UnwritablePath(const std::filesystem::path& target);
 
-}  // namespace shaderport::driver
+}  // namespace shaderport::file_io

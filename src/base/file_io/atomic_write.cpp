@@ -1,4 +1,4 @@
-#include "driver/port/atomic_write.h"
+#include "base/file_io/atomic_write.h"
 
 #include <fcntl.h>
 #include <pthread.h>
@@ -12,9 +12,9 @@
 #include <fstream>
 #include <optional>
 
-#include "driver/port/write_temporaries.h"
+#include "base/file_io/write_temporaries.h"
 
-namespace shaderport::driver {
+namespace shaderport::file_io {
 namespace {
 
 namespace fs = std::filesystem;
@@ -85,7 +85,7 @@ std::optional<fs::path> FollowSymlinks(const fs::path& path, std::string& error)
 }
 
 // The mode a new file gets: 0666 less the umask, read without changing it.
-mode_t NewFileMode() {
+mode_t ReadNewFileMode() {
   std::ifstream status("/proc/self/status");
   std::string line;
   while (std::getline(status, line)) {
@@ -94,6 +94,13 @@ mode_t NewFileMode() {
     }
   }
   return 0644;
+}
+
+// Read once: shaderport never changes its umask, and a run that fills the result
+// cache creates thousands of files.
+mode_t NewFileMode() {
+  static const mode_t mode = ReadNewFileMode();
+  return mode;
 }
 
 // An O_TMPFILE inode in the directory; -1 with errno EOPNOTSUPP where the
@@ -156,12 +163,36 @@ bool WriteAll(int fd, std::string_view text) {
   return true;
 }
 
+// Writes `text` to the device or FIFO `path` as it is. Opened without blocking, so
+// a FIFO nobody reads is an error (ENXIO), not a hang; then written blocking.
+std::string WriteToStream(const fs::path& path, std::string_view text) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+  int error = errno;
+  bool written = false;
+  if (fd >= 0) {
+    ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+    const FileSizeSignalBlock file_size_signal;
+    written = WriteAll(fd, text);
+    error = errno;
+    ::close(fd);
+  }
+  if (written) return {};
+  return "cannot write " + path.string() + ": " + std::strerror(error);
+}
+
 }  // namespace
 
 std::string WriteFileAtomically(const fs::path& path, std::string_view text,
                                 const AtomicWriteOptions& options) {
+  // /dev/null, /dev/stdout (a link to a pipe), a FIFO: a stream, no old text to keep.
+  struct stat followed {};
+  if (options.user_named_target && ::stat(path.c_str(), &followed) == 0 &&
+      (S_ISCHR(followed.st_mode) || S_ISFIFO(followed.st_mode))) {
+    return WriteToStream(path, text);
+  }
   std::string error;
-  const std::optional<fs::path> target = FollowSymlinks(path, error);
+  const std::optional<fs::path> target =
+      options.user_named_target ? FollowSymlinks(path, error) : std::optional<fs::path>(path);
   if (!target) return error;
   const fs::path directory = target->has_parent_path() ? target->parent_path() : fs::path(".");
   const std::string name = target->filename().string();
@@ -184,8 +215,10 @@ std::string WriteFileAtomically(const fs::path& path, std::string_view text,
     return fail("not a regular file", S_ISDIR(old.st_mode) ? EISDIR : EINVAL);
   }
   // rename() would replace a read-only file; its owner made it read-only to keep it.
-  if (existed && ::faccessat(staging.directory_fd, name.c_str(), W_OK, AT_EACCESS) != 0) {
-    return fail("the file is not writable", errno);
+  // The mode bits are asked too: access() lets root write anything.
+  if (existed && ((old.st_mode & 0222) == 0 ||
+                  ::faccessat(staging.directory_fd, name.c_str(), W_OK, AT_EACCESS) != 0)) {
+    return fail("the file is read-only", EACCES);
   }
   RemoveStaleTemporaries(staging.directory_fd, directory);
 
@@ -216,7 +249,9 @@ std::string WriteFileAtomically(const fs::path& path, std::string_view text,
   const mode_t mode = existed ? (old.st_mode & 07777) : NewFileMode();
   if (::fchmod(staging.fd, mode) != 0) return fail("setting the mode", errno);
   if (!WriteAll(staging.fd, text)) return fail("writing the new text", errno);
-  if (::fsync(staging.fd) != 0) return fail("syncing the new text to disk", errno);
+  if (options.sync_to_disk && ::fsync(staging.fd) != 0) {
+    return fail("syncing the new text to disk", errno);
+  }
 
   if (anonymous) {
     // A new file appears complete under its own name at once; an existing one is
@@ -237,8 +272,8 @@ std::string WriteFileAtomically(const fs::path& path, std::string_view text,
   }
   // Makes the rename durable. A failure is not reported: the file already holds
   // the complete new text, and a crash could at worst bring back the old one.
-  ::fsync(staging.directory_fd);
+  if (options.sync_to_disk) ::fsync(staging.directory_fd);
   return {};
 }
 
-}  // namespace shaderport::driver
+}  // namespace shaderport::file_io

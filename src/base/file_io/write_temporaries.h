@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-namespace shaderport::driver {
+namespace shaderport::file_io {
 
 // ".NAME.shaderport-PID-XXXXXX.tmp" with a fresh random XXXXXX.
 std::string TemporaryNameFor(std::string_view target_name);
@@ -16,4 +16,4 @@ std::string TemporaryNameFor(std::string_view target_name);
 // nothing, so writing many files in one directory stays linear).
 void RemoveStaleTemporaries(int directory_fd, const std::filesystem::path& directory);
 
-}  // namespace shaderport::driver
+}  // namespace shaderport::file_io

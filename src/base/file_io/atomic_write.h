@@ -7,13 +7,22 @@
 #include <string>
 #include <string_view>
 
-namespace shaderport::driver {
+namespace shaderport::file_io {
 
 struct AtomicWriteOptions {
   // Stage the new text in an anonymous O_TMPFILE inode, which a killed process
   // cannot leave behind. false forces the named temporary that is otherwise
   // used only where the file system has no O_TMPFILE (tests of that path).
   bool anonymous_temporary = true;
+  // fsync the new text and the directory before returning. Only a file whose
+  // reader detects a torn copy (the result cache checksums each entry, a torn one
+  // is a miss) may skip it: it costs a disk flush per file.
+  bool sync_to_disk = true;
+  // The user named the target (-o, --html, an input of fix -i): its symlinks are
+  // followed and a device or FIFO (/dev/null) is written as a stream. false for
+  // files shaderport names itself (result cache entries), where a symlink, device or
+  // FIFO was planted by someone else: it is refused, never written through.
+  bool user_named_target = true;
 };
 
 // A named temporary older than this is removed by the next write in its directory.
@@ -23,7 +32,10 @@ inline constexpr std::chrono::minutes kStaleTemporaryAge{10};
 // link): the new text goes to a temporary in the file's directory, is fsynced,
 // renamed over the file, and the directory is fsynced. The mode, and the owner
 // where permitted, of the file it replaces are kept. An existing target that is
-// not writable is refused. On any failure the old file is untouched, no
+// read-only is refused, also for root (its mode has no write bit), as is one the
+// caller may not write. A character device or FIFO (/dev/null, /dev/stdout) is a
+// stream, not a file to keep: it is written directly (a FIFO without a reader is
+// an error, not a hang). On any failure the old file is untouched, no
 // temporary is left, and the reason is returned; "" on success. Blocks
 // SIGXFSZ while writing, so a file-size limit gives an error, not a dead process.
 std::string WriteFileAtomically(const std::filesystem::path& path, std::string_view text,
@@ -33,4 +45,4 @@ std::string WriteFileAtomically(const std::filesystem::path& path, std::string_v
 // ".NAME.shaderport-PID-XXXXXX.tmp" (X: a letter or digit).
 bool IsAtomicWriteTemporary(std::string_view file_name);
 
-}  // namespace shaderport::driver
+}  // namespace shaderport::file_io

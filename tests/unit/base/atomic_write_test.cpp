@@ -1,6 +1,6 @@
 // WriteFileAtomically through both temporaries (anonymous O_TMPFILE and the
 // named fallback), the removal of stale temporaries, and symlink edge cases.
-#include "driver/port/atomic_write.h"
+#include "base/file_io/atomic_write.h"
 
 #include <fcntl.h>
 #include <gtest/gtest.h>
@@ -16,7 +16,7 @@
 
 #include "golden.h"
 
-namespace shaderport::driver {
+namespace shaderport::file_io {
 namespace {
 
 namespace fs = std::filesystem;
@@ -127,4 +127,4 @@ TEST(AtomicWriteTemporaryName, MatchesOnlyItsOwnPattern) {
 }
 
 }  // namespace
-}  // namespace shaderport::driver
+}  // namespace shaderport::file_io

@@ -1,8 +1,9 @@
-#include "driver/port/writable_path.h"
+#include "base/file_io/writable_path.h"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
-namespace shaderport::driver {
+namespace shaderport::file_io {
 
 namespace fs = std::filesystem;
 
@@ -19,10 +20,14 @@ std::string UnwritablePath(const fs::path& target) {
     return prefix + "the directory " + directory.string() + " is not writable";
   }
   if (fs::is_directory(target, error)) return prefix + "it is a directory";
-  if (fs::exists(target, error) && ::access(target.c_str(), W_OK) != 0) {
-    return prefix + "the file is not writable";
+  // The mode bits too: access() lets root write anything, and a read-only file is
+  // refused for everyone (as WriteFileAtomically does).
+  struct stat info {};
+  if (::stat(target.c_str(), &info) == 0 &&
+      ((info.st_mode & 0222) == 0 || ::access(target.c_str(), W_OK) != 0)) {
+    return prefix + "the file is read-only";
   }
   return "";
 }
 
-}  // namespace shaderport::driver
+}  // namespace shaderport::file_io

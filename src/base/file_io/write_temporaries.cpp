@@ -1,4 +1,4 @@
-#include "driver/port/write_temporaries.h"
+#include "base/file_io/write_temporaries.h"
 
 #include <dirent.h>
 #include <fcntl.h>
@@ -11,9 +11,9 @@
 #include <random>
 #include <set>
 
-#include "driver/port/atomic_write.h"
+#include "base/file_io/atomic_write.h"
 
-namespace shaderport::driver {
+namespace shaderport::file_io {
 namespace {
 
 constexpr std::string_view kMarker = ".shaderport-";
@@ -89,4 +89,4 @@ void RemoveStaleTemporaries(int directory_fd, const std::filesystem::path& direc
   ::closedir(listing);
 }
 
-}  // namespace shaderport::driver
+}  // namespace shaderport::file_io
