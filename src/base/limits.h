@@ -9,12 +9,18 @@ namespace shaderport::limits {
 inline constexpr size_t kMaxFileBytes = 8u << 20;        // 8 MiB per input file
 inline constexpr size_t kMaxTokens = 2'000'000;          // lexed tokens per file
 inline constexpr size_t kMaxExpandedTokens = 4'000'000;  // tokens after macro expansion
-inline constexpr uint32_t kMaxMacroDepth = 200;          // nested macro expansions
-inline constexpr uint32_t kMaxConditionalDepth = 200;    // nested #if groups
-inline constexpr uint32_t kMaxSyntaxDepth = 256;         // nested expressions/statements
-inline constexpr size_t kMaxDiagnosticsPerFile = 1000;   // further ones are dropped with a note
+// Preprocessed tokens of one shader (Common code included) that glslang is given: its
+// memory grows with them (about 1 GiB at 2,000,000), and every command runs under 2 GiB.
+inline constexpr size_t kMaxCompiledTokens = 1'000'000;
+inline constexpr uint32_t kMaxMacroDepth = 200;         // nested macro expansions
+inline constexpr uint32_t kMaxConditionalDepth = 200;   // nested #if groups
+inline constexpr uint32_t kMaxSyntaxDepth = 256;        // nested expressions/statements
+inline constexpr size_t kMaxDiagnosticsPerFile = 1000;  // further ones are dropped with a note
 // A render's text goes through spirv-opt only while its entry point, with every call
 // inlined, stays below this many SPIR-V instructions (past it, tens of seconds).
 inline constexpr uint64_t kMaxInlinedInstructions = 40'000;
+// SPIRV-Cross (port --emit hlsl|msl|essl-roundtrip) walks a callee's body again at every
+// call: the same count, with more room, as each visit is cheap (reflect: the limit above).
+inline constexpr uint64_t kMaxCrossCompiledInstructions = 4'000'000;
 
 }  // namespace shaderport::limits

@@ -1,12 +1,11 @@
 #include "driver/check_file.h"
 
-#include <algorithm>
-#include <array>
 #include <chrono>
 #include <string_view>
 #include <utility>
 
 #include "base/limits.h"
+#include "diag/limit_breach.h"
 #include "driver/dialect.h"
 #include "driver/front_end.h"
 #include "driver/read_input.h"
@@ -19,14 +18,6 @@
 
 namespace shaderport::driver {
 namespace {
-
-// Breaches of our own limits: glslang is not run on such input.
-bool IsLimitBreach(std::string_view rule_id) {
-  static constexpr std::array<std::string_view, 5> kLimitRules = {
-      "lex/too-many-tokens", "syntax/nesting-too-deep", "preprocessor/macro-too-deep",
-      "preprocessor/expansion-too-large", "preprocessor/conditional-too-deep"};
-  return std::find(kLimitRules.begin(), kLimitRules.end(), rule_id) != kLimitRules.end();
-}
 
 DetectedKind ResolveKind(const FileJob& job, const CheckOptions& options,
                          const glsl::LexedFile& lexed) {
@@ -183,9 +174,8 @@ FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceMana
   front_options.max_identifier_length = webgl.target == Target::kWebGL2 ? 1024 : 256;
   const FrontEndResult front =
       RunFrontEnd(file, std::move(lexed), common, kind, sources, front_options);
-  for (const Diagnostic& diagnostic : front.diagnostics) {
-    if (IsLimitBreach(diagnostic.rule_id)) report.diagnostics.push_back(diagnostic);
-  }
+  // Past a limit only the breach is reported: glslang is not run on such text.
+  report.diagnostics = LimitBreaches(front.diagnostics);
   if (!report.diagnostics.empty()) return report;
 
   validate::ValidationRequest request = ComposeRequest(job, options, kind, file, sources);
