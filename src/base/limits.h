@@ -12,6 +12,9 @@ inline constexpr size_t kMaxExpandedTokens = 4'000'000;  // tokens after macro e
 // Preprocessed tokens of one shader (Common code included) that glslang is given: its
 // memory grows with them (about 1 GiB at 2,000,000), and every command runs under 2 GiB.
 inline constexpr size_t kMaxCompiledTokens = 1'000'000;
+// Syntax-tree depth given to glslang's SPIR-V generator, which recurses once per level (a
+// chain of 400,000 terms overflowed its 256 MiB stack). Browsers stop at 256 levels.
+inline constexpr uint32_t kMaxSpirvTreeDepth = 10'000;
 inline constexpr uint32_t kMaxMacroDepth = 200;         // nested macro expansions
 inline constexpr uint32_t kMaxConditionalDepth = 200;   // nested #if groups
 inline constexpr uint32_t kMaxSyntaxDepth = 256;        // nested expressions/statements

@@ -65,6 +65,10 @@ std::vector<Row> Rows() {
         "float f" + std::to_string(i) + "(float x) { return " + g + "(x) + " + g + "(x * 0.5); }\n";
   }
   rows.push_back(Plain("inlining.glsl", calls + PassWith("  c = vec4(f30(p.x));")));
+  // A chain a+a+... 20,000 deep: past the SPIR-V leg's depth limit, under the parser's.
+  std::string chain = "  float a = p.x;\n  c = vec4(a";
+  for (int i = 0; i < 20'000; ++i) chain += "+a";
+  rows.push_back(Plain("chain.frag", PassWith(chain + ");")));
   rows.push_back({"braces.frag", PassWith(std::string(100000, '{') + std::string(100000, '}')),
                   "syntax/nesting-too-deep", false});
   std::string ifs;
