@@ -109,6 +109,15 @@ Flow Analyze(const glsl::Node* statement, int depth) {
   }
 }
 
+// A body closed by its own '}': one the parser ended at the end of the file (a '}'
+// missing) ends with the last token of its last statement, and a return put before
+// that token would land inside the statement, round after round.
+bool ClosedBody(const glsl::CompoundStatement& body, const std::vector<glsl::PpToken>& tokens) {
+  if (tokens[body.last_token].text != "}") return false;
+  const glsl::Node* last = body.statements.empty() ? nullptr : body.statements.back();
+  return last == nullptr || !last->HasTokens() || last->last_token < body.last_token;
+}
+
 class MissingReturnRule final : public rule::Rule {
  public:
   const rule::RuleInfo& Info() const override {
@@ -133,7 +142,10 @@ class MissingReturnRule final : public rule::Rule {
       const uint32_t symbol = model.SymbolAt(function->id);
       if (symbol >= model.symbols.size()) continue;
       const glsl::Type& type = model.symbols[symbol].type;
-      if (type.IsVoid() || type.IsUnknown() || !Analyze(function->body, 0).completes) continue;
+      if (type.IsVoid() || type.IsUnknown() || !ClosedBody(*function->body, tokens) ||
+          !Analyze(function->body, 0).completes) {
+        continue;
+      }
       const glsl::PpToken& brace = tokens[function->body->last_token];
       Diagnostic diagnostic =
           MakeDiagnostic(Severity::kWarning, std::string(kId), brace.expansion,

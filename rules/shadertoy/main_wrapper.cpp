@@ -19,6 +19,7 @@
 // entry points: nothing to do here (shadertoy/uniforms declares their output).
 #include <map>
 
+#include "glsl/syntax/visit.h"
 #include "rules/all_rules.h"
 #include "rules/shadertoy/harness_support.h"
 
@@ -109,6 +110,19 @@ const rule::EntryPoint* MacroEntryPoint(const rule::RuleContext& context,
   return nullptr;
 }
 
+// A function defined inside another one: the parser's recovery from an error (an invalid
+// byte, a '}' missing) ran to the end of the file. A main() added there was found
+// nested, never at top level, and was added again every round.
+bool NestedFunctionDefinition(const glsl::SyntaxTree& tree) {
+  bool nested = false;
+  glsl::VisitPreorder(tree, [&](const glsl::Node& node, uint32_t depth) {
+    const auto* function = node.As<glsl::FunctionDeclaration>();
+    if (function != nullptr && function->body != nullptr && depth > 1) nested = true;
+    return !nested;
+  });
+  return nested;
+}
+
 class MainWrapperRule final : public rule::Rule {
  public:
   const rule::RuleInfo& Info() const override {
@@ -129,6 +143,7 @@ class MainWrapperRule final : public rule::Rule {
     if (context.Settings().stage != rule::ShaderStage::kFragment) return;
     const rule::CodeInterface code = rule::ReadCodeInterface(context.Tree(), context.Model());
     if (code.defined_functions.contains("main")) return;  // already has one (or ported)
+    if (NestedFunctionDefinition(context.Tree())) return;
     const rule::EntryPoint* entry = harness::DefinedEntryPoint(*dialect, code);
     SourceRange where;
     if (entry != nullptr) {

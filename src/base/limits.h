@@ -9,10 +9,16 @@ namespace shaderport::limits {
 inline constexpr size_t kMaxFileBytes = 8u << 20;        // 8 MiB per input file
 inline constexpr size_t kMaxTokens = 2'000'000;          // lexed tokens per file
 inline constexpr size_t kMaxExpandedTokens = 4'000'000;  // tokens after macro expansion
-inline constexpr uint32_t kMaxMacroDepth = 200;          // nested macro expansions
-inline constexpr uint32_t kMaxConditionalDepth = 200;    // nested #if groups
-inline constexpr uint32_t kMaxSyntaxDepth = 256;         // nested expressions/statements
-inline constexpr size_t kMaxDiagnosticsPerFile = 1000;   // further ones are dropped with a note
+// Preprocessed tokens of one shader (Common code included) that glslang is given: its
+// memory grows with them (about 1 GiB at 2,000,000), and every command runs under 2 GiB.
+inline constexpr size_t kMaxCompiledTokens = 1'000'000;
+// Syntax-tree depth given to glslang's SPIR-V generator, which recurses once per level (a
+// chain of 400,000 terms overflowed its 256 MiB stack). Browsers stop at 256 levels.
+inline constexpr uint32_t kMaxSpirvTreeDepth = 10'000;
+inline constexpr uint32_t kMaxMacroDepth = 200;         // nested macro expansions
+inline constexpr uint32_t kMaxConditionalDepth = 200;   // nested #if groups
+inline constexpr uint32_t kMaxSyntaxDepth = 256;        // nested expressions/statements
+inline constexpr size_t kMaxDiagnosticsPerFile = 1000;  // further ones are dropped with a note
 // Files read besides inputs (docs/limits.md, "Other files"): larger ones are refused
 // before a byte is read.
 inline constexpr size_t kMaxReportBytes = 64u << 20;      // a --baseline or a report to merge
@@ -22,5 +28,8 @@ inline constexpr size_t kMaxConfigBytes = 1u << 20;       // a .shaderport.toml 
 // A render's text goes through spirv-opt only while its entry point, with every call
 // inlined, stays below this many SPIR-V instructions (past it, tens of seconds).
 inline constexpr uint64_t kMaxInlinedInstructions = 40'000;
+// SPIRV-Cross (port --emit hlsl|msl|essl-roundtrip) walks a callee's body again at every
+// call: the same count, with more room, as each visit is cheap (reflect: the limit above).
+inline constexpr uint64_t kMaxCrossCompiledInstructions = 4'000'000;
 
 }  // namespace shaderport::limits

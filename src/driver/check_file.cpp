@@ -1,12 +1,11 @@
 #include "driver/check_file.h"
 
-#include <algorithm>
-#include <array>
 #include <chrono>
 #include <string_view>
 #include <utility>
 
 #include "base/limits.h"
+#include "diag/limit_breach.h"
 #include "driver/dialect.h"
 #include "driver/file_decision.h"
 #include "driver/front_end.h"
@@ -23,14 +22,6 @@
 
 namespace shaderport::driver {
 namespace {
-
-// Breaches of our own limits: glslang is not run on such input.
-bool IsLimitBreach(std::string_view rule_id) {
-  static constexpr std::array<std::string_view, 5> kLimitRules = {
-      "lex/too-many-tokens", "syntax/nesting-too-deep", "preprocessor/macro-too-deep",
-      "preprocessor/expansion-too-large", "preprocessor/conditional-too-deep"};
-  return std::find(kLimitRules.begin(), kLimitRules.end(), rule_id) != kLimitRules.end();
-}
 
 // What the user said about the file: flags over its .shaderport.toml entry, and a
 // project's own tab and inputs.
@@ -106,8 +97,7 @@ DecidedFile DecideAndAnalyze(const SourceFile& file, glsl::LexedFile lexed, cons
   result.front = RunFrontEnd(file, std::move(lexed), common, decision.kind, sources,
                              FrontEndOptionsFor(decision));
   FrontEndResult& front = result.front;
-  result.limit_breached = std::any_of(front.diagnostics.begin(), front.diagnostics.end(),
-                                      [](const Diagnostic& d) { return IsLimitBreach(d.rule_id); });
+  result.limit_breached = HasLimitBreach(front.diagnostics);
   if (!result.limit_breached && front.model &&
       DecideFromTree(decision, front.lexed, front.parsed.tree, *front.model, given)) {
     glsl::LexedFile tokens = std::move(front.lexed);
@@ -244,9 +234,7 @@ FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceMana
   // Our own front end ran first: it enforces the limits (glslang has none against,
   // e.g., 100,000 nested parentheses); a file that hit one is not given to glslang.
   if (decided.limit_breached) {
-    for (const Diagnostic& diagnostic : front.diagnostics) {
-      if (IsLimitBreach(diagnostic.rule_id)) report.diagnostics.push_back(diagnostic);
-    }
+    report.diagnostics = LimitBreaches(front.diagnostics);
     return report;
   }
   WebglCheckSettings webgl;

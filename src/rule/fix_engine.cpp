@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "diag/limit_breach.h"
 #include "glsl/syntax/parser.h"
 #include "rule/fix_selection.h"
 
@@ -80,6 +81,27 @@ std::string StopMessage(int max_rounds, int cycle_rounds,
          " rounds: " + JoinedRuleIds(std::move(ids));
 }
 
+// The text `result` holds breached a resource limit: no rule runs on it. The input
+// itself is handed back unchanged; a text the fixes made is not to be used.
+void StopAtLimit(const AnalyzedShader& analysis, FileId id,
+                 const std::vector<std::vector<std::string>>& rules_by_round,
+                 FixEngineResult& result) {
+  result.limit_breached = true;
+  for (const Diagnostic& d : LimitBreaches(analysis.diagnostics)) {
+    result.front_end.push_back(MapToOriginal(d, result.map, id));
+  }
+  if (rules_by_round.empty()) return;
+  std::vector<std::string> ids;
+  for (const auto& round : rules_by_round) ids.insert(ids.end(), round.begin(), round.end());
+  result.converged = false;
+  Diagnostic stop;
+  stop.rule_id = "internal/error";
+  stop.range = {id, 0, 0};
+  stop.message = "fixes made the text exceed a resource limit (docs/limits.md): " +
+                 JoinedRuleIds(std::move(ids));
+  result.remaining.push_back(std::move(stop));
+}
+
 }  // namespace
 
 AnalyzedShader AnalyzePlain(const SourceFile& file, int version, ShaderStage stage,
@@ -146,6 +168,10 @@ FixEngineResult RunFixEngine(const SourceFile& original, const FixEngineOptions&
     // The edited text keeps the original's id: its ranges are mapped back below.
     const SourceFile current(id, original.Name(), result.text);
     const AnalyzedShader analysis = analyze(current);
+    if (HasLimitBreach(analysis.diagnostics)) {
+      StopAtLimit(analysis, id, rules_by_round, result);
+      return result;
+    }
     DiagnosticList found = RunRules(current, analysis, options);
 
     FixSelectionOptions selection_options;

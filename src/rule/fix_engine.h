@@ -2,7 +2,8 @@
 // repeat on the new text until no rule wants a change. Overlapping fixes wait
 // for a later round, so deep nesting can take many rounds; the engine stops
 // (internal/error naming the rules) when a text comes back (rules undoing each
-// other) or after `max_rounds`. Everything reported is located in the original text.
+// other) or after `max_rounds`, and at once on a text past a resource limit.
+// Everything reported is located in the original text.
 //
 // The engine does not know how to analyse a dialect: the caller passes an
 // Analyzer (the driver's front end sees ShaderToy's uniforms, Common code...).
@@ -62,6 +63,10 @@ struct FixEngineResult {
   DiagnosticList front_end;  // front-end findings on `text`, located in the original
   int rounds = 0;            // rounds that changed the text
   bool converged = true;     // false: rules cycled or still wanted edits after max_rounds
+  // The text reached a resource limit (docs/limits.md): no rule ran on it, `front_end`
+  // holds the breach. In the first round `text` is the input unchanged; later (the
+  // fixes made the text too large) `converged` is false as well.
+  bool limit_breached = false;
 };
 
 FixEngineResult RunFixEngine(const SourceFile& original, const FixEngineOptions& options);

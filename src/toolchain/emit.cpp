@@ -4,7 +4,9 @@
 #include <utility>
 
 #include "base/large_stack.h"
+#include "base/limits.h"
 #include "toolchain/cross_compile.h"
+#include "toolchain/inlined_size.h"
 #include "toolchain/reflect.h"
 #include "toolchain/spirv_compile.h"
 #include "toolchain/spirv_tools.h"
@@ -55,6 +57,17 @@ std::string AsBytes(const SpirvWords& words) {
   return bytes;
 }
 
+// The largest entry point, counted with every call inlined, SPIRV-Cross is given for
+// `kind` (UINT64_MAX: SPIRV-Cross is not used). Its reflection walks are far slower per
+// visit than its code generation (100,000 instructions: 52 s against 0.1 s).
+uint64_t CrossCompileLimit(EmitKind kind) {
+  if (kind == EmitKind::kReflect) return limits::kMaxInlinedInstructions;
+  if (kind == EmitKind::kHlsl || kind == EmitKind::kMsl || kind == EmitKind::kEsslRoundtrip) {
+    return limits::kMaxCrossCompiledInstructions;
+  }
+  return UINT64_MAX;
+}
+
 void EmitFromModule(const SourceFile& file, const EmitOptions& options, Stage stage,
                     const SpirvWords& module, const SpirvWords& unoptimized, EmitResult& result) {
   CrossOptions cross;
@@ -97,6 +110,40 @@ void EmitFromModule(const SourceFile& file, const EmitOptions& options, Stage st
   }
 }
 
+// spirv-opt's -O and -Os passes inline every call first, and SPIRV-Cross walks a callee's
+// body again at every call: functions that each call the next twice grow exponentially
+// (1.2 KB of GLSL kept both busy for minutes). The size with every call inlined is
+// counted from the call graph. Past spirv-opt's limit the module is not optimised (a
+// warning, `optimise` becomes false); past SPIRV-Cross's there is no output (an error,
+// false is returned).
+bool WithinInliningLimits(const SourceFile& file, const SpirvWords& words, EmitKind kind,
+                          bool& optimise, EmitResult& result) {
+  const uint64_t cross_limit = CrossCompileLimit(kind);
+  if (!optimise && cross_limit == UINT64_MAX) return true;
+  const uint64_t inlined = InlinedInstructionCount(words);
+  const auto report = [&](Severity severity, uint64_t limit, const std::string& outcome) {
+    const std::string count = inlined == UINT64_MAX ? "more than 2^64" : std::to_string(inlined);
+    result.diagnostics.push_back({severity,
+                                  "spirv/inlining-too-large",
+                                  {file.Id(), 0, 0},
+                                  outcome + ": with every call inlined the entry point has " +
+                                      count + " SPIR-V instructions, more than the " +
+                                      std::to_string(limit) + " allowed (docs/limits.md)",
+                                  {},
+                                  {}});
+  };
+  if (inlined > cross_limit) {
+    report(Severity::kError, cross_limit, "SPIRV-Cross was not run");
+    return false;
+  }
+  if (optimise && inlined > limits::kMaxInlinedInstructions) {
+    report(Severity::kWarning, limits::kMaxInlinedInstructions,
+           "not optimised (the unoptimised module is used)");
+    optimise = false;
+  }
+  return true;
+}
+
 void EmitSpirvKinds(const SourceFile& file, Stage stage, const EmitOptions& options,
                     EmitResult& result) {
   SpirvCompilation compiled = CompileToSpirv(file, stage);
@@ -108,7 +155,9 @@ void EmitSpirvKinds(const SourceFile& file, Stage stage, const EmitOptions& opti
     return;
   }
   SpirvWords optimized;
-  if (options.optimize) {
+  bool optimise = options.optimize.has_value();
+  if (!WithinInliningLimits(file, compiled.words, options.kind, optimise, result)) return;
+  if (optimise) {
     OptimizeOutcome outcome =
         OptimizeSpirv(compiled.words, *OptimizeLevelFromName(*options.optimize));
     if (outcome.words.empty()) {
@@ -124,7 +173,7 @@ void EmitSpirvKinds(const SourceFile& file, Stage stage, const EmitOptions& opti
     result.words_after = optimized.size();
   }
   // Unoptimised SPIR-V cross-compiles to readable code; --opt asks for the optimised one.
-  const SpirvWords& module = options.optimize ? optimized : compiled.words;
+  const SpirvWords& module = optimise ? optimized : compiled.words;
   EmitFromModule(file, options, stage, module, compiled.words, result);
   if (HasErrors(result.diagnostics)) result.output.clear();
 }

@@ -8,6 +8,7 @@
 #include "base/limits.h"
 #include "glsl/lex/lexer.h"
 #include "validate/glslang_rules.h"
+#include "validate/line_directives.h"
 #include "validate/user_code_scan.h"
 
 namespace shaderport::validate {
@@ -302,8 +303,12 @@ ValidationResult ValidateWithGlslang(const ValidationRequest& request) {
   ValidationResult result;
   Mapper mapper(request);
   std::vector<GlslangPart> parts;
+  std::vector<std::string> renumbered(request.parts.size());  // user parts without #line
   for (size_t i = 0; i < request.parts.size(); ++i) {
-    parts.push_back({InternalPartName(i), request.parts[i].text});
+    std::string_view text = request.parts[i].text;
+    if (request.parts[i].kind == PartKind::kUser) renumbered[i] = WithoutLineDirectives(text);
+    if (!renumbered[i].empty()) text = renumbered[i];
+    parts.push_back({InternalPartName(i), text});
   }
   const GlslangRun run =
       mapper.UserCodeHasUnbalancedMacro()

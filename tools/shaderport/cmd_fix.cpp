@@ -49,6 +49,9 @@ int WriteOrReport(const std::filesystem::path& path, const std::string& text) {
 // mark the input began with is written back: fix changes only what rules fix.
 int Emit(const FixArgs& args, const driver::PortResult& result, const std::filesystem::path& path) {
   if (result.read_failed) return kExitFindings;
+  // Fixes that did not settle are not written anywhere, not even to standard output:
+  // a format-on-save editor keeps its text (the findings name the rules).
+  if (!result.converged) return kExitInternal;
   if (args.diff) {
     std::fputs(driver::UnifiedDiff(result.file->Text(), result.text, path.string()).c_str(),
                stdout);
@@ -69,6 +72,7 @@ int Emit(const FixArgs& args, const driver::PortResult& result, const std::files
 int EmitDocument(const FixArgs& args, const driver::project::FixedDocument& fixed,
                  const std::filesystem::path& path) {
   if (fixed.read_failed) return kExitFindings;
+  if (!driver::AllConverged(fixed.passes)) return kExitInternal;
   driver::PortResult whole;
   whole.file = fixed.document;
   whole.text = fixed.text;

@@ -113,7 +113,7 @@ int RunPort(const PortArgs& args) {
   std::vector<driver::EmittedOutput> emitted(inputs->size());
   driver::ParallelFor(inputs->size(), args.jobs, [&](size_t i) {
     results[i] = driver::PortFile((*inputs)[i].path, OptionsFor(options, (*inputs)[i]), sources);
-    if (*emit_kind != toolchain::EmitKind::kEssl && !results[i].read_failed) {
+    if (*emit_kind != toolchain::EmitKind::kEssl && results[i].HasOutput()) {
       emitted[i] = driver::EmitPorted(results[i], emit_options, sources);
     }
     const std::lock_guard lock(progress_mutex);
@@ -131,7 +131,7 @@ int RunPort(const PortArgs& args) {
   for (size_t i = 0; i < results.size(); ++i) {
     const driver::PortResult& result = results[i];
     input_paths.push_back((*inputs)[i].path);
-    if (result.read_failed) continue;
+    if (!result.HasOutput()) continue;  // its findings say why
     std::string extension = result.output_stage == driver::Stage::kVertex ? ".vert" : ".frag";
     if (*emit_kind == toolchain::EmitKind::kEssl) {
       outputs[i] = result.text;
@@ -156,7 +156,7 @@ int RunPort(const PortArgs& args) {
   const std::string clash = args.out_dir.empty() ? "" : driver::OutputClash(input_paths, targets);
   if (!clash.empty()) return UsageError(clash + "; nothing was written");
 
-  int exit_code = config_exit;
+  int exit_code = driver::AllConverged(results) ? config_exit : kExitInternal;
   for (size_t i = 0; i < results.size(); ++i) {
     if (!outputs[i]) continue;
     const std::string& output = *outputs[i];

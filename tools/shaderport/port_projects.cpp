@@ -97,6 +97,11 @@ int PortProjectInputs(const std::vector<driver::InputFile>& inputs,
       documents.push_back(
           driver::project::PortSinglePass(input.path, std::move(text), options, sources));
     }
+    // A pass whose fixes did not settle: nothing of its document is written (exit 3).
+    if (!documents.back().Findings().converged) {
+      exit_code = kExitInternal;
+      continue;
+    }
     const auto outputs =
         targets.emit == ProjectEmit::kHtml     ? driver::project::PageOutputs(documents.back())
         : targets.emit == ProjectEmit::kFolder ? driver::project::FolderOutputs(documents.back())
@@ -165,7 +170,10 @@ int PortProjectInputs(const std::vector<driver::InputFile>& inputs,
   }
   std::vector<driver::PortResult> findings;
   for (const auto& document : documents) findings.push_back(document.Findings());
-  for (const ProgramInput& program : programs) findings.push_back(program.result);
+  for (const ProgramInput& program : programs) {
+    findings.push_back(program.result);
+    if (!program.result.converged) exit_code = kExitInternal;
+  }
   if (!driver::HasFindings(findings)) return exit_code;
   const bool color = ::isatty(STDERR_FILENO) != 0 && std::getenv("NO_COLOR") == nullptr;
   std::fputs(driver::FormatPortFindings(findings, sources, color).c_str(), stderr);

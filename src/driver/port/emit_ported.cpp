@@ -1,6 +1,8 @@
 #include "driver/port/emit_ported.h"
 
+#include "base/limits.h"
 #include "driver/render_check/browser_render_text.h"
+#include "driver/tree_depth.h"
 
 namespace shaderport::driver {
 namespace {
@@ -19,6 +21,18 @@ SourceRange ToUserRange(const SourceRange& range, const SourceMap& map, FileId u
 EmittedOutput EmitPorted(PortResult& result, const toolchain::EmitOptions& options,
                          SourceManager& sources) {
   EmittedOutput emitted;
+  // Only the emit legs that compile to SPIR-V recurse over the tree.
+  if (options.kind != toolchain::EmitKind::kEssl) {
+    const uint32_t depth = SyntaxTreeDepth(result.text);
+    if (depth > limits::kMaxSpirvTreeDepth) {
+      result.diagnostics.push_back(MakeDiagnostic(
+          Severity::kError, "spirv/tree-too-deep", {result.file->Id(), 0, 0},
+          "not compiled to SPIR-V: the syntax tree is " + std::to_string(depth) +
+              " levels deep, more than the " + std::to_string(limits::kMaxSpirvTreeDepth) +
+              " allowed (docs/limits.md); split long expressions into statements"));
+      return emitted;
+    }
+  }
   const toolchain::Stage stage = result.output_stage == Stage::kVertex
                                      ? toolchain::Stage::kVertex
                                      : toolchain::Stage::kFragment;

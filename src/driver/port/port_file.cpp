@@ -78,6 +78,9 @@ class Porter {
     result.decision = decision_;
     result.output_stage = kind_.stage;
     rule::FixEngineResult engine = RunEngine({});
+    // Text past a resource limit, or fixes that never settled: glslang is not run on
+    // it, and the caller writes nothing.
+    if (engine.limit_breached || !engine.converged) return Unfinished(std::move(engine), result);
     DiagnosticList validation;
     if (options_.validate && !engine.fixed.empty()) {
       const size_t baseline = ErrorCount(Validate(file_.Text(), /*as_output=*/false));
@@ -89,6 +92,7 @@ class Porter {
     } else if (options_.validate) {
       validation = Validate(engine.text, IsPort());
     }
+    result.converged = engine.converged;
     result.text = std::move(engine.text);
     result.map = std::move(engine.map);
     result.rounds = engine.rounds;
@@ -99,15 +103,30 @@ class Porter {
     for (const Diagnostic& d : extra) {
       result.diagnostics.push_back(rule::MapToOriginal(d, result.map, file_.Id()));
     }
-    std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(),
-                     [](const Diagnostic& a, const Diagnostic& b) {
-                       return std::tie(a.range.file, a.range.begin) <
-                              std::tie(b.range.file, b.range.begin);
-                     });
+    SortByPosition(result.diagnostics);
     return result;
   }
 
  private:
+  static void SortByPosition(DiagnosticList& diagnostics) {
+    std::stable_sort(
+        diagnostics.begin(), diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {
+          return std::tie(a.range.file, a.range.begin) < std::tie(b.range.file, b.range.begin);
+        });
+  }
+
+  // The input as it was, with the breach or the rules that did not settle.
+  PortResult Unfinished(rule::FixEngineResult engine, PortResult& result) {
+    result.text = std::string(file_.Text());
+    result.map = SourceMap::Identity(static_cast<uint32_t>(result.text.size()));
+    result.limit_breached = engine.limit_breached;
+    result.converged = engine.converged;
+    result.diagnostics = std::move(engine.remaining);
+    for (Diagnostic& d : engine.front_end) result.diagnostics.push_back(std::move(d));
+    SortByPosition(result.diagnostics);
+    return result;
+  }
+
   bool IsPort() const { return options_.mode == rule::PortMode::kPort; }
 
   rule::FixEngineResult RunEngine(std::function<bool(const Diagnostic&)> allow) {

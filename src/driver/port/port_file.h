@@ -46,8 +46,16 @@ struct PortResult {
   bool validated = false;        // glslang accepted the result
   bool narrowed = false;         // some fixes were dropped because they broke validation
   bool byte_order_mark = false;  // the input began with one (not in `file` or `text`)
+  // The input breached a resource limit (docs/limits.md): `text` is the input, nothing
+  // was fixed or validated, and a port has no output.
+  bool limit_breached = false;
+  // False when the fixes did not settle (rules undoing each other, or still wanting
+  // edits after the engine's last round): `text` is the input, and nothing is written.
+  bool converged = true;
 
   bool Changed() const { return file != nullptr && text != file->Text(); }
+  // A result that may be written or emitted: read, within the limits, settled.
+  bool HasOutput() const { return !read_failed && !limit_breached && converged; }
 };
 
 // `file` (and `common`, ShaderToy's Common code) must live in `sources`.

@@ -1,5 +1,7 @@
 #include "driver/port/port_report.h"
 
+#include <algorithm>
+
 #include "report/text_format.h"
 
 namespace shaderport::driver {
@@ -11,6 +13,11 @@ bool HasFindings(std::span<const PortResult> results) {
     }
   }
   return false;
+}
+
+bool AllConverged(std::span<const PortResult> results) {
+  return std::all_of(results.begin(), results.end(),
+                     [](const PortResult& result) { return result.converged; });
 }
 
 bool FailsAt(std::span<const PortResult> results, Severity fail_on) {

@@ -14,6 +14,10 @@ bool HasFindings(std::span<const PortResult> results);
 // True when a finding at or above `fail_on` remains (`fix`/`port --fail-on`).
 bool FailsAt(std::span<const PortResult> results, Severity fail_on);
 
+// False when the fixes of one of `results` did not settle (see PortResult::converged):
+// nothing of it was written, and the run exits 3.
+bool AllConverged(std::span<const PortResult> results);
+
 // The remaining findings of every result, as `check` prints them.
 std::string FormatPortFindings(std::span<const PortResult> results, const SourceManager& sources,
                                bool color);

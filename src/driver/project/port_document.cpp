@@ -11,7 +11,7 @@ namespace {
 
 // A ported stage's text, or why there is none.
 std::string StageText(const PortResult& result, std::string& errors) {
-  if (!result.read_failed && !result.text.empty()) return result.text;
+  if (result.HasOutput() && !result.text.empty()) return result.text;
   for (const Diagnostic& d : result.diagnostics) {
     if (d.severity == Severity::kError) errors += d.message + " [" + d.rule_id + "]\n";
   }
@@ -77,6 +77,8 @@ PortResult PortedDocument::Findings() const {
   for (const PortedProject& project : ported) {
     for (const Diagnostic& diagnostic : project.diagnostics)
       findings.diagnostics.push_back(diagnostic);
+    for (const PortedPass& pass : project.passes)
+      findings.converged = findings.converged && pass.result.converged;
   }
   return findings;
 }
@@ -163,6 +165,7 @@ std::vector<DocumentOutput> ShaderOutputs(const PortedDocument& document) {
   for (size_t i = 0; i < document.ported.size(); ++i) {
     const std::filesystem::path folder = ProjectFolder(document, i);
     for (const PortedPass& pass : document.ported[i].passes) {
+      if (!pass.result.HasOutput()) continue;  // its findings say why
       std::filesystem::path file = FolderFileName(*pass.pass);
       file.replace_extension(".frag");
       outputs.push_back({folder / file, pass.result.text});

@@ -3,6 +3,7 @@
 #include "base/large_stack.h"
 #include "base/limits.h"
 #include "diag/diagnostic.h"
+#include "driver/tree_depth.h"
 #include "source/source_manager.h"
 #include "toolchain/cross_compile.h"
 #include "toolchain/inlined_size.h"
@@ -13,6 +14,8 @@ namespace shaderport::driver {
 
 std::optional<std::string> OptimizeAsBrowser(std::string_view text) {
   std::optional<std::string> optimized;
+  // glslang's SPIR-V generator recurses once per level of the tree.
+  if (SyntaxTreeDepth(text) > limits::kMaxSpirvTreeDepth) return optimized;
   // glslang and SPIRV-Cross recurse over the tree: deep expressions need the large stack.
   RunOnLongLivedLargeStack([&] {
     SourceManager local;

@@ -1,7 +1,9 @@
 #include "driver/render_check/render_file.h"
 
+#include "diag/limit_breach.h"
 #include "driver/dialect.h"
 #include "driver/file_decision.h"
+#include "driver/front_end.h"
 #include "driver/port/port_file.h"
 #include "driver/read_input.h"
 #include "driver/render_check/browser_optimizer.h"
@@ -152,12 +154,22 @@ RenderFileResult RenderFile(const std::filesystem::path& path, SourceManager& so
   return result;
 }
 
+DiagnosticList RenderLimitBreaches(const SourceFile& file, const DetectedKind& kind,
+                                   const SourceFile* common, SourceManager& sources) {
+  const bool shadertoy = kind.dialect == Dialect::kShaderToy;
+  return LimitBreaches(RunFrontEnd(file, shadertoy ? common : nullptr, kind, sources).diagnostics);
+}
+
 void RenderSource(const SourceFile& file, const DetectedKind& kind,
                   const RenderFileOptions& options, RenderFileResult& result) {
   result.file = &file;
   result.dialect = std::string(DialectName(kind.dialect));
   result.stage = std::string(StageName(kind.stage));
   const SourceRange anchor{file.Id(), 0, 0};
+  SourceManager own_sources;
+  result.diagnostics = RenderLimitBreaches(
+      file, kind, options.common, options.sources != nullptr ? *options.sources : own_sources);
+  if (!result.diagnostics.empty()) return;
 
   PreparedShader shader;
   shader.anchor = anchor;

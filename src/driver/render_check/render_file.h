@@ -55,6 +55,11 @@ struct RenderFileResult {
 RenderFileResult RenderFile(const std::filesystem::path& path, SourceManager& sources,
                             const RenderFileOptions& options);
 
+// The resource-limit breaches of `file` (with `common`, ShaderToy's Common code) as the
+// front end finds them: text past a limit is not drawn, as `check` does not compile it.
+DiagnosticList RenderLimitBreaches(const SourceFile& file, const DetectedKind& kind,
+                                   const SourceFile* common, SourceManager& sources);
+
 // Renders a file already read, whose dialect and stage the caller has decided
 // (the check pipeline).
 void RenderSource(const SourceFile& file, const DetectedKind& kind,

@@ -149,10 +149,15 @@ RenderFileResult RenderShaderToyJson(std::string_view name, std::string_view jso
     return result;
   }
   // Compose one pass: header, Common, code, epilogue, remembering the line map.
+  DiagnosticList breaches;  // a pass past a resource limit: nothing is drawn
   auto compose = [&](const nlohmann::json& pass, validate::PassType type,
                      const PassInputs& inputs) {
     const SourceFile& code = sources.Add(std::string(name) + "#" + StringOr(pass, "name", "pass"),
                                          pass["code"].get<std::string>());
+    DetectedKind kind;
+    kind.dialect = Dialect::kShaderToy;
+    for (Diagnostic& d : RenderLimitBreaches(code, kind, common, sources))
+      breaches.push_back(std::move(d));
     auto composed = std::make_shared<ComposedText>();
     composed->Append(validate::ShaderToyHeader(type, inputs.types), nullptr);
     if (common != nullptr) composed->Append(common->Text(), common);
@@ -183,6 +188,10 @@ RenderFileResult RenderShaderToyJson(std::string_view name, std::string_view jso
     pass_options.base.inputs.channels[c].unbound = !image_inputs.fed[c];
   pass_options.channel_types = image_inputs.types;
   auto [composed, code] = compose(*image, validate::PassType::kImage, image_inputs);
+  if (!breaches.empty()) {
+    for (Diagnostic& d : breaches) result.diagnostics.push_back(std::move(d));
+    return result;
+  }
   PreparedShader prepared;
   prepared.fragment_text = composed->Text();
   prepared.main_sets_alpha = true;  // the Image pass

@@ -33,6 +33,9 @@ class PpDriver {
   void FlushText(std::span<const Token> text);
   std::vector<ExpToken> ToExpTokens(std::span<const Token> tokens);
   void AddLexDiagnostics(const LexedFile& lexed, size_t first_region);
+  // Past limits::kMaxCompiledTokens the text is not for glslang: one error at the first
+  // token over the limit.
+  void ReportOutputTooLarge();
 
   // directives.cpp: `line` starts with the '#' token.
   void Directive(std::span<const Token> line);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include "base/limits.h"
+#include "diag/limit_breach.h"
 #include "glsl/lex/macro_definitions.h"
 #include "glsl/lex/macro_expander.h"
 #include "glsl/lex/pp_driver.h"
@@ -121,6 +123,7 @@ void PpDriver::AddLexDiagnostics(const LexedFile& lexed, size_t first_region) {
 }
 
 void PpDriver::Finish(const SourceFile* last_file) {
+  ReportOutputTooLarge();
   PpToken eof;
   if (last_file) {
     const auto size = static_cast<uint32_t>(last_file->Text().size());
@@ -134,6 +137,19 @@ void PpDriver::Finish(const SourceFile* last_file) {
                      return a.range.file != b.range.file ? a.range.file < b.range.file
                                                          : a.range.begin < b.range.begin;
                    });
+}
+
+void PpDriver::ReportOutputTooLarge() {
+  const std::vector<PpToken>& tokens = state_.result.tokens;
+  // One breach is enough: the lexer's or the expander's own limit already says why.
+  if (tokens.size() <= limits::kMaxCompiledTokens || HasLimitBreach(state_.result.diagnostics)) {
+    return;
+  }
+  state_.Report(Severity::kError, "preprocessor/output-too-large",
+                tokens[limits::kMaxCompiledTokens].expansion,
+                "the preprocessed shader has " + std::to_string(tokens.size()) +
+                    " tokens; glslang is given at most " +
+                    std::to_string(limits::kMaxCompiledTokens));
 }
 
 PreprocessResult Preprocess(std::span<const SourceFile* const> files,

@@ -9,6 +9,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <filesystem>
 #include <string>
@@ -56,7 +57,7 @@ inline bool RunningAsRoot() { return ::geteuid() == 0; }
 
 inline BoundedRun RunBounded(const std::vector<std::string>& args,
                              const BoundedRunOptions& options) {
-  static int counter = 0;
+  static std::atomic<int> counter = 0;  // runs may be started from several threads
   const std::string stem =
       (std::filesystem::temp_directory_path() /
        ("shaderport-bounded-" + std::to_string(::getpid()) + "-" + std::to_string(counter++)))

@@ -137,5 +137,22 @@ TEST(PpExpansion, DeepIfExpressionIsBounded) {
   EXPECT_EQ(RuleIds(r.result), V{"preprocessor/invalid-if-expression"});
 }
 
+// Under the expansion limit, over what glslang is given: one macro used 2,100 times
+// (4,001,000 tokens took every command past 2 GiB inside glslang).
+TEST(PpExpansion, OutputOverTheCompiledLimitIsOneErrorAtTheFirstTokenPast) {
+  std::string body;
+  for (int i = 0; i < 250; ++i) body += " a +";
+  std::string text = "#define A" + body + "\nfloat x = ";
+  const size_t first_use = text.size();
+  for (int i = 0; i < 2100; ++i) text += "A ";
+  auto r = RunPp(text + "1.0;\n");
+  EXPECT_EQ(RuleIds(r.result), V{"preprocessor/output-too-large"});
+  ASSERT_GT(r.result.tokens.size(), limits::kMaxCompiledTokens);
+  EXPECT_GT(r.result.diagnostics.front().range.begin, first_use);
+  // Just under it: nothing to say.
+  auto fits = RunPp("#define A" + body + "\nfloat x = A A 1.0;\n");
+  EXPECT_TRUE(fits.result.diagnostics.empty());
+}
+
 }  // namespace
 }  // namespace shaderport::glsl

@@ -186,5 +186,32 @@ TEST(FixEngine, BrokenInputDoesNotCrash) {
   }
 }
 
+// 300 nested parentheses: past the parser's limit no rule runs and the text is kept.
+TEST(FixEngine, TextPastALimitIsNotRewritten) {
+  const RenameRule rename("test/rename", "foo", "bar");
+  const std::string text =
+      "float foo;\nfloat y = " + std::string(300, '(') + "1.0" + std::string(300, ')') + ";\n";
+  const auto result = RunEngine(text, {&rename});
+  EXPECT_TRUE(result.limit_breached);
+  EXPECT_TRUE(result.converged);
+  EXPECT_EQ(result.text, text);
+  EXPECT_TRUE(result.fixed.empty());
+  ASSERT_EQ(result.front_end.size(), 1u);
+  EXPECT_EQ(result.front_end[0].rule_id, "syntax/nesting-too-deep");
+}
+
+// A fix that nests the text past the limit: the engine stops, unconverged, naming it.
+TEST(FixEngine, FixesThatPushTheTextPastALimitDoNotConverge) {
+  const RenameRule deepen("test/deepen", "foo",
+                          std::string(300, '(') + "1.0" + std::string(300, ')'));
+  const auto result = RunEngine("float y = foo;\n", {&deepen});
+  EXPECT_TRUE(result.limit_breached);
+  EXPECT_FALSE(result.converged);
+  const Diagnostic* internal = InternalError(result);
+  ASSERT_NE(internal, nullptr);
+  EXPECT_EQ(internal->message,
+            "fixes made the text exceed a resource limit (docs/limits.md): test/deepen");
+}
+
 }  // namespace
 }  // namespace shaderport::rule

@@ -182,5 +182,22 @@ TEST(PortabilityRules, LongExpressionChainsDoNotOverflow) {
   }
 }
 
+// One '}' missing: the parser ends f's body at the end of the file, on mainImage's
+// '}'. A return put before it landed in mainImage, and `fix -i` wrote 100 of them.
+TEST(PortabilityRules, MissingReturnLeavesABodyThatIsNotClosed) {
+  const std::string text =
+      "float f(float x) {\n  if (x > 0.0) {\n    return x;\n}\n"
+      "void mainImage(out vec4 fragColor, in vec2 fragCoord) {\n"
+      "  fragColor = vec4(f(fragCoord.x));\n}\n";
+  const rule::Rule* r = rules::FindRule(kMissingReturn);
+  ASSERT_NE(r, nullptr);
+  EXPECT_TRUE(
+      typing_test::RunOneRule(*r, text, Kind::kShaderToy, rule::ShaderStage::kFragment).empty());
+  const rule::FixEngineResult fixed =
+      FixPortability(text, Kind::kShaderToy, rule::ShaderStage::kFragment);
+  EXPECT_TRUE(fixed.converged);
+  EXPECT_EQ(fixed.text, text);
+}
+
 }  // namespace
 }  // namespace shaderport::portability_test

@@ -123,5 +123,41 @@ TEST(EmitDiagnostics, HostileInputNeverCrashes) {
   }
 }
 
+// f_i calls f_{i-1} twice, 30 deep: 2^30 copies once inlined. spirv-opt and SPIRV-Cross
+// ran for minutes; now the optimiser is skipped and SPIRV-Cross refused, at once.
+std::string DoublingCalls(int depth) {
+  std::string text =
+      "#version 300 es\nprecision highp float;\nout vec4 color;\n"
+      "float f0(float x) { return sin(x) * 1.5 + x; }\n";
+  for (int i = 1; i <= depth; ++i) {
+    const std::string f = "f" + std::to_string(i), g = "f" + std::to_string(i - 1);
+    text += "float " + f + "(float x) { return " + g + "(x) + " + g + "(x * 0.5); }\n";
+  }
+  return text + "void main() { color = vec4(f" + std::to_string(depth) + "(1.0)); }\n";
+}
+
+TEST(EmitDiagnostics, ExponentialInliningSkipsTheOptimiserAndRefusesSpirvCross) {
+  const std::string text = DoublingCalls(30);
+  EmitOptions spirv = OptionsFor(EmitKind::kSpirv);
+  spirv.optimize = "O";
+  const EmitResult optimised = EmitText(text, Stage::kFragment, spirv);
+  EXPECT_FALSE(optimised.output.empty());
+  ASSERT_EQ(optimised.diagnostics.size(), 1u) << RuleIds(optimised.diagnostics);
+  EXPECT_EQ(optimised.diagnostics[0].rule_id, "spirv/inlining-too-large");
+  EXPECT_EQ(optimised.diagnostics[0].severity, Severity::kWarning);
+  EXPECT_EQ(optimised.words_after, optimised.words_before);
+  for (const EmitKind kind :
+       {EmitKind::kHlsl, EmitKind::kMsl, EmitKind::kEsslRoundtrip, EmitKind::kReflect}) {
+    const EmitResult crossed = EmitText(text, Stage::kFragment, OptionsFor(kind));
+    EXPECT_TRUE(crossed.output.empty()) << EmitKindName(kind);
+    ASSERT_EQ(crossed.diagnostics.size(), 1u) << RuleIds(crossed.diagnostics);
+    EXPECT_EQ(crossed.diagnostics[0].rule_id, "spirv/inlining-too-large");
+    EXPECT_EQ(crossed.diagnostics[0].severity, Severity::kError);
+  }
+  // A shallow chain is optimised and cross-compiled as before.
+  const EmitResult shallow = EmitText(DoublingCalls(4), Stage::kFragment, spirv);
+  EXPECT_TRUE(shallow.diagnostics.empty()) << RuleIds(shallow.diagnostics);
+}
+
 }  // namespace
 }  // namespace shaderport::toolchain

@@ -47,6 +47,22 @@ TEST(GlslangValidatorTest, ErrorInPlainWebGl2FileLandsOnLineAndColumn) {
   EXPECT_EQ(result.diagnostics[1].range.Size(), std::string("undefinedThing").size());
 }
 
+// glslang numbers lines as #line says: `#line 4294967295` made the next line -1 and put
+// the finding on 1:1 ("p1:-1"), `#line 10` two lines too far. Findings are located by
+// the file's own lines.
+TEST(GlslangValidatorTest, LineDirectivesDoNotMoveFindings) {
+  for (const std::string directive : {"#line 4294967295", "#line 10", "  #  line 7 3"}) {
+    SourceManager sources;
+    const auto result = ValidateText(sources, "#version 300 es\n" + directive +
+                                                  "\nprecision highp float;\nout vec4 o;\n"
+                                                  "void main() { o = vec4(undefinedThing); }\n");
+    ASSERT_FALSE(result.diagnostics.empty()) << directive;
+    EXPECT_EQ(result.diagnostics[0].rule_id, "glslang/undeclared-identifier") << directive;
+    EXPECT_EQ(Where(sources, result.diagnostics[0].range), (LineColumn{5, 24})) << directive;
+    EXPECT_EQ(result.diagnostics[0].message.find("p1:"), std::string::npos);
+  }
+}
+
 TEST(GlslangValidatorTest, EveryErrorIsReportedNotOnlyTheFirst) {
   SourceManager sources;
   const auto result = ValidateText(sources,
