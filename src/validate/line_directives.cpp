@@ -18,6 +18,23 @@ size_t DirectiveEnd(std::string_view text, size_t begin) {
   return i;
 }
 
+// `#line N` or `#line N M` with decimal numbers (a trailing // comment allowed): only
+// such a directive is blanked. Any other one (a name, a macro, an expression) stays for
+// glslang to judge, as browsers reject some ("'x' : invalid file number").
+bool PlainLineArguments(std::string_view arguments) {
+  size_t i = 0;
+  int numbers = 0;
+  while (true) {
+    while (i < arguments.size() && IsBlank(arguments[i])) ++i;
+    if (i == arguments.size() || arguments.substr(i, 2) == "//") return numbers >= 1;
+    if (arguments[i] < '0' || arguments[i] > '9' || numbers == 2) return false;
+    while (i < arguments.size() && arguments[i] >= '0' && arguments[i] <= '9') ++i;
+    ++numbers;
+    if (i < arguments.size() && !IsBlank(arguments[i]) && arguments.substr(i, 2) != "//")
+      return false;
+  }
+}
+
 }  // namespace
 
 std::string WithoutLineDirectives(std::string_view text) {
@@ -35,7 +52,7 @@ std::string WithoutLineDirectives(std::string_view text) {
           text.substr(name, 4) == "line" && (name + 4 == text.size() || IsBlank(text[name + 4]) ||
                                              text[name + 4] == '\n' || text[name + 4] == '\r');
       end = DirectiveEnd(text, i);
-      if (is_line) {
+      if (is_line && PlainLineArguments(text.substr(name + 4, end - name - 4))) {
         if (out.empty()) out = std::string(text);
         for (size_t k = i; k < end; ++k) {
           if (out[k] != '\n' && out[k] != '\r') out[k] = ' ';
