@@ -44,6 +44,7 @@ const rule::Rule& WebglLoopFormRule();  // webgl/loop-form
 const rule::Rule& WebglLoopIndexWriteRule();  // webgl/loop-index-write
 const rule::Rule& WebglMissingMainRule();  // webgl/missing-main
 const rule::Rule& WebglRecursionRule();  // webgl/recursion
+const rule::Rule& WebglRepeatedLayoutRule();  // webgl/repeated-layout
 const rule::Rule& WebglReservedNameRule();  // webgl/reserved-name
 const rule::Rule& WebglStructInSignatureRule();  // webgl/struct-in-signature
 const rule::Rule& WebglStructNestingRule();  // webgl/struct-nesting

@@ -44,6 +44,7 @@ std::vector<const rule::Rule*> BuildRegistry() {
       &WebglLoopIndexWriteRule(),  // webgl/loop-index-write
       &WebglMissingMainRule(),  // webgl/missing-main
       &WebglRecursionRule(),  // webgl/recursion
+      &WebglRepeatedLayoutRule(),  // webgl/repeated-layout
       &WebglReservedNameRule(),  // webgl/reserved-name
       &WebglStructInSignatureRule(),  // webgl/struct-in-signature
       &WebglStructNestingRule(),  // webgl/struct-nesting

@@ -123,6 +123,20 @@ bool NestedFunctionDefinition(const glsl::SyntaxTree& tree) {
   return nested;
 }
 
+// `void main (` anywhere in the file's tokens. Where the parser's recovery from an error
+// put a main() added by an earlier round out of the tree's reach (after a stray '}'),
+// the tokens still show it; without this check it was added every round.
+bool MainInTokens(const rule::RuleContext& context) {
+  const auto& tokens = context.Lexed().tokens;
+  for (size_t i = 0; i + 2 < tokens.size(); ++i) {
+    if (tokens[i].text == "void" && tokens[i + 1].text == "main" &&
+        tokens[i + 2].punct == glsl::Punct::kLeftParen) {
+      return true;
+    }
+  }
+  return false;
+}
+
 class MainWrapperRule final : public rule::Rule {
  public:
   const rule::RuleInfo& Info() const override {
@@ -143,7 +157,7 @@ class MainWrapperRule final : public rule::Rule {
     if (context.Settings().stage != rule::ShaderStage::kFragment) return;
     const rule::CodeInterface code = rule::ReadCodeInterface(context.Tree(), context.Model());
     if (code.defined_functions.contains("main")) return;  // already has one (or ported)
-    if (NestedFunctionDefinition(context.Tree())) return;
+    if (NestedFunctionDefinition(context.Tree()) || MainInTokens(context)) return;
     const rule::EntryPoint* entry = harness::DefinedEntryPoint(*dialect, code);
     SourceRange where;
     if (entry != nullptr) {

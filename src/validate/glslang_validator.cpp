@@ -69,6 +69,17 @@ class Mapper {
     return false;
   }
 
+  bool UserMacroOpensABrace() {
+    for (size_t i = 0; i < request_.parts.size(); ++i) {
+      if (request_.parts[i].kind != PartKind::kUser) continue;
+      if (MacroBodyOpens(View(static_cast<int>(i)).Lexed(), glsl::Punct::kLeftBrace,
+                         glsl::Punct::kRightBrace)) {
+        return true;
+      }
+    }
+    return false;
+  }
+
   Diagnostic Map(const MappedMessage& mapped) {
     const GlslangMessage& message = mapped.message;
     Diagnostic diagnostic;
@@ -215,7 +226,9 @@ class Mapper {
           open += CountOpenConstructs(View(static_cast<int>(i)).Lexed());
         }
       }
-      unfinished_ = open.Any();
+      // A macro whose body opens a brace it does not close (a '}' lost from a
+      // multi-line #define) leaves the expanded code unclosed though the text is not.
+      unfinished_ = open.Any() || UserCodeHasUnbalancedMacro() || UserMacroOpensABrace();
     }
     return *unfinished_;
   }

@@ -79,6 +79,10 @@ OpenConstructs CountOpenConstructs(const glsl::LexedFile& lexed) {
 }
 
 bool HasUnbalancedMacroBody(const glsl::LexedFile& lexed) {
+  return MacroBodyOpens(lexed, Punct::kLeftParen, Punct::kRightParen);
+}
+
+bool MacroBodyOpens(const glsl::LexedFile& lexed, Punct open, Punct close) {
   for (size_t i = 0; i < lexed.tokens.size(); ++i) {
     if (lexed.tokens[i].kind != TokenKind::kHash || DirectiveName(lexed, i) != "define") continue;
     const size_t end = EndOfDirective(lexed, i);
@@ -91,8 +95,8 @@ bool HasUnbalancedMacroBody(const glsl::LexedFile& lexed) {
     }
     int depth = 0;
     for (size_t k = body; k < end; ++k) {
-      if (lexed.tokens[k].punct == Punct::kLeftParen) ++depth;
-      if (lexed.tokens[k].punct == Punct::kRightParen) --depth;
+      if (lexed.tokens[k].punct == open) ++depth;
+      if (lexed.tokens[k].punct == close) --depth;
     }
     if (depth > 0) return true;
     i = end - 1;

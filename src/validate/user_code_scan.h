@@ -38,6 +38,10 @@ OpenConstructs CountOpenConstructs(const glsl::LexedFile& lexed);
 // (WebGL CTS macro-expansion-tricky.html); such input is validated out of process.
 bool HasUnbalancedMacroBody(const glsl::LexedFile& lexed);
 
+// True when some #define body holds more `open` than `close` punctuators (a '{' whose
+// '}' was lost from a multi-line macro): its expansions leave the code unclosed.
+bool MacroBodyOpens(const glsl::LexedFile& lexed, glsl::Punct open, glsl::Punct close);
+
 // A macro the user's code leaves defined: its name token.
 struct UserMacro {
   FileId file = kNoFile;

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "driver/check_pipeline.h"
+#include "driver/html_report/build_report.h"
 #include "driver/parallel_for.h"
 #include "driver/port/port_file.h"
 
@@ -130,6 +131,32 @@ TEST(FileDecision, CheckHoldsTheManifestColumns) {
           << row.path << " fails per MANIFEST (" << row.expect << "); check finds no error";
     }
   }
+}
+
+// The main job's report (tools/run-main.sh): its check column is check's verdict and
+// what the MANIFEST says, its dialect and stage are check's.
+TEST(FileDecision, ReportAgreesWithCheckAndTheManifest) {
+  HtmlReportOptions options;
+  options.paths = {kCorpusDir};
+  options.size = 16;
+  const HtmlReportRun run = BuildHtmlReport(options);
+  const std::map<std::string, FileReport> checked = CheckReports({kCorpusDir});
+  std::map<std::string, std::string> expect;
+  for (const ManifestRow& row : ReadManifest()) expect[(kCorpusDir / row.path).string()] = row.expect;
+  size_t compared = 0;
+  for (const ReportEntry& entry : run.report.entries) {
+    const auto it = checked.find(entry.path);
+    if (!entry.shader || it == checked.end()) continue;
+    ++compared;
+    EXPECT_EQ(entry.dialect, it->second.dialect) << entry.path;
+    EXPECT_EQ(entry.stage, it->second.stage) << entry.path;
+    const bool compiles = expect[entry.path] == "compiles";
+    EXPECT_EQ(entry.check.status != StepStatus::kFail, compiles) << entry.path;
+    if (compiles) {
+      EXPECT_NE(entry.port.status, StepStatus::kFail) << entry.path;
+    }
+  }
+  EXPECT_EQ(compared, expect.size());
 }
 
 TEST(FileDecision, CommandsDecideAlikeOnTheCorpus) {

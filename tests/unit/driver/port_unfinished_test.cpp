@@ -36,6 +36,20 @@ TEST(PortUnfinished, FixesThatDoNotSettleGiveTheInputAndNoOutput) {
   EXPECT_TRUE(named);
 }
 
+// A stray ')' and code after the closing brace (a mutated real pass): the parser's
+// recovery put the main() the port added out of the tree's reach, and it was added
+// again every round until the engine gave up (exit 3; found by the mutation sweep).
+TEST(PortUnfinished, MainIsAddedOnceWhereRecoveryHidesIt) {
+  SourceManager sources;
+  const SourceFile& file = sources.Add(
+      "stray.glsl",
+      "void mainImage( out vec4 fragColor, in vec2 fragCoord )\n{\n    vec2 uv = "
+      "fragCoord/iResolution.xy;\n    fragColor = uv);\n} texture(iChannel0,\n");
+  const PortResult result = PortSource(file, nullptr, PortOptions{}, sources);
+  EXPECT_TRUE(result.converged);
+  for (const Diagnostic& d : result.diagnostics) EXPECT_NE(d.rule_id, "internal/error") << d.message;
+}
+
 // 300 nested parentheses: the parser's limit. Only the breach is reported.
 TEST(PortUnfinished, TextPastALimitIsReportedNotPorted) {
   SourceManager sources;

@@ -161,6 +161,20 @@ TEST(ShaderToyContractTest, UnclosedBraceIsIncompleteUserCode) {
   EXPECT_FALSE(d.notes.empty());  // the cascade is kept, not hidden
 }
 
+// A '}' lost from a multi-line #define: the text is balanced, the expanded code is not
+// (found by the mutation sweep: it was internal/generated-code, exit 3).
+TEST(ShaderToyContractTest, BraceLostInAMacroIsIncompleteUserCode) {
+  auto c = CompilePass(
+      "#define OPEN(x) { \\\n  float m = x; \\\n\n"
+      "void mainImage(out vec4 o, in vec2 u) {\n  OPEN(1.0)\n  o = vec4(1.0);\n}\n");
+  bool incomplete = false;
+  for (const Diagnostic& d : c->result.diagnostics) {
+    EXPECT_NE(d.rule_id, "internal/generated-code") << d.message;
+    incomplete = incomplete || d.rule_id == "glslang/incomplete-code";
+  }
+  EXPECT_TRUE(incomplete) << Rules(c->result.diagnostics);
+}
+
 // A user macro that rewrites the site's own main() is the user's error, at the
 // macro (it fails on the site too), never internal/generated-code.
 TEST(ShaderToyContractTest, AMacroRewritingTheWrapperIsBlamedOnTheMacro) {
