@@ -123,11 +123,12 @@ bool NestedFunctionDefinition(const glsl::SyntaxTree& tree) {
   return nested;
 }
 
-// `void main (` anywhere in the file's tokens. Where the parser's recovery from an error
-// put a main() added by an earlier round out of the tree's reach (after a stray '}'),
-// the tokens still show it; without this check it was added every round.
+// `void main (` in the compiled tokens (inactive #if groups left out, macros expanded).
+// Where the parser's recovery from an error put a main() added by an earlier round out
+// of the tree's reach (after a stray '}'), the tokens still show it; without this check
+// it was added every round.
 bool MainInTokens(const rule::RuleContext& context) {
-  const auto& tokens = context.Lexed().tokens;
+  const auto& tokens = context.Preprocessed().tokens;
   for (size_t i = 0; i + 2 < tokens.size(); ++i) {
     if (tokens[i].text == "void" && tokens[i + 1].text == "main" &&
         tokens[i + 2].punct == glsl::Punct::kLeftParen) {
@@ -158,6 +159,9 @@ class MainWrapperRule final : public rule::Rule {
     const rule::CodeInterface code = rule::ReadCodeInterface(context.Tree(), context.Model());
     if (code.defined_functions.contains("main")) return;  // already has one (or ported)
     if (NestedFunctionDefinition(context.Tree()) || MainInTokens(context)) return;
+    // An #if left open (or another preprocessor error) may hide what is added in a
+    // group that is not compiled: it would be added again every round.
+    if (HasErrors(context.Preprocessed().diagnostics)) return;
     const rule::EntryPoint* entry = harness::DefinedEntryPoint(*dialect, code);
     SourceRange where;
     if (entry != nullptr) {

@@ -50,6 +50,19 @@ TEST(PortUnfinished, MainIsAddedOnceWhereRecoveryHidesIt) {
   for (const Diagnostic& d : result.diagnostics) EXPECT_NE(d.rule_id, "internal/error") << d.message;
 }
 
+// A duplicated #ifdef leaves the group open: the main() the port added landed in text
+// that is not compiled, and was added every round (mutation sweep, exit 3).
+TEST(PortUnfinished, MainIsNotAddedWhereAnOpenIfHidesIt) {
+  SourceManager sources;
+  const SourceFile& file = sources.Add(
+      "open-if.glsl",
+      "void mainImage(out vec4 o, in vec2 u) {\n  o = vec4(1.0);\n#ifdef NEVER\n#ifdef NEVER\n"
+      "  o = vec4(0.0);\n#endif\n}\n");
+  const PortResult result = PortSource(file, nullptr, PortOptions{}, sources);
+  EXPECT_TRUE(result.converged);
+  for (const Diagnostic& d : result.diagnostics) EXPECT_NE(d.rule_id, "internal/error") << d.message;
+}
+
 // 300 nested parentheses: the parser's limit. Only the breach is reported.
 TEST(PortUnfinished, TextPastALimitIsReportedNotPorted) {
   SourceManager sources;
