@@ -34,26 +34,27 @@ class RepeatedLayoutRule final : public rule::Rule {
 
   void Run(rule::RuleContext& context) const override {
     if (context.Settings().source_version != 300) return;
-    glsl::ForEachNodeOf(context.Tree(),
-                        {glsl::NodeKind::kVariableDeclaration, glsl::NodeKind::kQualifierDeclaration,
-                         glsl::NodeKind::kInterfaceBlock, glsl::NodeKind::kParameterDeclaration,
-                         glsl::NodeKind::kFunctionDeclaration},
-                        [&](const glsl::Node& node) {
-                          const glsl::QualifierList* qualifiers = QualifiersOf(node);
-                          if (qualifiers == nullptr) return;
-                          bool seen = false;
-                          for (const glsl::Qualifier& qualifier : qualifiers->items) {
-                            if (qualifier.kind != glsl::QualifierKind::kLayout) continue;
-                            if (seen) {
-                              webgl::ReportError(context, kId, qualifier.range,
-                                                 "the layout qualifier is specified more than "
-                                                 "once; GLSL ES 3.00 allows one per declaration "
-                                                 "(merge them into one layout(...))");
-                              return;
-                            }
-                            seen = true;
-                          }
-                        });
+    glsl::ForEachNodeOf(
+        context.Tree(),
+        {glsl::NodeKind::kVariableDeclaration, glsl::NodeKind::kQualifierDeclaration,
+         glsl::NodeKind::kInterfaceBlock, glsl::NodeKind::kParameterDeclaration,
+         glsl::NodeKind::kFunctionDeclaration},
+        [&](const glsl::Node& node) {
+          const glsl::QualifierList* qualifiers = QualifiersOf(node);
+          if (qualifiers == nullptr) return;
+          bool seen = false;
+          for (const glsl::Qualifier& qualifier : qualifiers->items) {
+            if (qualifier.kind != glsl::QualifierKind::kLayout) continue;
+            if (seen) {
+              webgl::ReportError(context, kId, qualifier.range,
+                                 "the layout qualifier is specified more than "
+                                 "once; GLSL ES 3.00 allows one per declaration "
+                                 "(merge them into one layout(...))");
+              return;
+            }
+            seen = true;
+          }
+        });
   }
 };
 

@@ -16,7 +16,7 @@
 #include "driver/project/json_code_rewrite.h"
 #include "driver/project/json_project_reader.h"
 #include "fuzz_check.h"
-#include "json_mutations.h"
+#include "json_custom_mutator.h"
 
 namespace {
 
@@ -84,24 +84,4 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     }
   }
   return 0;
-}
-
-// Half of the mutations are structured (json_mutations.h): a member of another
-// type, a missing member, a value of the wrong shape, which byte flips seldom make
-// in a document that still parses. The other half are libFuzzer's own.
-extern "C" size_t LLVMFuzzerMutate(uint8_t* data, size_t size, size_t max_size);
-extern "C" size_t LLVMFuzzerCustomMutator(uint8_t* data, size_t size, size_t max_size,
-                                          unsigned int seed) {
-  std::mt19937_64 random(seed);
-  if (random() % 2 == 0) {
-    const nlohmann::json document = nlohmann::json::parse(data, data + size, nullptr, false);
-    if (!document.is_discarded()) {
-      const std::string mutated = shaderport::fuzz::MutateJson(document, random).dump();
-      if (mutated.size() <= max_size) {
-        std::memcpy(data, mutated.data(), mutated.size());
-        return mutated.size();
-      }
-    }
-  }
-  return LLVMFuzzerMutate(data, size, max_size);
 }

@@ -105,17 +105,9 @@ int RunCheckCommand(const CheckArgs& args) {
   if (std::find(kWhenNames.begin(), kWhenNames.end(), args.color) == kWhenNames.end()) {
     return UsageError(UnknownName("--color", args.color, kWhenNames));
   }
-  if (!ResolveDialectOption(args.dialect, dialect_sources, options.dialect, harness)) {
+  if (!ResolveKindOptions({args.dialect, args.stage, args.target}, dialect_sources, options,
+                          harness)) {
     return kExitUsage;
-  }
-  if (harness && !options.dialect) options.harness = &*harness;
-  if (!args.stage.empty()) {
-    options.stage = driver::ParseStage(args.stage);
-    if (!options.stage) return UsageError(UnknownName("--stage", args.stage, kStageNames));
-  }
-  if (!args.target.empty()) {
-    options.target = driver::ParseTarget(args.target);
-    if (!options.target) return UsageError(UnknownName("--target", args.target, kTargetNames));
   }
   if (!args.link.empty()) {
     if (args.link.size() % 2 != 0) return UsageError("--link takes a vertex and a fragment shader");

@@ -81,17 +81,9 @@ int RunExplainFile(const ExplainArgs& args) {
   options.explain_only = true;
   SourceManager dialect_sources;  // a --dialect FILE.toml, kept for its diagnostics
   std::optional<rule::HarnessDialect> harness;
-  if (!ResolveDialectOption(args.dialect, dialect_sources, options.dialect, harness)) {
+  if (!ResolveKindOptions({args.dialect, args.stage, args.target}, dialect_sources, options,
+                          harness)) {
     return kExitUsage;
-  }
-  if (harness && !options.dialect) options.harness = &*harness;
-  if (!args.stage.empty()) {
-    options.stage = driver::ParseStage(args.stage);
-    if (!options.stage) return UsageError(UnknownName("--stage", args.stage, kStageNames));
-  }
-  if (!args.target.empty()) {
-    options.target = driver::ParseTarget(args.target);
-    if (!options.target) return UsageError(UnknownName("--target", args.target, kTargetNames));
   }
   for (const std::string& spec : args.channels) {
     const std::optional<ChannelSpec> parsed = ParseChannelSpec(spec);

@@ -170,6 +170,28 @@ std::optional<std::vector<driver::InputFile>> SelectInputFiles(const InputArgume
   return std::move(inputs.files);
 }
 
+bool ResolveKindOptions(const KindArguments& arguments, SourceManager& sources,
+                        driver::CheckOptions& options,
+                        std::optional<rule::HarnessDialect>& harness) {
+  if (!ResolveDialectOption(arguments.dialect, sources, options.dialect, harness)) return false;
+  if (harness && !options.dialect) options.harness = &*harness;
+  if (!arguments.stage.empty()) {
+    options.stage = driver::ParseStage(arguments.stage);
+    if (!options.stage) {
+      PrintError(UnknownName("--stage", arguments.stage, kStageNames));
+      return false;
+    }
+  }
+  if (!arguments.target.empty()) {
+    options.target = driver::ParseTarget(arguments.target);
+    if (!options.target) {
+      PrintError(UnknownName("--target", arguments.target, kTargetNames));
+      return false;
+    }
+  }
+  return true;
+}
+
 driver::PortOptions OptionsFor(const driver::PortOptions& options, const driver::InputFile& input) {
   driver::PortOptions for_input = options;
   if (!for_input.dialect && for_input.harness == nullptr) for_input.dialect = input.dialect;

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "driver/check_options.h"
 #include "driver/input_files.h"
 #include "driver/port/port_file.h"
 #include "rule/harness_dialect.h"
@@ -36,6 +37,17 @@ std::optional<ChannelSpec> ParseChannelSpec(std::string_view spec);
 bool ResolveDialectOption(const std::string& value, SourceManager& sources,
                           std::optional<driver::Dialect>& dialect,
                           std::optional<rule::HarnessDialect>& harness);
+
+// check's and explain-file's --dialect, --stage and --target into `options` (a loaded
+// harness dialect lives in `harness`). Prints why and returns false on a bad value.
+struct KindArguments {
+  const std::string& dialect;
+  const std::string& stage;
+  const std::string& target;
+};
+bool ResolveKindOptions(const KindArguments& arguments, SourceManager& sources,
+                        driver::CheckOptions& options,
+                        std::optional<rule::HarnessDialect>& harness);
 
 // Fills `options`; a loaded dialect lives in `harness`. Prints why and returns
 // false on a bad value (a usage error).

@@ -142,7 +142,8 @@ TEST(FileDecision, ReportAgreesWithCheckAndTheManifest) {
   const HtmlReportRun run = BuildHtmlReport(options);
   const std::map<std::string, FileReport> checked = CheckReports({kCorpusDir});
   std::map<std::string, std::string> expect;
-  for (const ManifestRow& row : ReadManifest()) expect[(kCorpusDir / row.path).string()] = row.expect;
+  for (const ManifestRow& row : ReadManifest())
+    expect[(kCorpusDir / row.path).string()] = row.expect;
   size_t compared = 0;
   for (const ReportEntry& entry : run.report.entries) {
     const auto it = checked.find(entry.path);

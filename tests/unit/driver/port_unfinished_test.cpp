@@ -41,13 +41,14 @@ TEST(PortUnfinished, FixesThatDoNotSettleGiveTheInputAndNoOutput) {
 // again every round until the engine gave up (exit 3; found by the mutation sweep).
 TEST(PortUnfinished, MainIsAddedOnceWhereRecoveryHidesIt) {
   SourceManager sources;
-  const SourceFile& file = sources.Add(
-      "stray.glsl",
-      "void mainImage( out vec4 fragColor, in vec2 fragCoord )\n{\n    vec2 uv = "
-      "fragCoord/iResolution.xy;\n    fragColor = uv);\n} texture(iChannel0,\n");
+  const SourceFile& file =
+      sources.Add("stray.glsl",
+                  "void mainImage( out vec4 fragColor, in vec2 fragCoord )\n{\n    vec2 uv = "
+                  "fragCoord/iResolution.xy;\n    fragColor = uv);\n} texture(iChannel0,\n");
   const PortResult result = PortSource(file, nullptr, PortOptions{}, sources);
   EXPECT_TRUE(result.converged);
-  for (const Diagnostic& d : result.diagnostics) EXPECT_NE(d.rule_id, "internal/error") << d.message;
+  for (const Diagnostic& d : result.diagnostics)
+    EXPECT_NE(d.rule_id, "internal/error") << d.message;
 }
 
 // A duplicated #ifdef leaves the group open: the main() the port added landed in text
@@ -60,7 +61,8 @@ TEST(PortUnfinished, MainIsNotAddedWhereAnOpenIfHidesIt) {
       "  o = vec4(0.0);\n#endif\n}\n");
   const PortResult result = PortSource(file, nullptr, PortOptions{}, sources);
   EXPECT_TRUE(result.converged);
-  for (const Diagnostic& d : result.diagnostics) EXPECT_NE(d.rule_id, "internal/error") << d.message;
+  for (const Diagnostic& d : result.diagnostics)
+    EXPECT_NE(d.rule_id, "internal/error") << d.message;
 }
 
 // 300 nested parentheses: the parser's limit. Only the breach is reported.
