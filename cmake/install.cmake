@@ -36,6 +36,31 @@ install(FILES ${CMAKE_CURRENT_BINARY_DIR}/shaderportConfig.cmake
   ${CMAKE_CURRENT_BINARY_DIR}/shaderportConfigVersion.cmake DESTINATION ${shaderport_cmake_dir}
   COMPONENT development)
 install(FILES README.md DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT runtime)
+# The manual page and the shell completions are written by the built executable
+# from its own option tables (shaderport man, shaderport completion SHELL).
+set(shaderport_generated_docs ${CMAKE_CURRENT_BINARY_DIR}/generated-docs)
+add_custom_command(
+  OUTPUT ${shaderport_generated_docs}/shaderport.1 ${shaderport_generated_docs}/shaderport.bash
+         ${shaderport_generated_docs}/_shaderport ${shaderport_generated_docs}/shaderport.fish
+  COMMAND ${CMAKE_COMMAND} -E make_directory ${shaderport_generated_docs}
+  COMMAND sh -c "$<TARGET_FILE:shaderport> man > shaderport.1"
+  COMMAND sh -c "$<TARGET_FILE:shaderport> completion bash > shaderport.bash"
+  COMMAND sh -c "$<TARGET_FILE:shaderport> completion zsh > _shaderport"
+  COMMAND sh -c "$<TARGET_FILE:shaderport> completion fish > shaderport.fish"
+  WORKING_DIRECTORY ${shaderport_generated_docs}
+  DEPENDS shaderport
+  COMMENT "Writing shaderport(1) and the shell completions")
+add_custom_target(shaderport_generated_docs ALL
+  DEPENDS ${shaderport_generated_docs}/shaderport.1)
+install(FILES ${shaderport_generated_docs}/shaderport.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1
+  COMPONENT runtime)
+install(FILES ${shaderport_generated_docs}/shaderport.bash
+  DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions RENAME shaderport
+  COMPONENT runtime)
+install(FILES ${shaderport_generated_docs}/_shaderport
+  DESTINATION ${CMAKE_INSTALL_DATADIR}/zsh/vendor-completions COMPONENT runtime)
+install(FILES ${shaderport_generated_docs}/shaderport.fish
+  DESTINATION ${CMAKE_INSTALL_DATADIR}/fish/vendor_completions.d COMPONENT runtime)
 
 # cpack -G DEB: dpkg-shlibdeps turns the shared libraries the executable links
 # (glslang, SPIRV-Tools, OSMesa, libpng, ...) into Depends on their Debian packages;

@@ -12,7 +12,9 @@ namespace shaderport::rules {
 // clang-format off
 // ---- rule factories (sorted by rule id; one line per rule) ----
 const rule::Rule& PortabilityIndexRangeRule();  // portability/index-range
+const rule::Rule& PortabilityInfiniteLoopRule();  // portability/infinite-loop
 const rule::Rule& PortabilityMissingReturnRule();  // portability/missing-return
+const rule::Rule& PortabilityOutputNeverWrittenRule();  // portability/output-never-written
 const rule::Rule& PortabilityUninitializedReadRule();  // portability/uninitialized-read
 const rule::Rule& ShadertoyChannelTypesRule();  // shadertoy/channel-types
 const rule::Rule& ShadertoyGlobalTimeRule();  // shadertoy/global-time

@@ -12,7 +12,9 @@ std::vector<const rule::Rule*> BuildRegistry() {
       // clang-format off
       // ---- rules (sorted by rule id; one line per rule: &FooRule(),) ----
       &PortabilityIndexRangeRule(),  // portability/index-range
+      &PortabilityInfiniteLoopRule(),  // portability/infinite-loop
       &PortabilityMissingReturnRule(),  // portability/missing-return
+      &PortabilityOutputNeverWrittenRule(),  // portability/output-never-written
       &PortabilityUninitializedReadRule(),  // portability/uninitialized-read
       &ShadertoyChannelTypesRule(),  // shadertoy/channel-types
       &ShadertoyGlobalTimeRule(),  // shadertoy/global-time

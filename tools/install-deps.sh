@@ -32,6 +32,9 @@ test_packages=(
   python3-jsonschema
   # Browser tests open generated pages in headless Chromium (SwiftShader WebGL).
   chromium
+  # The completion tests run the generated scripts in each shell; the man page
+  # test renders shaderport(1) with groff and fails on a warning.
+  zsh fish groff-base
 )
 
 # bench/parallel_scaling_sim.py counts instructions per file with callgrind.

@@ -12,6 +12,7 @@
 // whose condition is missing or `true` and that no `break` leaves.
 #include <string>
 
+#include "diag/statement_insertion.h"
 #include "glsl/webgl_semantics/zero_value.h"
 #include "rules/all_rules.h"
 #include "rules/portability/portability_support.h"
@@ -156,9 +157,8 @@ class MissingReturnRule final : public rule::Rule {
       const auto zero = glsl::ZeroValue(type, model.structs, model.version);
       if (zero && brace.text == "}" && brace.macro_use == glsl::kNoMacroUse &&
           portability::InThisFile(context, brace.spelling)) {
-        diagnostic.fixes.push_back(
-            {{brace.spelling.file, brace.spelling.begin, brace.spelling.begin},
-             " return " + *zero + "; "});
+        diagnostic.fixes.push_back(InsertLastStatement(context.File(), brace.spelling.begin,
+                                                       "return " + *zero + ";"));
       }
       context.Report(std::move(diagnostic));
     }

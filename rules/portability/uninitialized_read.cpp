@@ -31,6 +31,7 @@
 #include <utility>
 #include <vector>
 
+#include "diag/statement_insertion.h"
 #include "glsl/syntax/visit.h"
 #include "glsl/webgl_semantics/zero_value.h"
 #include "rules/all_rules.h"
@@ -719,8 +720,8 @@ class FunctionAnalysis {
       return;
     }
     const SourceRange brace = tokens[body.first_token].spelling;
-    diagnostic.fixes.push_back({{brace.file, brace.end, brace.end},
-                                " " + slot.parameter->name.text + " = " + *zero + ";"});
+    diagnostic.fixes.push_back(InsertFirstStatement(context_.File(), brace.end,
+                                                    slot.parameter->name.text + " = " + *zero + ";"));
   }
 
   // A harness entry point (ShaderToy's mainImage, mainCubemap) returns to code that

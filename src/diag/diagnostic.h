@@ -47,6 +47,15 @@ inline bool HasErrors(const DiagnosticList& diagnostics) {
   return false;
 }
 
+// A finding `shaderport fix` repairs: it carries a safe fix-it (check attaches the
+// fixes of the rules that repair glslang's errors, driver/fixable_findings.h).
+inline bool IsFixable(const Diagnostic& diagnostic) {
+  for (const auto& fix : diagnostic.fixes) {
+    if (fix.safety == FixSafety::kSafe) return true;
+  }
+  return false;
+}
+
 const char* SeverityName(Severity severity);
 // The inverse of SeverityName ("note", "warning", "error"); nothing for other text.
 std::optional<Severity> SeverityFromName(std::string_view name);

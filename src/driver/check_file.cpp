@@ -8,6 +8,7 @@
 #include "diag/limit_breach.h"
 #include "driver/dialect.h"
 #include "driver/file_decision.h"
+#include "driver/fixable_findings.h"
 #include "driver/front_end.h"
 #include "driver/project/record_json.h"
 #include "driver/project/shadertoy_project.h"
@@ -266,6 +267,11 @@ FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceMana
     // Common is an input of its own: its findings are reported once, there.
     std::erase_if(report.diagnostics,
                   [&](const Diagnostic& d) { return d.range.file == common->Id(); });
+  }
+  // What `shaderport fix` would repair, so that every format can say so.
+  if (!report.diagnostics.empty()) {
+    AttachRepairs(PortSource(file, common, FixOptionsFor(decision), sources), sources,
+                  report.diagnostics);
   }
   // With --render the picture's findings join later (RenderCheckedFile), and
   // suppressions and configuration are applied to all of them together there.

@@ -30,11 +30,21 @@ bool LooksBinary(std::string_view text) {
 
 }  // namespace
 
-InputText ClassifyInputText(std::string text) {
-  if (text.size() > limits::kMaxFileBytes) {
-    return Reject(
-        "input/too-large",
-        "file is larger than the " + std::to_string(limits::kMaxFileBytes >> 20) + " MiB limit");
+std::string MebibytesOf(size_t bytes) {
+  // Rounded up to a tenth, so that a file past the limit never reads as the limit.
+  const size_t tenths = (bytes * 10 + (size_t{1} << 20) - 1) >> 20;
+  return std::to_string(tenths / 10) + (tenths % 10 != 0 ? "." + std::to_string(tenths % 10) : "");
+}
+
+size_t InputLimitFor(const std::filesystem::path& path) {
+  return path.extension() == ".jsonl" ? limits::kMaxJsonLinesBytes : limits::kMaxFileBytes;
+}
+
+InputText ClassifyInputText(std::string text, size_t limit) {
+  if (text.size() > limit) {
+    return Reject("input/too-large", "file is " + MebibytesOf(text.size()) +
+                                         " MiB, larger than the " + MebibytesOf(limit) +
+                                         " MiB limit");
   }
   const bool byte_order_mark = text.starts_with("\xEF\xBB\xBF");
   if (byte_order_mark) text.erase(0, 3);
@@ -53,14 +63,15 @@ InputText ClassifyInputText(std::string text) {
 }
 
 InputText ReadInputFile(const std::filesystem::path& path) {
-  file_io::ReadResult read = file_io::ReadRegularFile(path, limits::kMaxFileBytes);
+  const size_t limit = InputLimitFor(path);
+  file_io::ReadResult read = file_io::ReadRegularFile(path, limit);
   switch (read.failure) {
     case file_io::ReadFailure::kNone:
-      return ClassifyInputText(std::move(*read.bytes));
+      return ClassifyInputText(std::move(*read.bytes), limit);
     case file_io::ReadFailure::kTooLarge:
-      return Reject("input/too-large",
-                    "file is " + std::to_string(read.size >> 20) + " MiB, larger than the " +
-                        std::to_string(limits::kMaxFileBytes >> 20) + " MiB limit");
+      return Reject("input/too-large", "file is " + MebibytesOf(read.size) +
+                                           " MiB, larger than the " + MebibytesOf(limit) +
+                                           " MiB limit");
     default:
       return Reject("input/unreadable", std::move(read.message));
   }
@@ -75,8 +86,7 @@ InputText ReadInputStream(std::istream& in) {
   if (in.bad()) return Reject("input/unreadable", "cannot read standard input");
   if (text.size() > limits::kMaxFileBytes) {
     return Reject("input/too-large", "standard input is larger than the " +
-                                         std::to_string(limits::kMaxFileBytes >> 20) +
-                                         " MiB limit");
+                                         MebibytesOf(limits::kMaxFileBytes) + " MiB limit");
   }
   return ClassifyInputText(std::move(text));
 }

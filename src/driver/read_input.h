@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "base/limits.h"
 #include "diag/diagnostic.h"
 
 namespace shaderport::driver {
@@ -31,6 +32,14 @@ InputText ReadInputStream(std::istream& in);
 // Classifies text already in memory (stdin, tests): "" when it looks like shader source.
 // Accepted text has a leading UTF-8 byte order mark removed and each lone CR turned
 // into LF (same offsets; glslang counts only LF).
-InputText ClassifyInputText(std::string text);
+// `limit`: the input limit of the file (InputLimitFor).
+InputText ClassifyInputText(std::string text, size_t limit = limits::kMaxFileBytes);
+
+// The most a file may hold: kMaxJsonLinesBytes for a .jsonl file (its limit per
+// project applies to each line), kMaxFileBytes for any other.
+size_t InputLimitFor(const std::filesystem::path& path);
+
+// "8.1" for 8.1 MiB: rounded up to a tenth (a file past a limit never reads as it).
+std::string MebibytesOf(size_t bytes);
 
 }  // namespace shaderport::driver

@@ -18,6 +18,7 @@ ReportSummary Summarize(const CheckReport& report) {
     }
     if (!file.diagnostics.empty()) ++summary.files_with_problems;
     for (const Diagnostic& diagnostic : file.diagnostics) {
+      if (IsFixable(diagnostic)) ++summary.fixable;
       switch (diagnostic.severity) {
         case Severity::kError:
           ++summary.errors;

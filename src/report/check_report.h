@@ -73,6 +73,7 @@ struct ReportSummary {
   size_t files_checked = 0;        // shader files and project tabs: what was checked
   size_t tabs_checked = 0;         // of those, tabs of ShaderToy projects
   size_t projects = 0;             // the projects those tabs belong to
+  size_t fixable = 0;              // diagnostics `shaderport fix` repairs (IsFixable)
 };
 
 ReportSummary Summarize(const CheckReport& report);

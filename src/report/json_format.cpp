@@ -41,7 +41,8 @@ Json DiagnosticToJson(const CheckReport& report, const ReportOptions& options,
               {"message", diagnostic.message},
               {"location", Location(report, options, diagnostic.range)},
               {"notes", std::move(notes)},
-              {"fixes", std::move(fixes)}};
+              {"fixes", std::move(fixes)},
+              {"fixable", IsFixable(diagnostic)}};
 }
 
 }  // namespace
@@ -70,7 +71,8 @@ Json ReportToJson(const CheckReport& report, const ReportOptions& options) {
                 {"warnings", summary.warnings},
                 {"notes", summary.notes},
                 {"filesWithProblems", summary.files_with_problems},
-                {"filesChecked", summary.files_checked}}}};
+                {"filesChecked", summary.files_checked},
+                {"fixable", summary.fixable}}}};
 }
 
 std::string FormatJson(const CheckReport& report, const ReportOptions& options) {

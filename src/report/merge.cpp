@@ -178,7 +178,7 @@ bool MergeJson(std::vector<ParsedInput>& inputs, MergeResult& result) {
   std::stable_sort(files.begin(), files.end(), [](const Json& a, const Json& b) {
     return a["path"].get_ref<const std::string&>() < b["path"].get_ref<const std::string&>();
   });
-  size_t errors = 0, warnings = 0, notes = 0, with_problems = 0;
+  size_t errors = 0, warnings = 0, notes = 0, with_problems = 0, fixable = 0;
   for (const Json& file : files) {
     if (!file["diagnostics"].empty()) ++with_problems;
     for (const Json& diagnostic : file["diagnostics"]) {
@@ -188,6 +188,7 @@ bool MergeJson(std::vector<ParsedInput>& inputs, MergeResult& result) {
       if (severity == Severity::kError) ++errors;
       if (severity == Severity::kWarning) ++warnings;
       if (severity == Severity::kNote) ++notes;
+      if (diagnostic.value("fixable", false)) ++fixable;
     }
   }
   Json merged = std::move(inputs[0].json);
@@ -197,6 +198,7 @@ bool MergeJson(std::vector<ParsedInput>& inputs, MergeResult& result) {
   summary["notes"] = notes;
   summary["filesWithProblems"] = with_problems;
   summary["filesChecked"] = std::count_if(files.begin(), files.end(), IsCheckedFile);
+  summary["fixable"] = fixable;
   merged["files"] = std::move(files);
   result.output = Dump(merged);
   return true;

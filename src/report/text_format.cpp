@@ -60,8 +60,10 @@ class TextPrinter {
       for (const Diagnostic& diagnostic : file.diagnostics) PrintDiagnostic(file, diagnostic);
     }
     if (options_.summary_line) {
-      out_ += Paint(kBold, SummaryLine(Summarize(report_)));
+      const ReportSummary summary = Summarize(report_);
+      out_ += Paint(kBold, SummaryLine(summary));
       out_ += '\n';
+      if (summary.fixable > 0) out_ += FixableLine(summary) + '\n';
     }
     return std::move(out_);
   }
@@ -93,7 +95,8 @@ class TextPrinter {
 
   // "path:line:col: severity: message" (or "path: ..." without a range).
   void PrintHeader(const std::optional<ResolvedRange>& where, const SourceFile* fallback,
-                   Severity severity, std::string_view message, std::string_view rule_id) {
+                   Severity severity, std::string_view message, std::string_view rule_id,
+                   bool fixable = false) {
     std::string location;
     if (where) {
       location = PathOf(where->file) + ":" + std::to_string(where->start.line) + ":" +
@@ -104,7 +107,8 @@ class TextPrinter {
     if (!location.empty()) out_ += Paint(kBold, location) + " ";
     out_ += Paint(SeverityColour(severity), std::string(SeverityName(severity)) + ":");
     // One diagnostic is one line for tools that parse clang's format.
-    std::string text = " " + OneLinePrintable(message);
+    // "[*]" marks what `shaderport fix` repairs, where ruff marks it.
+    std::string text = std::string(fixable ? " [*] " : " ") + OneLinePrintable(message);
     if (!rule_id.empty()) text += " [" + EscapeControlCharacters(rule_id) + "]";
     out_ += Paint(kBold, text);
     out_ += '\n';
@@ -221,7 +225,8 @@ class TextPrinter {
 
   void PrintDiagnostic(const FileReport& file, const Diagnostic& diagnostic) {
     const auto where = Resolve(report_.sources, diagnostic.range);
-    PrintHeader(where, file.file, diagnostic.severity, diagnostic.message, diagnostic.rule_id);
+    PrintHeader(where, file.file, diagnostic.severity, diagnostic.message, diagnostic.rule_id,
+                IsFixable(diagnostic));
     const FixIt* shown = where ? PrintSnippet(*where, diagnostic.fixes) : nullptr;
     for (const FixIt& fix : diagnostic.fixes) {
       if (&fix != shown) PrintFixIt(fix, where);
@@ -250,6 +255,10 @@ std::string SummaryLine(const ReportSummary& summary) {
   if (files > 0) line += Plural(files, "file") + " and ";
   return line + Plural(summary.tabs_checked, "tab") + " of " +
          Plural(summary.projects, "ShaderToy project") + " checked)";
+}
+
+std::string FixableLine(const ReportSummary& summary) {
+  return "[*] " + std::to_string(summary.fixable) + " fixable with 'shaderport fix'";
 }
 
 std::string FormatText(const CheckReport& report, const ReportOptions& options) {

@@ -19,4 +19,7 @@ std::string FormatText(const CheckReport& report, const ReportOptions& options);
 // "2 errors, 1 warning in 1 file (3 files checked)"
 std::string SummaryLine(const ReportSummary& summary);
 
+// "[*] N fixable with 'shaderport fix'" when some finding carries a safe fix.
+std::string FixableLine(const ReportSummary& summary);
+
 }  // namespace shaderport

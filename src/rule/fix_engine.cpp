@@ -208,9 +208,9 @@ FixEngineResult RunFixEngine(const SourceFile& original, const FixEngineOptions&
     rules_by_round.emplace_back();
     for (size_t i : selection.applied) {
       rules_by_round.back().push_back(found[i].rule_id);
-      Diagnostic fixed = MapToOriginal(found[i], result.map, id);
-      fixed.fixes.clear();  // already applied; their ranges pointed into an older text
-      result.fixed.push_back(std::move(fixed));
+      // Its fixes, located in the original, stay: check attaches them to the findings
+      // they repair (MapToOriginal keeps only those that edit the original's own text).
+      result.fixed.push_back(MapToOriginal(found[i], result.map, id));
     }
     result.map = SourceMap::Compose(result.map, edited->map);
     result.text = std::move(edited->text);

@@ -59,7 +59,9 @@ struct FixEngineResult {
   std::string text;          // the fixed text
   SourceMap map;             // text -> original
   DiagnosticList remaining;  // rule findings left in `text`, located in the original
-  DiagnosticList fixed;      // findings whose fixes were applied, located in the original
+  // Findings whose fixes were applied, located in the original with the fixes that
+  // edit the original's own text (a later round's fix of inserted text is dropped).
+  DiagnosticList fixed;
   DiagnosticList front_end;  // front-end findings on `text`, located in the original
   int rounds = 0;            // rounds that changed the text
   bool converged = true;     // false: rules cycled or still wanted edits after max_rounds

@@ -7,10 +7,15 @@ GITHUB_PATH), `${{ }}` expressions of the forms the action uses evaluated, and
 a workspace with a finding and for a clean one, and that the problem matcher
 reads `check`'s text output.
 
-  run_action.py SOURCE_DIR SCRATCH_DIR
+A last run installs the .deb a build job would share (DEB_DIR: the deb_package
+test's output) instead of building, with paths given as a list, one of them
+holding a space, and args quoted as in a shell.
+
+  run_action.py SOURCE_DIR SCRATCH_DIR [DEB_DIR]
 """
 import json
 import os
+import glob
 import re
 import shutil
 import subprocess
@@ -20,6 +25,7 @@ import yaml
 
 SOURCE = os.path.abspath(sys.argv[1])
 SCRATCH = os.path.abspath(sys.argv[2])
+DEB_DIR = os.path.abspath(sys.argv[3]) if len(sys.argv) > 3 else None
 EXPRESSION = re.compile(r"\$\{\{\s*(.*?)\s*\}\}")
 
 BAD = "#version 300 es\nprecision highp float;\nout vec4 color;\nvoid main() { color = vec3(1.0); }\n"
@@ -199,8 +205,34 @@ def main():
     if (first.group(pattern["file"]), first.group(pattern["line"]),
             first.group(pattern["severity"])) != ("shaders/color.frag", "4", "error"):
         fail("the problem matcher read %r" % (first.groups(),))
+    installed_from = "a source build"
+    if DEB_DIR:
+        debs = sorted(glob.glob(os.path.join(DEB_DIR, "shaderport_*.deb")))
+        if not debs:
+            fail("no .deb in " + DEB_DIR)
+        workspace = make_workspace("from-deb", BAD)
+        spaced = os.path.join(workspace, "more shaders")
+        os.makedirs(spaced)
+        with open(os.path.join(spaced, "second color.frag"), "w") as f:
+            f.write(BAD)
+        inputs = {"paths": "shaders\n  more shaders  \n", "deb": debs[0],
+                  "args": "--fail-on 'warning' --no-config"}
+        context, log = run_action(workspace, inputs, os.path.join(SCRATCH, "no-build"))
+        install = step(log, "Install shaderport")
+        if install[1] != 0:
+            fail("installing the .deb failed:\n" + install[2])
+        if os.path.exists(os.path.join(SCRATCH, "no-build")):
+            fail("the .deb install built shaderport")
+        check = step(log, "Check shaders")
+        if context.steps["check"].get("exit-code") != "1":
+            fail("from the .deb: exit-code=%r\n%s" % (context.steps["check"].get("exit-code"),
+                                                       check[2]))
+        for name in ("shaders/color.frag", "more shaders/second color.frag"):
+            if not re.search(r"^::error file=%s,line=4," % re.escape(name), check[2], re.M):
+                fail("no annotation for %r (paths as a list):\n%s" % (name, check[2]))
+        installed_from = "a source build and from " + os.path.basename(debs[0])
     print("action: finding fails the job after upload and annotation; clean passes; "
-          "problem matcher reads %d line(s)" % len(matches))
+          "problem matcher reads %d line(s); installed from %s" % (len(matches), installed_from))
 
 
 main()

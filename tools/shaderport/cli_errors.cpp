@@ -17,6 +17,16 @@ void PrintError(std::string_view message) {
                printable.data());
 }
 
+void PrintUnwritten(std::span<const std::filesystem::path> unwritten) {
+  for (const std::filesystem::path& path : unwritten) {
+    const std::string printable = EscapeControlCharacters(path.string());
+    std::fprintf(stderr,
+                 "shaderport: note: %s: not written: the ported shader does not compile "
+                 "(--write-invalid writes it anyway)\n",
+                 printable.c_str());
+  }
+}
+
 int UsageError(std::string_view message) {
   PrintError(message);
   return kExitUsage;

@@ -12,6 +12,10 @@ namespace shaderport::cli {
 // Prints `shaderport: error: MESSAGE`.
 void PrintError(std::string_view message);
 
+// Prints `shaderport: note: PATH: not written: ...` for each ported input whose
+// output does not compile (port writes it only with --write-invalid).
+void PrintUnwritten(std::span<const std::filesystem::path> unwritten);
+
 // Prints the error and returns the exit code of a usage or input error (2).
 int UsageError(std::string_view message);
 

@@ -48,7 +48,9 @@ struct PortArgs {
   unsigned jobs = 0;  // unsigned: CLI11 refuses "-1" as it does for check
   std::string progress = "auto";
   std::string fail_on = "error";
+  bool write_invalid = false;
 };
+
 
 int RunPort(const PortArgs& args) {
   const std::optional<ProgressMode> progress_mode = ParseProgressMode(args.progress);
@@ -74,8 +76,9 @@ int RunPort(const PortArgs& args) {
   emit_options.hlsl_shader_model = args.hlsl_shader_model;
   emit_options.msl_version = args.msl_version;
   bool config_failed = false;
-  const auto inputs = SelectInputFiles(args.input, "port", config_failed);
+  auto inputs = SelectInputFiles(args.input, "port", config_failed);
   if (!inputs) return kExitUsage;
+  driver::RelativeToCommonRoot(*inputs);
   const int config_exit = config_failed ? kExitFindings : kExitOk;
   // A page may draw two files (a vertex and a fragment shader): --emit html checks -o.
   if (!args.output.empty() && inputs->size() != 1 && !emit_html) {
@@ -83,6 +86,11 @@ int RunPort(const PortArgs& args) {
                       std::to_string(inputs->size()) + " (use --out-dir)");
   }
   if (inputs->empty()) return config_exit;  // --allow-empty, or all excluded
+  // Standard output holds one shader: two would run together into one invalid text.
+  if (args.output.empty() && args.out_dir.empty() && inputs->size() > 1 && !emit_html) {
+    return UsageError("the paths hold " + std::to_string(inputs->size()) +
+                      " input files and standard output takes one shader: use --out-dir DIR");
+  }
   if (!args.output.empty()) {
     std::vector<std::filesystem::path> read;
     for (const driver::InputFile& input : *inputs) read.push_back(input.path);
@@ -101,8 +109,9 @@ int RunPort(const PortArgs& args) {
     const ProjectEmit emit = emit_html     ? ProjectEmit::kHtml
                              : emit_folder ? ProjectEmit::kFolder
                                            : ProjectEmit::kShaders;
-    const int code =
-        PortProjectInputs(*inputs, options, {args.output, args.out_dir, emit, *fail_on}, sources);
+    const int code = PortProjectInputs(
+        *inputs, options, {args.output, args.out_dir, emit, *fail_on, args.write_invalid},
+        sources);
     return std::max(code, config_exit);
   }
 
@@ -128,10 +137,15 @@ int RunPort(const PortArgs& args) {
   std::vector<std::optional<std::string>> outputs(results.size());
   std::vector<std::filesystem::path> input_paths;
   std::vector<std::filesystem::path> targets(results.size());
+  std::vector<std::filesystem::path> unwritten;
   for (size_t i = 0; i < results.size(); ++i) {
     const driver::PortResult& result = results[i];
     input_paths.push_back((*inputs)[i].path);
     if (!result.HasOutput()) continue;  // its findings say why
+    if (!result.validated && !args.write_invalid) {
+      unwritten.push_back((*inputs)[i].path);
+      continue;
+    }
     std::string extension = result.output_stage == driver::Stage::kVertex ? ".vert" : ".frag";
     if (*emit_kind == toolchain::EmitKind::kEssl) {
       outputs[i] = result.text;
@@ -177,6 +191,7 @@ int RunPort(const PortArgs& args) {
   if (!driver::HasFindings(results)) return exit_code;
   const bool color = ::isatty(STDERR_FILENO) != 0 && std::getenv("NO_COLOR") == nullptr;
   std::fputs(driver::FormatPortFindings(results, sources, color).c_str(), stderr);
+  PrintUnwritten(unwritten);
   return std::max(exit_code, driver::FailsAt(results, *fail_on) ? kExitFindings : kExitOk);
 }
 
@@ -208,6 +223,8 @@ void AddPortCommand(CLI::App& app, int& exit_code) {
                       "MSL version for --emit msl, e.g. 20000 (2.0, default)");
   command->add_option("-j,--jobs", args->jobs, "Files ported in parallel (default: all cores)");
   AddFailOnOption(*command, args->fail_on);
+  command->add_flag("--write-invalid", args->write_invalid,
+                    "Write (or print) a ported shader even when it does not compile");
   command
       ->add_option("--progress", args->progress,
                    "auto | always | never: a progress line on standard error (auto: on a "

@@ -26,6 +26,8 @@ int main(int argc, char** argv) {
   AddExplainFileCommand(app, exit_code);
   AddReportCommand(app, exit_code);
   AddMergeCommand(app, exit_code);
+  AddCompletionCommand(app, exit_code);
+  AddManCommand(app, exit_code);
   try {
     if (const auto handled = HandleCommandWord(app, argc, argv)) return *handled;
     app.parse(argc, argv);

@@ -90,7 +90,8 @@ std::optional<int> HandleCommandWord(CLI::App& app, int argc, char** argv) {
                       " (options go after the command: 'shaderport help COMMAND')");
   }
   if (word == "help") {
-    if (argc == 2) {
+    // `help help` is the general help, as git's is.
+    if (argc == 2 || (argc == 3 && std::string_view(argv[2]) == "help")) {
       std::fputs(app.help().c_str(), stdout);
       return kExitOk;
     }

@@ -30,7 +30,8 @@ struct ProgramInput {
 // given together (or, among more files, with the same directory and name) make one
 // page; the others a page each. Appends (input, page) in input order.
 void ProgramPages(const std::vector<ProgramInput>& programs, std::vector<driver::InputFile>& inputs,
-                  std::vector<driver::project::DocumentOutput>& pages) {
+                  std::vector<driver::project::DocumentOutput>& pages,
+                  std::vector<bool>& compiles) {
   std::vector<int> partner(programs.size(), -1);
   const auto pair = [&](size_t a, size_t b) {
     partner[a] = static_cast<int>(b);
@@ -56,6 +57,8 @@ void ProgramPages(const std::vector<ProgramInput>& programs, std::vector<driver:
     inputs.push_back(programs[i].input);
     pages.push_back(driver::project::ProgramPage(vertex ? &vertex->result : nullptr,
                                                  fragment ? &fragment->result : nullptr));
+    compiles.push_back((vertex == nullptr || vertex->result.validated) &&
+                       (fragment == nullptr || fragment->result.validated));
   }
 }
 
@@ -71,6 +74,7 @@ int PortProjectInputs(const std::vector<driver::InputFile>& inputs,
   int exit_code = kExitOk;
   std::set<fs::path> folders_done;
   std::vector<ProgramInput> programs;  // --emit html of shaders that are not ShaderToy's
+  std::vector<fs::path> unwritten;     // ported, but a pass does not compile
   for (const driver::InputFile& input : inputs) {
     // A tab file of a project folder stands for the whole folder, ported once.
     const fs::path folder = driver::project::ProjectFolderOf(input.path);
@@ -100,6 +104,12 @@ int PortProjectInputs(const std::vector<driver::InputFile>& inputs,
     // A pass whose fixes did not settle: nothing of its document is written (exit 3).
     if (!documents.back().Findings().converged) {
       exit_code = kExitInternal;
+      continue;
+    }
+    // A folder is the project as written; a port that does not compile is not written.
+    if (targets.emit != ProjectEmit::kFolder && !targets.write_invalid &&
+        !documents.back().read_failed && !documents.back().Validated()) {
+      unwritten.push_back(input.path);
       continue;
     }
     const auto outputs =
@@ -135,8 +145,13 @@ int PortProjectInputs(const std::vector<driver::InputFile>& inputs,
   }
   std::vector<driver::InputFile> program_inputs;
   std::vector<driver::project::DocumentOutput> program_pages;
-  ProgramPages(programs, program_inputs, program_pages);
+  std::vector<bool> program_pages_valid;
+  ProgramPages(programs, program_inputs, program_pages, program_pages_valid);
   for (size_t i = 0; i < program_pages.size(); ++i) {
+    if (!targets.write_invalid && !program_pages_valid[i]) {
+      unwritten.push_back(program_inputs[i].path);
+      continue;
+    }
     // geometry.vert + position.frag -> OUT/position.html (named after the fragment).
     input_paths.push_back(program_inputs[i].path);
     const fs::path base = driver::OutDirPath(targets.out_dir, program_inputs[i].relative, "");
@@ -177,6 +192,7 @@ int PortProjectInputs(const std::vector<driver::InputFile>& inputs,
   if (!driver::HasFindings(findings)) return exit_code;
   const bool color = ::isatty(STDERR_FILENO) != 0 && std::getenv("NO_COLOR") == nullptr;
   std::fputs(driver::FormatPortFindings(findings, sources, color).c_str(), stderr);
+  PrintUnwritten(unwritten);
   return std::max(exit_code, driver::FailsAt(findings, targets.fail_on) ? kExitFindings : kExitOk);
 }
 

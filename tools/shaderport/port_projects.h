@@ -22,6 +22,7 @@ struct ProjectPortTargets {
   std::string out_dir;  // --out-dir
   ProjectEmit emit = ProjectEmit::kShaders;
   Severity fail_on = Severity::kError;  // --fail-on
+  bool write_invalid = false;           // --write-invalid: write outputs that do not compile
 };
 
 // Ports `inputs` (each a .json/.jsonl document, or with `html` a ShaderToy pass),

@@ -94,6 +94,43 @@ std::filesystem::path OutDirPath(const std::filesystem::path& out_dir,
 
 namespace {
 
+namespace fs = std::filesystem;
+
+// The argument an input came from, absolute: a named file's directory, or the
+// directory that was walked (the path without its `relative` tail).
+fs::path ArgumentDirectory(const InputFile& input) {
+  std::error_code error;
+  fs::path directory = fs::absolute(input.path, error).lexically_normal();
+  if (input.named) return directory.parent_path();
+  for (auto part = input.relative.begin(); part != input.relative.end(); ++part) {
+    directory = directory.parent_path();
+  }
+  return directory;
+}
+
+fs::path CommonAncestor(const fs::path& a, const fs::path& b) {
+  fs::path common;
+  for (auto x = a.begin(), y = b.begin(); x != a.end() && y != b.end() && *x == *y; ++x, ++y) {
+    common /= *x;
+  }
+  return common;
+}
+
+}  // namespace
+
+void RelativeToCommonRoot(std::vector<InputFile>& inputs) {
+  if (inputs.empty()) return;
+  fs::path root = ArgumentDirectory(inputs.front());
+  for (const InputFile& input : inputs) root = CommonAncestor(root, ArgumentDirectory(input));
+  for (InputFile& input : inputs) {
+    std::error_code error;
+    const fs::path absolute = fs::absolute(input.path, error).lexically_normal();
+    input.relative = absolute.lexically_relative(root);
+  }
+}
+
+namespace {
+
 // The same file however it is named (without throwing on unreadable paths).
 std::filesystem::path SameFileKey(const std::filesystem::path& path) {
   std::error_code error;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "base/file_io/atomic_write.h"  // WriteFileAtomically
+#include "driver/input_files.h"
 
 namespace shaderport::driver {
 
@@ -17,6 +18,13 @@ namespace shaderport::driver {
 // outside DIR.
 std::filesystem::path OutDirPath(const std::filesystem::path& out_dir,
                                  const std::filesystem::path& relative, std::string_view extension);
+
+// One layout for named files and walked directories, as tsc's rootDir: each
+// input's `relative` becomes its path below the deepest directory that holds every
+// argument (a named file's directory, a walked directory itself). `port --out-dir
+// out shaders/` and `port --out-dir out shaders/a/b.glsl shaders/c.glsl` both write
+// shaders/a/b.glsl to out/a/b.frag.
+void RelativeToCommonRoot(std::vector<InputFile>& inputs);
 
 // "" when the targets are distinct and none of them is one of the inputs (which
 // writing would replace); else a message naming the clash. Empty targets (nothing

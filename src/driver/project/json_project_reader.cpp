@@ -7,6 +7,7 @@
 
 #include "base/limits.h"
 #include "driver/project/json_code_strings.h"
+#include "driver/read_input.h"
 #include "driver/project/json_members.h"
 
 namespace shaderport::driver::project {
@@ -368,8 +369,15 @@ ProjectDocument ReadShaderToyJsonLines(std::string_view text) {
     size_t end = text.find('\n', start);
     if (end == std::string_view::npos) end = text.size();
     const std::string_view line = text.substr(start, end - start);
-    if (line.find_first_not_of(" \t\r") != std::string_view::npos)
+    if (line.size() > limits::kMaxFileBytes) {
+      // The file's limit is per project: one too large a line is left out, not the file.
+      out.problems.push_back({static_cast<uint32_t>(start),
+                              "this line (one project) is " + MebibytesOf(line.size()) +
+                                  " MiB, larger than the " + MebibytesOf(limits::kMaxFileBytes) +
+                                  " MiB limit of one project; it was not read"});
+    } else if (line.find_first_not_of(" \t\r") != std::string_view::npos) {
       ReadDocument(line, static_cast<uint32_t>(start), out);
+    }
     start = end + 1;
   }
   return out;

@@ -1,5 +1,7 @@
 #include "driver/project/port_document.h"
 
+#include <algorithm>
+
 #include "driver/project/folder_project.h"
 #include "driver/project/html_page.h"
 #include "driver/project/load_document.h"
@@ -81,6 +83,12 @@ PortResult PortedDocument::Findings() const {
       findings.converged = findings.converged && pass.result.converged;
   }
   return findings;
+}
+
+bool PortedDocument::Validated() const {
+  if (read_failed) return false;
+  return std::all_of(ported.begin(), ported.end(),
+                     [](const PortedProject& project) { return project.validated; });
 }
 
 PortedDocument PortDocument(const std::filesystem::path& path, InputText input,

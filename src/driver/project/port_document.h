@@ -23,6 +23,8 @@ struct PortedDocument {
 
   // Every finding once, for the text report (the document's problems included).
   PortResult Findings() const;
+  // Read, and every pass of every project ported to a shader that compiles.
+  bool Validated() const;
 };
 
 // With `port` false the projects are only read (for FolderOutputs).

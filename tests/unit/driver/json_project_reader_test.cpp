@@ -73,6 +73,23 @@ TEST(JsonProjectReader, ReadsListsBareExportsAndCorpusRecordsAndJsonLines) {
   EXPECT_GT(second, record.size());
 }
 
+// The 8 MiB limit is per project: one line past it is left out with a problem at that
+// line, and the lines around it are read.
+TEST(JsonProjectReader, ALineOverTheProjectLimitIsLeftOutAlone) {
+  const std::string record =
+      R"({"id": "r1", "passes": [{"type": "image", "name": "Image", "code": "b"}]})";
+  const std::string huge = R"({"id": "big", "passes": [{"type": "image", "name": "Image", "code": ")" +
+                           std::string(9u << 20, 'x') + ""}]}";
+  const std::string lines = record + "\n" + huge + "\n" + record + "\n";
+  const ProjectDocument read = ReadShaderToyJsonLines(lines);
+  EXPECT_EQ(read.projects.size(), 2u);
+  ASSERT_EQ(read.problems.size(), 1u);
+  EXPECT_EQ(read.problems[0].offset, record.size() + 1);
+  EXPECT_NE(read.problems[0].message.find("9.1 MiB, larger than the 8 MiB limit of one project"),
+            std::string::npos)
+      << read.problems[0].message;
+}
+
 TEST(JsonProjectReader, ReportsWhatIsWrongAndWhere) {
   const ProjectDocument broken = ReadShaderToyJson("{\"Shader\": {\"renderpass\": [}");
   ASSERT_EQ(broken.problems.size(), 1u);

@@ -64,7 +64,9 @@ TEST(PortabilityGolden, EveryRuleHasCases) {
   EXPECT_GE(count(kUninitialized), 8);
   EXPECT_GE(count(kIndexRange), 6);
   EXPECT_GE(count(kMissingReturn), 3);
-  EXPECT_EQ(PortabilityRules().size(), 3u);
+  EXPECT_GE(count("portability/infinite-loop"), 8);
+  EXPECT_GE(count("portability/output-never-written"), 6);
+  EXPECT_EQ(PortabilityRules().size(), 5u);
 }
 
 TEST(PortabilityGolden, Cases) {
@@ -115,7 +117,8 @@ TEST(PortabilityGolden, Cases) {
 
 // The lint scope: `check` runs both rules, `fix` and `port` apply their fixes.
 TEST(PortabilityRules, ScopeLintRunsInCheckFixAndPort) {
-  for (std::string_view id : {kUninitialized, kIndexRange}) {
+  for (std::string_view id : {kUninitialized, kIndexRange, std::string_view("portability/infinite-loop"),
+                              std::string_view("portability/output-never-written")}) {
     const rule::Rule* r = rules::FindRule(id);
     ASSERT_NE(r, nullptr) << id;
     EXPECT_EQ(r->Info().scope, rule::RuleScope::kLint) << id;
@@ -159,7 +162,8 @@ TEST(PortabilityRules, FixModeWritesTheBrowsersZeros) {
   options.analyze = typing_test::AnalyzerFor(Kind::kShaderToy, rule::ShaderStage::kFragment);
   const rule::FixEngineResult fixed = rule::RunFixEngine(file, options);
   EXPECT_EQ(fixed.text,
-            "void mainImage(out vec4 O, in vec2 U) { O = vec4(0.0);\n"
+            "void mainImage(out vec4 O, in vec2 U) {\n"
+            "  O = vec4(0.0);\n"
             "  vec4 col2 = vec4(0.0);\n"
             "  col2 += vec4(0.5);\n"
             "  O += col2;\n"

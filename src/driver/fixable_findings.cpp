@@ -1,0 +1,88 @@
+#include "driver/fixable_findings.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace shaderport::driver {
+namespace {
+
+rule::ChannelKind KindOf(validate::ChannelType type) {
+  switch (type) {
+    case validate::ChannelType::kCube:
+      return rule::ChannelKind::kCube;
+    case validate::ChannelType::k3D:
+      return rule::ChannelKind::k3D;
+    case validate::ChannelType::k2D:
+      break;
+  }
+  return rule::ChannelKind::k2D;
+}
+
+uint32_t LineOf(const SourceManager& sources, const SourceRange& range) {
+  return sources.Get(range.file).LocationOf(range.begin).line;
+}
+
+bool Overlaps(const SourceRange& a, const SourceRange& b) {
+  if (a.file != b.file) return false;
+  // An empty range (an insertion point, a caret) overlaps what it touches.
+  return a.begin <= b.end && b.begin <= a.end;
+}
+
+// Still reported after the fix: same rule on the same line.
+bool Remains(const Diagnostic& finding, const PortResult& fixed, const SourceManager& sources) {
+  const uint32_t line = LineOf(sources, finding.range);
+  return std::any_of(fixed.diagnostics.begin(), fixed.diagnostics.end(), [&](const Diagnostic& d) {
+    return d.rule_id == finding.rule_id && d.range.file == finding.range.file &&
+           LineOf(sources, d.range) == line;
+  });
+}
+
+}  // namespace
+
+PortOptions FixOptionsFor(const FileDecision& decision) {
+  PortOptions options;
+  options.mode = rule::PortMode::kFix;
+  options.dialect = decision.kind.dialect;
+  options.stage = decision.kind.stage;
+  if (decision.IsShaderToy()) options.pass = decision.kind.pass;
+  if (!decision.IsShaderToy()) options.harness = decision.harness;
+  for (size_t i = 0; i < decision.channels.size(); ++i) {
+    options.channels[i] = KindOf(decision.channels[i]);
+  }
+  return options;
+}
+
+void AttachRepairs(const PortResult& fixed, const SourceManager& sources,
+                   DiagnosticList& findings) {
+  if (!fixed.HasOutput() || fixed.fixed.empty() || fixed.file == nullptr) return;
+  std::vector<const Diagnostic*> repairs;
+  for (const Diagnostic& repair : fixed.fixed) {
+    if (IsFixable(repair) && repair.range.file != kNoFile) repairs.push_back(&repair);
+  }
+  // First the repairs on the finding itself, then those on its line: glslang often
+  // points at the operator next to the literal a rule rewrites.
+  for (const bool same_line_only : {false, true}) {
+    for (Diagnostic& finding : findings) {
+      if (IsFixable(finding) || finding.range.file == kNoFile) continue;
+      if (Remains(finding, fixed, sources)) continue;
+      const uint32_t line = LineOf(sources, finding.range);
+      for (const Diagnostic*& repair : repairs) {
+        if (repair == nullptr) continue;
+        const bool matches = same_line_only
+                                 ? repair->range.file == finding.range.file &&
+                                       LineOf(sources, repair->range) == line
+                                 : Overlaps(repair->range, finding.range);
+        if (!matches) continue;
+        for (const FixIt& fix : repair->fixes) {
+          if (fix.safety == FixSafety::kSafe) finding.fixes.push_back(fix);
+        }
+        finding.notes.push_back({repair->range, "'shaderport fix' repairs this (" +
+                                                    repair->rule_id + "): " + repair->message});
+        repair = nullptr;
+        break;
+      }
+    }
+  }
+}
+
+}  // namespace shaderport::driver

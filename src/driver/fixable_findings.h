@@ -1,0 +1,22 @@
+// Which findings of a check `shaderport fix` repairs. check runs fix on the file as
+// it decided the file (fix mode, validated as the host composes it); a finding that
+// is gone from fix's result gets the safe fix-its of the rule findings fix applied
+// on it (or else on its line), each used once, so that every output format can mark
+// it fixable (text `[*]`, JSON `fixable`, SARIF `fixes`) and an editor can apply it.
+#pragma once
+
+#include "diag/diagnostic.h"
+#include "driver/file_decision.h"
+#include "driver/port/port_file.h"
+#include "source/source_manager.h"
+
+namespace shaderport::driver {
+
+// The fix-mode options that read a file as `decision` says it is.
+PortOptions FixOptionsFor(const FileDecision& decision);
+
+// Attaches to `findings` (check's, located in the original files) the fixes of the
+// findings `fixed` repaired. Findings that already carry a safe fix are left alone.
+void AttachRepairs(const PortResult& fixed, const SourceManager& sources, DiagnosticList& findings);
+
+}  // namespace shaderport::driver
