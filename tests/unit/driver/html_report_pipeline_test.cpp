@@ -45,6 +45,12 @@ std::optional<std::string> Base64Decode(std::string_view text) {
   return out;
 }
 
+std::string Text(const ReportStep& step) {
+  std::string text;
+  for (const ReportFinding& finding : step.findings) text += finding.text;
+  return text;
+}
+
 uint32_t BigEndian(const std::string& bytes, size_t at) {
   return (uint32_t{static_cast<uint8_t>(bytes[at])} << 24) |
          (uint32_t{static_cast<uint8_t>(bytes[at + 1])} << 16) |
@@ -107,25 +113,41 @@ TEST_F(HtmlReportPipeline, EveryShaderHasAnEntryWithItsSteps) {
   EXPECT_EQ(good.dialect, "shadertoy");
   EXPECT_EQ(good.check.status, StepStatus::kPass);
   EXPECT_EQ(good.port.status, StepStatus::kPass);
-  EXPECT_NE(good.render.status, StepStatus::kFail) << good.render.diagnostics;
+  EXPECT_NE(good.render.status, StepStatus::kFail) << Text(good.render);
   EXPECT_FALSE(good.png.empty());
 
   const ReportEntry& broken = Entry("b-broken.glsl");
   EXPECT_EQ(broken.check.status, StepStatus::kFail);
-  EXPECT_NE(broken.check.diagnostics.find("error:"), std::string::npos);
+  ASSERT_FALSE(broken.check.findings.empty());
+  EXPECT_NE(broken.check.findings.front().text.find("error:"), std::string::npos);
+  // glslang's error is keyed for folding; the text is one finding, no summary line.
+  EXPECT_TRUE(broken.check.findings.front().cascade.starts_with("glslang "));
+  EXPECT_EQ(broken.check.findings.front().text.find(" checked)"), std::string::npos);
   // `port` fixes the int literal, so the port validates and renders.
-  EXPECT_EQ(broken.port.status, StepStatus::kPass) << broken.port.diagnostics;
+  EXPECT_EQ(broken.port.status, StepStatus::kPass) << Text(broken.port);
   EXPECT_FALSE(broken.png.empty());
 
   const ReportEntry& webgl2 = Entry("c-webgl2.frag");
   EXPECT_EQ(webgl2.dialect, "webgl2");
   EXPECT_EQ(webgl2.check.status, StepStatus::kPass);
-  EXPECT_FALSE(webgl2.png.empty()) << webgl2.render.diagnostics;
+  EXPECT_FALSE(webgl2.png.empty()) << Text(webgl2.render);
 }
 
 TEST_F(HtmlReportPipeline, PageHasSectionsBadgesAndEscapedDiagnostics) {
   const std::string& html = *html1_;
   EXPECT_NE(html.find("<section id=\"summary\">"), std::string::npos);
+  // The gallery opens the page: one tile per shader, the broken one marked failing.
+  const size_t gallery = html.find("<section id=\"gallery\">");
+  ASSERT_NE(gallery, std::string::npos);
+  EXPECT_LT(gallery, html.find("<section id=\"summary\">"));
+  EXPECT_LT(gallery, html.find("<pre>"));
+  size_t tiles = 0;
+  for (size_t at = html.find("<a class=\"tile "); at != std::string::npos;
+       at = html.find("<a class=\"tile ", at + 1)) {
+    ++tiles;
+  }
+  EXPECT_EQ(tiles, 3u);
+  EXPECT_NE(html.find("<a class=\"tile is-fail\" href=\"#shader-2\""), std::string::npos);
   EXPECT_NE(html.find("<section id=\"shaders\">"), std::string::npos);
   EXPECT_NE(html.find("<tr><th>check</th><td>2</td><td>0</td><td>1</td><td>0</td></tr>"),
             std::string::npos);
