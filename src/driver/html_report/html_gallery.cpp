@@ -1,5 +1,7 @@
 #include "driver/html_report/html_gallery.h"
 
+#include <utility>
+
 #include "driver/html_report/png_base64.h"
 
 namespace shaderport::driver {
@@ -25,6 +27,23 @@ const char* BadgeColour(EntryStatus status) {
   return "pass";
 }
 
+// "fails: check, port": which steps, since a failing check can sit beside a picture
+// (the port fixed it).
+std::string BadgeText(const ReportEntry& entry, EntryStatus status) {
+  std::string text = EntryStatusLabel(status);
+  if (status != EntryStatus::kFail && status != EntryStatus::kWarn) return text;
+  const StepStatus worst = status == EntryStatus::kFail ? StepStatus::kFail : StepStatus::kWarn;
+  const char* separator = ": ";
+  for (const auto& [name, step] : {std::pair{"check", &entry.check}, std::pair{"port", &entry.port},
+                                   std::pair{"render", &entry.render}}) {
+    if (step->status != worst) continue;
+    text += separator;
+    text += name;
+    separator = ", ";
+  }
+  return text;
+}
+
 void AppendFilterLabel(std::string& out, std::string_view id, std::string_view label,
                        size_t count) {
   out += "<label for=\"filter-" + std::string(id) + "\">" + std::string(label) + " (" +
@@ -43,7 +62,7 @@ void AppendTile(std::string& out, const ReportEntry& entry, size_t index) {
            PngDataUri(entry.png) + "\"></span>";
   }
   out += "<span class=\"badge " + std::string(BadgeColour(status)) + "\">" +
-         EntryStatusLabel(status) + "</span><span class=\"name\">" + path + "</span></a>\n";
+         BadgeText(entry, status) + "</span><span class=\"name\">" + path + "</span></a>\n";
 }
 
 }  // namespace

@@ -76,7 +76,8 @@ TEST(HtmlReportGallery, OneTilePerShaderWithItsStatusLinkingToItsDetails) {
       "<a class=\"tile is-not-rendered\" href=\"#shader-4\" title=\"d-none.glsl\">",
   };
   for (const char* tile : tiles) EXPECT_NE(gallery.find(tile), std::string::npos) << tile;
-  for (const char* badge : {">passes<", ">warnings<", ">fails<", ">not rendered<"}) {
+  // A failing or warning badge names the steps.
+  for (const char* badge : {">passes<", ">warnings: check<", ">fails: check<", ">not rendered<"}) {
     EXPECT_EQ(Occurrences(gallery, badge), 1u) << badge;
   }
   // The thumbnail lives in the tile, once: the details do not repeat the base64.
@@ -100,6 +101,15 @@ TEST(HtmlReportGallery, StatusIsTheWorstStepThenTheMissingPicture) {
             EntryStatus::kWarn);
   EXPECT_EQ(StatusOfEntry(Entry("x", StepStatus::kPass, StepStatus::kSkipped, false)),
             EntryStatus::kNotRendered);
+}
+
+TEST(HtmlReportGallery, BadgeNamesEveryStepAtTheWorstStatus) {
+  HtmlReport report;
+  ReportEntry entry = Entry("a.glsl", StepStatus::kFail, StepStatus::kFail, false);
+  entry.port.status = StepStatus::kWarn;
+  report.entries.push_back(entry);
+  EXPECT_NE(FormatHtmlReport(report).find("<span class=\"badge fail\">fails: check, render</span>"),
+            std::string::npos);
 }
 
 TEST(HtmlReportGallery, FiltersArePureCssRadiosBeforeTheGalleryWithCounts) {

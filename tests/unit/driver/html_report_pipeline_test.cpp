@@ -1,9 +1,11 @@
 // `report --html` end to end on a small directory copied from the corpus: a ShaderToy
-// pass, a WebGL2 shader and a ShaderToy pass with a typing error.
+// pass, a WebGL2 shader, a ShaderToy pass with a typing error and one whose undeclared
+// name gives glslang several errors.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <optional>
 #include <string>
 #include <vector>
@@ -71,6 +73,11 @@ class HtmlReportPipeline : public ::testing::Test {
     fs::copy_file(corpus / "strict-typing/compare-float-with-int.glsl", *dir_ / "b-broken.glsl");
     fs::copy_file(corpus / "strict-typing/control-explicit-conversions.frag",
                   *dir_ / "c-webgl2.frag");
+    std::ofstream(*dir_ / "d-cascade.glsl") << "void mainImage(out vec4 o, in vec2 u) {\n"
+                                               "  o = vec4(missing);\n"
+                                               "  o.x = missing.x;\n"
+                                               "  o.y = missing.y;\n"
+                                               "}\n";
     HtmlReportOptions options;
     options.paths = {*dir_};
     options.render.hermetic = true;
@@ -107,7 +114,7 @@ std::string* HtmlReportPipeline::html1_ = nullptr;
 std::string* HtmlReportPipeline::html2_ = nullptr;
 
 TEST_F(HtmlReportPipeline, EveryShaderHasAnEntryWithItsSteps) {
-  ASSERT_EQ(run_->report.entries.size(), 3u);
+  ASSERT_EQ(run_->report.entries.size(), 4u);
   EXPECT_TRUE(run_->usage_errors.empty());
   const ReportEntry& good = Entry("a-template.glsl");
   EXPECT_EQ(good.dialect, "shadertoy");
@@ -146,12 +153,12 @@ TEST_F(HtmlReportPipeline, PageHasSectionsBadgesAndEscapedDiagnostics) {
        at = html.find("<a class=\"tile ", at + 1)) {
     ++tiles;
   }
-  EXPECT_EQ(tiles, 3u);
+  EXPECT_EQ(tiles, 4u);
   EXPECT_NE(html.find("<a class=\"tile is-fail\" href=\"#shader-2\""), std::string::npos);
   EXPECT_NE(html.find("<section id=\"shaders\">"), std::string::npos);
-  EXPECT_NE(html.find("<tr><th>check</th><td>2</td><td>0</td><td>1</td><td>0</td></tr>"),
+  EXPECT_NE(html.find("<tr><th>check</th><td>2</td><td>0</td><td>2</td><td>0</td></tr>"),
             std::string::npos);
-  for (const char* name : {"a-template.glsl", "b-broken.glsl", "c-webgl2.frag"}) {
+  for (const char* name : {"a-template.glsl", "b-broken.glsl", "c-webgl2.frag", "d-cascade.glsl"}) {
     EXPECT_NE(html.find(name), std::string::npos) << name;
   }
   EXPECT_NE(html.find("class=\"badge fail\">check: fail"), std::string::npos);
@@ -159,6 +166,21 @@ TEST_F(HtmlReportPipeline, PageHasSectionsBadgesAndEscapedDiagnostics) {
   EXPECT_NE(html.find("if (uv.x &gt; 0)"), std::string::npos);
   EXPECT_EQ(html.find("if (uv.x > 0)"), std::string::npos);
   EXPECT_EQ(html.find("<script"), std::string::npos);
+}
+
+TEST_F(HtmlReportPipeline, GlslangCascadeIsFoldedUnderItsFirstError) {
+  const ReportEntry& cascade = Entry("d-cascade.glsl");
+  const std::vector<ReportFinding>& findings = cascade.check.findings;
+  ASSERT_GE(findings.size(), 2u) << Text(cascade.check);
+  for (const ReportFinding& finding : findings) {
+    EXPECT_EQ(finding.cascade, findings.front().cascade) << finding.text;
+  }
+  EXPECT_NE(findings.front().text.find("'missing': undeclared identifier"), std::string::npos);
+  const std::string& html = *html1_;
+  const size_t details = html.find("id=\"shader-4\"");
+  ASSERT_NE(details, std::string::npos);
+  const std::string more = "+" + std::to_string(findings.size() - 1) + " more errors";
+  EXPECT_NE(html.find("<details class=\"cascade\"><summary>" + more, details), std::string::npos);
 }
 
 TEST_F(HtmlReportPipeline, EveryRenderedShaderHasAValidPngDataUri) {
