@@ -45,8 +45,7 @@ void AppendFindings(std::string& out, const std::vector<ReportFinding>& findings
     open = false;
     const std::string count = std::to_string(rest.size());
     out += "<details class=\"cascade\"><summary>+" + count + " more " +
-           (rest.size() == 1 ? "error" : "errors") +
-           " from the same compile</summary><pre>";
+           (rest.size() == 1 ? "error" : "errors") + " from the same compile</summary><pre>";
     for (const size_t j : rest) out += HtmlEscape(findings[j].text);
     out += "</pre></details>\n";
   }
