@@ -69,7 +69,7 @@ PortResult PortEntry(const Job& job, SourceManager& sources, ReportEntry& entry)
                                                            : "validated WebGL2 (unchanged)")
                                        : "the ported text does not validate";
   if (ported.narrowed) entry.port.detail += "; some fixes were dropped";
-  entry.port.diagnostics = DiagnosticText(ported.file, ported.diagnostics, sources);
+  entry.port.findings = DiagnosticFindings(ported.file, ported.diagnostics, sources);
   return ported;
 }
 
@@ -99,8 +99,8 @@ void RenderEntry(const Job& job, const PortResult& ported, const HtmlReportOptio
     entry.render.status = StepStatus::kSkipped;
     entry.render.detail = "not rendered";
   }
-  entry.render.diagnostics = DiagnosticText(rendered.file != nullptr ? rendered.file : ported.file,
-                                            rendered.diagnostics, sources);
+  entry.render.findings = DiagnosticFindings(rendered.file != nullptr ? rendered.file : ported.file,
+                                             rendered.diagnostics, sources);
 }
 
 }  // namespace
@@ -172,7 +172,7 @@ HtmlReportRun BuildHtmlReport(const HtmlReportOptions& options) {
     entry.check.detail = HasErrors(report.diagnostics) ? "glslang rejects it as the target "
                                                          "compiles it"
                                                        : "compiles as the target would";
-    entry.check.diagnostics = DiagnosticText(report.file, report.diagnostics, sources);
+    entry.check.findings = DiagnosticFindings(report.file, report.diagnostics, sources);
     if (!job.shader) {
       entry.port.detail = "not a readable shader";
       entry.render.detail = "not rendered";

@@ -1,6 +1,7 @@
 #include "driver/html_report/html_report.h"
 
-#include "driver/html_report/png_base64.h"
+#include "driver/html_report/html_findings.h"
+#include "driver/html_report/html_gallery.h"
 
 namespace shaderport::driver {
 namespace {
@@ -11,15 +12,13 @@ h1{font-size:1.4em}h2{font-size:1.05em;margin:0 0 .3em;font-family:monospace}
 table.summary{border-collapse:collapse;margin-bottom:2em}
 table.summary td,table.summary th{border:1px solid #ccc;padding:.25em .7em;text-align:right}
 table.summary th:first-child{text-align:left}
-.shader{display:flex;gap:1em;background:#fff;border:1px solid #ddd;border-radius:6px;padding:.8em;margin-bottom:1em}
-.thumb{flex:none;width:128px;height:128px;background:#eee;display:flex;align-items:center;justify-content:center;color:#888;font-size:.8em}
-.thumb img{width:128px;height:128px;image-rendering:pixelated}
-.body{flex:1;min-width:0}.meta{color:#666;font-size:.9em;margin-bottom:.4em}
+.shader{background:#fff;border:1px solid #ddd;border-radius:6px;padding:.8em;margin-bottom:1em}
+.meta{color:#666;font-size:.9em;margin-bottom:.4em}.top{float:right;font-size:.8em}
 .badge{display:inline-block;padding:.1em .5em;border-radius:3px;font-size:.8em;color:#fff;margin-right:.4em}
 .pass{background:#2e7d32}.warn{background:#ef8f00}.fail{background:#c62828}.skipped{background:#888}
 .step{margin:.2em 0}.detail{color:#555;font-size:.9em}
 pre{background:#f4f4f4;padding:.5em;overflow-x:auto;font-size:.8em;margin:.2em 0 .5em}
-ul.toc{columns:2;font-family:monospace;font-size:.85em}
+details.cascade{margin:-.4em 0 .5em 1em;font-size:.85em}details.cascade summary{cursor:pointer;color:#555}
 )";
 
 void Count(StepStatus status, StepCounts& counts) {
@@ -54,11 +53,8 @@ void AppendStep(std::string& out, std::string_view label, const ReportStep& step
   out += "<div class=\"step\">" + Badge(label, step.status);
   if (!step.detail.empty()) out += "<span class=\"detail\">" + HtmlEscape(step.detail) + "</span>";
   out += "</div>\n";
-  if (!step.diagnostics.empty()) out += "<pre>" + HtmlEscape(step.diagnostics) + "</pre>\n";
+  AppendFindings(out, step.findings);
 }
-
-// Stable, HTML-safe anchor ids from the entry's index.
-std::string AnchorId(size_t index) { return "shader-" + std::to_string(index + 1); }
 
 }  // namespace
 
@@ -127,11 +123,16 @@ std::string FormatHtmlReport(const HtmlReport& report) {
       "img-src data:; style-src 'unsafe-inline'\">\n<title>" +
       HtmlEscape(report.title) + "</title>\n<style>\n";
   out += kStyle;
+  out += kGalleryStyle;
   out += "</style>\n</head>\n<body>\n<h1>" + HtmlEscape(report.title) + "</h1>\n";
   out += "<p class=\"meta\">shaderport " + HtmlEscape(report.tool_version) + " &middot; " +
          std::to_string(counts.shaders) + " shaders &middot; renders " +
          std::to_string(report.render_size) + "&times;" + std::to_string(report.render_size) +
          " (ported shader, or the site composition when the port fails)</p>\n";
+
+  // The pictures are why the page is opened: they come first, findings one click away.
+  AppendFilterInputs(out);
+  AppendGallery(out, report);
 
   out += "<section id=\"summary\">\n<h2>Summary</h2>\n<table class=\"summary\">\n";
   out += "<tr><th>step</th><th>pass</th><th>warn</th><th>fail</th><th>skipped</th></tr>\n";
@@ -145,35 +146,22 @@ std::string FormatHtmlReport(const HtmlReport& report) {
     for (const std::string& error : report.errors) out += HtmlEscape(error) + "\n";
     out += "</pre>\n";
   }
-  out += "<ul class=\"toc\">\n";
-  for (size_t i = 0; i < report.entries.size(); ++i) {
-    const ReportEntry& entry = report.entries[i];
-    const bool failed = entry.check.status == StepStatus::kFail ||
-                        entry.port.status == StepStatus::kFail ||
-                        entry.render.status == StepStatus::kFail;
-    out += "<li><a href=\"#" + AnchorId(i) + "\">" + HtmlEscape(entry.path) + "</a>" +
-           (failed ? " <span class=\"badge fail\">fail</span>" : "") + "</li>\n";
-  }
-  out += "</ul>\n</section>\n";
+  out += "</section>\n";
 
   out += "<section id=\"shaders\">\n";
   for (size_t i = 0; i < report.entries.size(); ++i) {
     const ReportEntry& entry = report.entries[i];
-    out += "<div class=\"shader\" id=\"" + AnchorId(i) + "\">\n<div class=\"thumb\">";
-    if (entry.png.empty()) {
-      out += "no picture";
-    } else {
-      out += "<img alt=\"render of " + HtmlEscape(entry.path) + "\" src=\"" +
-             PngDataUri(entry.png) + "\">";
-    }
-    out += "</div>\n<div class=\"body\">\n<h2>" + HtmlEscape(entry.path) + "</h2>\n";
+    // The status class lets the gallery's filters hide details too.
+    out += "<div class=\"shader " + std::string(EntryStatusClass(StatusOfEntry(entry))) +
+           "\" id=\"" + EntryAnchor(i) + "\">\n<a class=\"top\" href=\"#gallery\">gallery</a>\n";
+    out += "<h2>" + HtmlEscape(entry.path) + "</h2>\n";
     out += "<div class=\"meta\">" +
            HtmlEscape(entry.dialect.empty() ? "unknown dialect" : entry.dialect) + " &middot; " +
            HtmlEscape(entry.stage.empty() ? "unknown stage" : entry.stage) + "</div>\n";
     AppendStep(out, "check", entry.check);
     AppendStep(out, "port", entry.port);
     AppendStep(out, "render", entry.render);
-    out += "</div>\n</div>\n";
+    out += "</div>\n";
   }
   out += "</section>\n</body>\n</html>\n";
   return out;

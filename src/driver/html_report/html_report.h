@@ -1,6 +1,8 @@
 // The data of `shaderport report --html` and the page made from it: one
 // self-contained HTML file (inline CSS, thumbnails as data: URIs, no scripts), so
-// that a person can open the corpus's state in a browser. Pure formatting: no I/O.
+// that a person can open the corpus's state in a browser. The page opens on a
+// gallery of thumbnails (html_gallery.h); details follow, with compiler cascades
+// folded (html_findings.h). Pure formatting: no I/O.
 #pragma once
 
 #include <string>
@@ -13,10 +15,19 @@ namespace shaderport::driver {
 enum class StepStatus { kPass, kWarn, kFail, kSkipped };
 const char* StepStatusName(StepStatus status);  // "pass", "warn", "fail", "skipped"
 
+// One finding of a step: its clang-style text (escaped by the formatter).
+struct ReportFinding {
+  std::string text;
+  // A compiler error's cascade, "" for a finding that stands alone (shaderport's own
+  // rules, warnings, notes). Errors with one key came from one compiler run over one
+  // file ("glslang 3", "mesa 3"): the page shows the first and folds the rest.
+  std::string cascade;
+};
+
 struct ReportStep {
   StepStatus status = StepStatus::kSkipped;
-  std::string detail;       // one line shown beside the badge ("validated", "not rendered")
-  std::string diagnostics;  // clang-style text, "" when none (escaped by the formatter)
+  std::string detail;                   // one line beside the badge ("validated", "not rendered")
+  std::vector<ReportFinding> findings;  // in position order, none when clean
 };
 
 struct ReportEntry {

@@ -29,7 +29,8 @@ void FillProjectEntry(const std::filesystem::path& project,
   DiagnosticList all;
   for (const FileReport* report : checked) {
     for (const Diagnostic& diagnostic : report->diagnostics) all.push_back(diagnostic);
-    entry.check.diagnostics += DiagnosticText(report->file, report->diagnostics, sources);
+    for (ReportFinding& finding : DiagnosticFindings(report->file, report->diagnostics, sources))
+      entry.check.findings.push_back(std::move(finding));
   }
   entry.check.status = StatusOf(all);
   entry.check.detail = std::to_string(checked.size()) + " passes; " +
@@ -50,7 +51,7 @@ void FillProjectEntry(const std::filesystem::path& project,
   entry.port.status = validated ? StatusOf(findings.diagnostics) : StepStatus::kFail;
   entry.port.detail =
       validated ? "every pass validates as WebGL2" : "some ported pass does not validate";
-  entry.port.diagnostics = DiagnosticText(findings.file, findings.diagnostics, sources);
+  entry.port.findings = DiagnosticFindings(findings.file, findings.diagnostics, sources);
   RenderFileOptions render_options;
   render_options.render = options.render;
   render_options.base.width = options.size;
@@ -64,7 +65,7 @@ void FillProjectEntry(const std::filesystem::path& project,
     entry.render.status =
         HasErrors(rendered.diagnostics) ? StepStatus::kFail : StepStatus::kSkipped;
   }
-  entry.render.diagnostics = DiagnosticText(rendered.file, rendered.diagnostics, sources);
+  entry.render.findings = DiagnosticFindings(rendered.file, rendered.diagnostics, sources);
 }
 
 }  // namespace shaderport::driver

@@ -14,22 +14,47 @@ StepStatus StatusOf(const DiagnosticList& diagnostics) {
   return status;
 }
 
-std::string DiagnosticText(const SourceFile* file, DiagnosticList diagnostics,
-                           const SourceManager& sources) {
-  if (diagnostics.empty()) return "";
-  CheckReport report;
-  report.sources = &sources;
+std::string CascadeOf(const Diagnostic& diagnostic) {
+  if (diagnostic.severity != Severity::kError) return "";
+  // A compiler keeps going after its first error, and what follows in the same
+  // file is mostly that error seen again (an undeclared name, then every use of it).
+  const char* compiler = nullptr;
+  if (diagnostic.rule_id.starts_with("glslang/")) {
+    compiler = "glslang";
+  } else if (diagnostic.rule_id == "render/compile-error") {
+    compiler = "mesa";
+  } else {
+    return "";
+  }
+  return std::string(compiler) + " " + std::to_string(diagnostic.range.file);
+}
+
+std::vector<ReportFinding> DiagnosticFindings(const SourceFile* file, DiagnosticList diagnostics,
+                                              const SourceManager& sources) {
+  CheckReport sorted;
+  sorted.sources = &sources;
   FileReport entry;
   entry.file = file;
   entry.diagnostics = std::move(diagnostics);
-  report.files.push_back(std::move(entry));
-  SortReport(report);
-  std::string text = FormatText(report, ReportOptions{});
-  // FormatText ends with a summary line; drop it.
-  while (!text.empty() && text.back() == '\n') text.pop_back();
-  const size_t last = text.rfind('\n');
-  text.resize(last == std::string::npos ? 0 : last + 1);
-  return text;
+  sorted.files.push_back(std::move(entry));
+  SortReport(sorted);
+  ReportOptions options;
+  options.summary_line = false;
+  std::vector<ReportFinding> findings;
+  // One text per finding, so that the page can fold some of them.
+  for (Diagnostic& diagnostic : sorted.files.front().diagnostics) {
+    ReportFinding finding;
+    finding.cascade = CascadeOf(diagnostic);
+    CheckReport one;
+    one.sources = &sources;
+    FileReport only;
+    only.file = file;
+    only.diagnostics.push_back(std::move(diagnostic));
+    one.files.push_back(std::move(only));
+    finding.text = FormatText(one, options);
+    findings.push_back(std::move(finding));
+  }
+  return findings;
 }
 
 }  // namespace shaderport::driver

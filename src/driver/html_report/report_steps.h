@@ -1,7 +1,7 @@
 // What the report's steps share: a status from findings, and findings as clang-style text.
 #pragma once
 
-#include <string>
+#include <vector>
 
 #include "diag/diagnostic.h"
 #include "driver/html_report/html_report.h"
@@ -11,8 +11,14 @@ namespace shaderport::driver {
 
 StepStatus StatusOf(const DiagnosticList& diagnostics);
 
-// Clang-style text of `diagnostics` (no summary line: the badges say it).
-std::string DiagnosticText(const SourceFile* file, DiagnosticList diagnostics,
-                           const SourceManager& sources);
+// `diagnostics` in position order, each as its own clang-style text (no summary
+// line: the badges say it), compiler errors keyed by their cascade (CascadeOf).
+std::vector<ReportFinding> DiagnosticFindings(const SourceFile* file, DiagnosticList diagnostics,
+                                              const SourceManager& sources);
+
+// The cascade key of a compiler error: "glslang <file>" for a glslang/* error,
+// "mesa <file>" for render/compile-error, where <file> is the id of the file the
+// error points into; "" for everything else (shaderport's own rules stand alone).
+std::string CascadeOf(const Diagnostic& diagnostic);
 
 }  // namespace shaderport::driver

@@ -46,8 +46,8 @@ TEST(HtmlReportFormat, PageEscapesEverythingUserControlledAndCounts) {
   broken.dialect = "shadertoy";
   broken.stage = "fragment";
   broken.check.status = StepStatus::kFail;
-  broken.check.diagnostics =
-      "x.glsl:4:11: error: '>' wrong operand types\n    if (a > 0 && b < 1)\n";
+  broken.check.findings = {
+      {"x.glsl:4:11: error: '>' wrong operand types\n    if (a > 0 && b < 1)\n", "glslang 1"}};
   broken.port.status = StepStatus::kPass;
   broken.render.status = StepStatus::kWarn;
   broken.png = "PNGDATA";

@@ -1,9 +1,11 @@
 // `report --html` end to end on a small directory copied from the corpus: a ShaderToy
-// pass, a WebGL2 shader and a ShaderToy pass with a typing error.
+// pass, a WebGL2 shader, a ShaderToy pass with a typing error and one whose undeclared
+// name gives glslang several errors.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <optional>
 #include <string>
 #include <vector>
@@ -45,6 +47,12 @@ std::optional<std::string> Base64Decode(std::string_view text) {
   return out;
 }
 
+std::string Text(const ReportStep& step) {
+  std::string text;
+  for (const ReportFinding& finding : step.findings) text += finding.text;
+  return text;
+}
+
 uint32_t BigEndian(const std::string& bytes, size_t at) {
   return (uint32_t{static_cast<uint8_t>(bytes[at])} << 24) |
          (uint32_t{static_cast<uint8_t>(bytes[at + 1])} << 16) |
@@ -65,6 +73,11 @@ class HtmlReportPipeline : public ::testing::Test {
     fs::copy_file(corpus / "strict-typing/compare-float-with-int.glsl", *dir_ / "b-broken.glsl");
     fs::copy_file(corpus / "strict-typing/control-explicit-conversions.frag",
                   *dir_ / "c-webgl2.frag");
+    std::ofstream(*dir_ / "d-cascade.glsl") << "void mainImage(out vec4 o, in vec2 u) {\n"
+                                               "  o = vec4(missing);\n"
+                                               "  o.x = missing.x;\n"
+                                               "  o.y = missing.y;\n"
+                                               "}\n";
     HtmlReportOptions options;
     options.paths = {*dir_};
     options.render.hermetic = true;
@@ -101,35 +114,51 @@ std::string* HtmlReportPipeline::html1_ = nullptr;
 std::string* HtmlReportPipeline::html2_ = nullptr;
 
 TEST_F(HtmlReportPipeline, EveryShaderHasAnEntryWithItsSteps) {
-  ASSERT_EQ(run_->report.entries.size(), 3u);
+  ASSERT_EQ(run_->report.entries.size(), 4u);
   EXPECT_TRUE(run_->usage_errors.empty());
   const ReportEntry& good = Entry("a-template.glsl");
   EXPECT_EQ(good.dialect, "shadertoy");
   EXPECT_EQ(good.check.status, StepStatus::kPass);
   EXPECT_EQ(good.port.status, StepStatus::kPass);
-  EXPECT_NE(good.render.status, StepStatus::kFail) << good.render.diagnostics;
+  EXPECT_NE(good.render.status, StepStatus::kFail) << Text(good.render);
   EXPECT_FALSE(good.png.empty());
 
   const ReportEntry& broken = Entry("b-broken.glsl");
   EXPECT_EQ(broken.check.status, StepStatus::kFail);
-  EXPECT_NE(broken.check.diagnostics.find("error:"), std::string::npos);
+  ASSERT_FALSE(broken.check.findings.empty());
+  EXPECT_NE(broken.check.findings.front().text.find("error:"), std::string::npos);
+  // glslang's error is keyed for folding; the text is one finding, no summary line.
+  EXPECT_TRUE(broken.check.findings.front().cascade.starts_with("glslang "));
+  EXPECT_EQ(broken.check.findings.front().text.find(" checked)"), std::string::npos);
   // `port` fixes the int literal, so the port validates and renders.
-  EXPECT_EQ(broken.port.status, StepStatus::kPass) << broken.port.diagnostics;
+  EXPECT_EQ(broken.port.status, StepStatus::kPass) << Text(broken.port);
   EXPECT_FALSE(broken.png.empty());
 
   const ReportEntry& webgl2 = Entry("c-webgl2.frag");
   EXPECT_EQ(webgl2.dialect, "webgl2");
   EXPECT_EQ(webgl2.check.status, StepStatus::kPass);
-  EXPECT_FALSE(webgl2.png.empty()) << webgl2.render.diagnostics;
+  EXPECT_FALSE(webgl2.png.empty()) << Text(webgl2.render);
 }
 
 TEST_F(HtmlReportPipeline, PageHasSectionsBadgesAndEscapedDiagnostics) {
   const std::string& html = *html1_;
   EXPECT_NE(html.find("<section id=\"summary\">"), std::string::npos);
+  // The gallery opens the page: one tile per shader, the broken one marked failing.
+  const size_t gallery = html.find("<section id=\"gallery\">");
+  ASSERT_NE(gallery, std::string::npos);
+  EXPECT_LT(gallery, html.find("<section id=\"summary\">"));
+  EXPECT_LT(gallery, html.find("<pre>"));
+  size_t tiles = 0;
+  for (size_t at = html.find("<a class=\"tile "); at != std::string::npos;
+       at = html.find("<a class=\"tile ", at + 1)) {
+    ++tiles;
+  }
+  EXPECT_EQ(tiles, 4u);
+  EXPECT_NE(html.find("<a class=\"tile is-fail\" href=\"#shader-2\""), std::string::npos);
   EXPECT_NE(html.find("<section id=\"shaders\">"), std::string::npos);
-  EXPECT_NE(html.find("<tr><th>check</th><td>2</td><td>0</td><td>1</td><td>0</td></tr>"),
+  EXPECT_NE(html.find("<tr><th>check</th><td>2</td><td>0</td><td>2</td><td>0</td></tr>"),
             std::string::npos);
-  for (const char* name : {"a-template.glsl", "b-broken.glsl", "c-webgl2.frag"}) {
+  for (const char* name : {"a-template.glsl", "b-broken.glsl", "c-webgl2.frag", "d-cascade.glsl"}) {
     EXPECT_NE(html.find(name), std::string::npos) << name;
   }
   EXPECT_NE(html.find("class=\"badge fail\">check: fail"), std::string::npos);
@@ -137,6 +166,21 @@ TEST_F(HtmlReportPipeline, PageHasSectionsBadgesAndEscapedDiagnostics) {
   EXPECT_NE(html.find("if (uv.x &gt; 0)"), std::string::npos);
   EXPECT_EQ(html.find("if (uv.x > 0)"), std::string::npos);
   EXPECT_EQ(html.find("<script"), std::string::npos);
+}
+
+TEST_F(HtmlReportPipeline, GlslangCascadeIsFoldedUnderItsFirstError) {
+  const ReportEntry& cascade = Entry("d-cascade.glsl");
+  const std::vector<ReportFinding>& findings = cascade.check.findings;
+  ASSERT_GE(findings.size(), 2u) << Text(cascade.check);
+  for (const ReportFinding& finding : findings) {
+    EXPECT_EQ(finding.cascade, findings.front().cascade) << finding.text;
+  }
+  EXPECT_NE(findings.front().text.find("'missing': undeclared identifier"), std::string::npos);
+  const std::string& html = *html1_;
+  const size_t details = html.find("id=\"shader-4\"");
+  ASSERT_NE(details, std::string::npos);
+  const std::string more = "+" + std::to_string(findings.size() - 1) + " more errors";
+  EXPECT_NE(html.find("<details class=\"cascade\"><summary>" + more, details), std::string::npos);
 }
 
 TEST_F(HtmlReportPipeline, EveryRenderedShaderHasAValidPngDataUri) {
