@@ -43,11 +43,11 @@ add_custom_command(
   OUTPUT ${shaderport_generated_docs}/shaderport.1 ${shaderport_generated_docs}/shaderport.bash
          ${shaderport_generated_docs}/_shaderport ${shaderport_generated_docs}/shaderport.fish
   COMMAND ${CMAKE_COMMAND} -E make_directory ${shaderport_generated_docs}
-  COMMAND sh -c "$<TARGET_FILE:shaderport> man > shaderport.1"
-  COMMAND sh -c "$<TARGET_FILE:shaderport> completion bash > shaderport.bash"
-  COMMAND sh -c "$<TARGET_FILE:shaderport> completion zsh > _shaderport"
-  COMMAND sh -c "$<TARGET_FILE:shaderport> completion fish > shaderport.fish"
-  WORKING_DIRECTORY ${shaderport_generated_docs}
+  # Not VERBATIM: the generators run each command in a shell, which does the '>'.
+  COMMAND $<TARGET_FILE:shaderport> man > ${shaderport_generated_docs}/shaderport.1
+  COMMAND $<TARGET_FILE:shaderport> completion bash > ${shaderport_generated_docs}/shaderport.bash
+  COMMAND $<TARGET_FILE:shaderport> completion zsh > ${shaderport_generated_docs}/_shaderport
+  COMMAND $<TARGET_FILE:shaderport> completion fish > ${shaderport_generated_docs}/shaderport.fish
   DEPENDS shaderport
   COMMENT "Writing shaderport(1) and the shell completions")
 add_custom_target(shaderport_generated_docs ALL

@@ -31,7 +31,7 @@ bool IsLoop(glsl::NodeKind kind) {
 // (not one inside a nested loop or switch).
 bool CanLeave(const glsl::Node& body) {
   bool leaves = false;
-  glsl::VisitPreorder(body, [&](const glsl::Node& node, int depth) {
+  glsl::VisitPreorder(body, [&](const glsl::Node& node, int /*depth*/) {
     if (leaves) return false;
     switch (node.kind) {
       case glsl::NodeKind::kReturnStatement:
@@ -55,9 +55,9 @@ bool CanLeave(const glsl::Node& body) {
 
 struct Condition {
   bool always_true = false;
-  bool analysable = true;               // no call of the shader's functions, no write
-  std::set<uint32_t> variables;         // the symbols it reads
-  std::vector<std::string> names;       // their names, in order, for the message
+  bool analysable = true;          // no call of the shader's functions, no write
+  std::set<uint32_t> variables;    // the symbols it reads
+  std::vector<std::string> names;  // their names, in order, for the message
   bool reads_global = false;
 };
 
@@ -68,9 +68,9 @@ Condition ReadCondition(const rule::RuleContext& context, const glsl::Node* cond
     result.always_true = true;
     return result;
   }
-  const glsl::Expr* expr = condition->IsExpr()
-                               ? portability::Unparenthesized(static_cast<const glsl::Expr*>(condition))
-                               : nullptr;
+  const glsl::Expr* expr =
+      condition->IsExpr() ? portability::Unparenthesized(static_cast<const glsl::Expr*>(condition))
+                          : nullptr;
   if (expr == nullptr) {  // `while (bool b = ...)`: a declaration, written each time
     result.analysable = false;
     return result;
@@ -165,8 +165,7 @@ class InfiniteLoopRule final : public rule::Rule {
  public:
   const rule::RuleInfo& Info() const override {
     static const rule::RuleInfo info{kId, "A loop that never ends once entered",
-                                     "for (;;) { p += d; }", "(unchanged)",
-                                     rule::RuleScope::kLint};
+                                     "for (;;) { p += d; }", "(unchanged)", rule::RuleScope::kLint};
     return info;
   }
 
@@ -209,9 +208,9 @@ class InfiniteLoopRule final : public rule::Rule {
       return;
     }
     const auto& tokens = context.Preprocessed().tokens;
-    const SourceRange where =
-        loop.HasTokens() && loop.first_token < tokens.size() ? tokens[loop.first_token].expansion
-                                                             : loop.range;
+    const SourceRange where = loop.HasTokens() && loop.first_token < tokens.size()
+                                  ? tokens[loop.first_token].expansion
+                                  : loop.range;
     context.Report(MakeDiagnostic(
         Severity::kWarning, std::string(kId), where,
         "this loop never ends once entered: " + why +

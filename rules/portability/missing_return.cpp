@@ -157,8 +157,8 @@ class MissingReturnRule final : public rule::Rule {
       const auto zero = glsl::ZeroValue(type, model.structs, model.version);
       if (zero && brace.text == "}" && brace.macro_use == glsl::kNoMacroUse &&
           portability::InThisFile(context, brace.spelling)) {
-        diagnostic.fixes.push_back(InsertLastStatement(context.File(), brace.spelling.begin,
-                                                       "return " + *zero + ";"));
+        diagnostic.fixes.push_back(
+            InsertLastStatement(context.File(), brace.spelling.begin, "return " + *zero + ";"));
       }
       context.Report(std::move(diagnostic));
     }

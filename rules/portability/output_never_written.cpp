@@ -54,12 +54,12 @@ class OutputNeverWrittenRule final : public rule::Rule {
         if (declarator == nullptr || declarator->name.Empty()) continue;
         const uint32_t symbol = model.SymbolAt(declarator->id);
         if (symbol == glsl::kNoSymbol || written.contains(symbol)) continue;
-        context.Report(MakeDiagnostic(
-            Severity::kWarning, std::string(kId), declarator->name.range,
-            "the output '" + declarator->name.text + "' is never written: " +
-                (vertex ? "the fragment shader reads an undefined value from it"
-                        : "every pixel it colours is undefined (black, noise or old "
-                          "contents, depending on the GPU)")));
+        context.Report(
+            MakeDiagnostic(Severity::kWarning, std::string(kId), declarator->name.range,
+                           "the output '" + declarator->name.text + "' is never written: " +
+                               (vertex ? "the fragment shader reads an undefined value from it"
+                                       : "every pixel it colours is undefined (black, noise or old "
+                                         "contents, depending on the GPU)")));
       }
     }
   }

@@ -720,8 +720,8 @@ class FunctionAnalysis {
       return;
     }
     const SourceRange brace = tokens[body.first_token].spelling;
-    diagnostic.fixes.push_back(InsertFirstStatement(context_.File(), brace.end,
-                                                    slot.parameter->name.text + " = " + *zero + ";"));
+    diagnostic.fixes.push_back(InsertFirstStatement(
+        context_.File(), brace.end, slot.parameter->name.text + " = " + *zero + ";"));
   }
 
   // A harness entry point (ShaderToy's mainImage, mainCubemap) returns to code that

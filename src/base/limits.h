@@ -6,12 +6,12 @@
 
 namespace shaderport::limits {
 
-inline constexpr size_t kMaxFileBytes = 8u << 20;        // 8 MiB per input file
+inline constexpr size_t kMaxFileBytes = 8u << 20;  // 8 MiB per input file
 // A .jsonl file holds many projects, one a line: the limit of one file applies to each
 // line (one project), and the whole file may hold this much.
 inline constexpr size_t kMaxJsonLinesBytes = 512u << 20;  // 512 MiB per .jsonl file
-inline constexpr size_t kMaxTokens = 2'000'000;          // lexed tokens per file
-inline constexpr size_t kMaxExpandedTokens = 4'000'000;  // tokens after macro expansion
+inline constexpr size_t kMaxTokens = 2'000'000;           // lexed tokens per file
+inline constexpr size_t kMaxExpandedTokens = 4'000'000;   // tokens after macro expansion
 // Preprocessed tokens of one shader (Common code included) that glslang is given: its
 // memory grows with them (about 1 GiB at 2,000,000), and every command runs under 2 GiB.
 inline constexpr size_t kMaxCompiledTokens = 1'000'000;

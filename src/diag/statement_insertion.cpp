@@ -56,8 +56,7 @@ FixIt InsertFirstStatement(const SourceFile& file, uint32_t brace_end, std::stri
   if (!OnlyBlanks(rest) || at.line >= file.LineCount()) {
     return {{file.Id(), brace_end, brace_end}, " " + std::string(statement)};
   }
-  const std::string indent =
-      BodyIndentation(file, at.line + 1, Indentation(line));
+  const std::string indent = BodyIndentation(file, at.line + 1, Indentation(line));
   // After the brace's line: the brace's line keeps its own ending.
   const uint32_t next = file.LineStart(at.line + 1);
   return {{file.Id(), next, next},

@@ -68,10 +68,9 @@ void AttachRepairs(const PortResult& fixed, const SourceManager& sources,
       const uint32_t line = LineOf(sources, finding.range);
       for (const Diagnostic*& repair : repairs) {
         if (repair == nullptr) continue;
-        const bool matches = same_line_only
-                                 ? repair->range.file == finding.range.file &&
-                                       LineOf(sources, repair->range) == line
-                                 : Overlaps(repair->range, finding.range);
+        const bool matches = same_line_only ? repair->range.file == finding.range.file &&
+                                                  LineOf(sources, repair->range) == line
+                                            : Overlaps(repair->range, finding.range);
         if (!matches) continue;
         for (const FixIt& fix : repair->fixes) {
           if (fix.safety == FixSafety::kSafe) finding.fixes.push_back(fix);

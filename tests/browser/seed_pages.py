@@ -139,7 +139,8 @@ def broken_program(chromium, binary, work, name, source):
     with open(path, "w") as f:
         f.write(text + ("" if text.endswith("\n") else "\n") +
                 "float broken() { return undefined_name; }\n")
-    page, why = port_page(binary, work, name, [path], ["--dialect", "raymarch-blog"])
+    # A page of code that does not compile is written only when asked for.
+    page, why = port_page(binary, work, name, [path], ["--dialect", "raymarch-blog", "--write-invalid"])
     if page is None:
         return [why], ""
     dom_text, _ = chromium_dom(chromium, work, page, "#time=1&frames=1&size=64x64")

@@ -14,8 +14,8 @@ namespace shaderport::cli {
 
 void AddCompletionCommand(CLI::App& app, int& exit_code) {
   auto shell = std::make_shared<std::string>();
-  CLI::App* command = app.add_subcommand(
-      "completion", "Print the shell completion script for bash, zsh or fish");
+  CLI::App* command =
+      app.add_subcommand("completion", "Print the shell completion script for bash, zsh or fish");
   command->add_option("shell", *shell, "bash, zsh or fish")->required();
   command->footer(
       "bash: source <(shaderport completion bash)   zsh: shaderport completion zsh > "
@@ -33,9 +33,8 @@ void AddCompletionCommand(CLI::App& app, int& exit_code) {
 
 void AddManCommand(CLI::App& app, int& /*exit_code*/) {
   CLI::App* command = app.add_subcommand("man", "Print the manual page (roff), shaderport(1)");
-  command->callback([&app] {
-    std::fputs(ManPage(CommandTable(app), SHADERPORT_VERSION).c_str(), stdout);
-  });
+  command->callback(
+      [&app] { std::fputs(ManPage(CommandTable(app), SHADERPORT_VERSION).c_str(), stdout); });
 }
 
 }  // namespace shaderport::cli

@@ -51,7 +51,6 @@ struct PortArgs {
   bool write_invalid = false;
 };
 
-
 int RunPort(const PortArgs& args) {
   const std::optional<ProgressMode> progress_mode = ParseProgressMode(args.progress);
   if (!progress_mode) return UsageError(UnknownName("--progress", args.progress, kWhenNames));
@@ -110,8 +109,7 @@ int RunPort(const PortArgs& args) {
                              : emit_folder ? ProjectEmit::kFolder
                                            : ProjectEmit::kShaders;
     const int code = PortProjectInputs(
-        *inputs, options, {args.output, args.out_dir, emit, *fail_on, args.write_invalid},
-        sources);
+        *inputs, options, {args.output, args.out_dir, emit, *fail_on, args.write_invalid}, sources);
     return std::max(code, config_exit);
   }
 

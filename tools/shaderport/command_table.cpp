@@ -19,7 +19,7 @@ std::vector<std::string> ClosedValues(const std::string& command, const std::str
     return command == "merge" ? ToVector(kMergeFormatNames) : ToVector(kFormatNames);
   }
   static const std::map<std::string, std::span<const std::string>> kSets = {
-      {"dialect", kDialectNames}, {"target", kTargetNames},  {"stage", kStageNames},
+      {"dialect", kDialectNames},  {"target", kTargetNames},  {"stage", kStageNames},
       {"fail-on", kSeverityNames}, {"color", kWhenNames},     {"progress", kWhenNames},
       {"emit", kEmitNames},        {"backend", kBackendNames}};
   const auto found = kSets.find(option);
@@ -28,8 +28,8 @@ std::vector<std::string> ClosedValues(const std::string& command, const std::str
 
 bool TakesPath(const std::string& option) {
   static const std::vector<std::string> kPathOptions = {
-      "output", "out-dir", "config", "baseline", "common", "html", "write-baseline",
-      "stdin-filename", "cache-dir", "sarif", "save-png"};
+      "output",         "out-dir",        "config",    "baseline", "common",  "html",
+      "write-baseline", "stdin-filename", "cache-dir", "sarif",    "save-png"};
   return std::find(kPathOptions.begin(), kPathOptions.end(), option) != kPathOptions.end();
 }
 

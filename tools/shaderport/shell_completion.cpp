@@ -114,10 +114,11 @@ std::string Zsh(const std::vector<CommandRow>& commands) {
     }
     if (command.name == "help") {
       cases += " \\\n        '1:command:(" + Joined([&] {
-        std::vector<std::string> names;
-        for (const CommandRow& c : commands) names.push_back(c.name);
-        return names;
-      }()) + ")'";
+                 std::vector<std::string> names;
+                 for (const CommandRow& c : commands) names.push_back(c.name);
+                 return names;
+               }()) +
+               ")'";
     } else if (!command.positional.empty()) {
       cases += " \\\n        '*:file:_files'";
     }

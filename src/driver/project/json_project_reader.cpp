@@ -7,8 +7,8 @@
 
 #include "base/limits.h"
 #include "driver/project/json_code_strings.h"
-#include "driver/read_input.h"
 #include "driver/project/json_members.h"
+#include "driver/read_input.h"
 
 namespace shaderport::driver::project {
 namespace {

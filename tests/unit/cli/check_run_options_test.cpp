@@ -78,7 +78,9 @@ TEST(StatisticsCli, CountsPerRuleAfterTheFindingsMostFrequentFirst) {
       "A value cannot be converted to the type it is assigned to\n"
       "1  portability/uninitialized-read  warning  "
       "A variable or out parameter may be read before it is written\n";
-  const std::string summary = "2 errors, 1 warning in 3 files (3 files checked)\n";
+  // The summary line and the count of what `fix` repairs: -q drops both.
+  const std::string summary =
+      "2 errors, 1 warning in 3 files (3 files checked)\n[*] 3 fixable with 'shaderport fix'\n";
   const size_t at = result.out.find(table);
   ASSERT_NE(at, std::string::npos) << result.out;
   // After every finding (each file's last one is c.frag's note), then the summary line last.

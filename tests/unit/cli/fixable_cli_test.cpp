@@ -2,8 +2,8 @@
 // carry that rule's fix-it ([*] in text, "fixable" in JSON, fixes in SARIF), and the
 // summary counts them; an error that fix leaves is not marked.
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "cli/cli_test_util.h"

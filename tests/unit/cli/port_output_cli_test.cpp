@@ -56,9 +56,9 @@ TEST(PortOutputCli, NamedFilesAndDirectoriesShareOneLayout) {
   project.Write("shaders/a/b.glsl", kGood);
   project.Write("shaders/c.glsl", kGood);
   ASSERT_EQ(RunShaderport("port --out-dir one shaders", project.Root()).exit_code, 0);
-  ASSERT_EQ(RunShaderport("port --out-dir two shaders/a/b.glsl shaders/c.glsl", project.Root())
-                .exit_code,
-            0);
+  ASSERT_EQ(
+      RunShaderport("port --out-dir two shaders/a/b.glsl shaders/c.glsl", project.Root()).exit_code,
+      0);
   for (const std::string out : {"one", "two"}) {
     EXPECT_TRUE(project.Exists(out + "/a/b.frag")) << out;
     EXPECT_TRUE(project.Exists(out + "/c.frag")) << out;

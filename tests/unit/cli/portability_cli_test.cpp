@@ -38,12 +38,12 @@ TEST(PortabilityCli, CheckReportsBothRulesAsWarnings) {
   Write(dir / "golf.glsl", kGolf);
   const CommandResult result = RunShaderport("check --no-config golf.glsl", dir);
   EXPECT_EQ(result.exit_code, 0) << result.out << result.err;
-  EXPECT_NE(result.out.find("golf.glsl:3:3: warning: 'col2' may be read before it is written: "
+  EXPECT_NE(result.out.find("golf.glsl:3:3: warning: [*] 'col2' may be read before it is written: "
                             "browsers start it at 0, native GL, Vulkan and Metal leave it "
                             "undefined [portability/uninitialized-read]"),
             std::string::npos)
       << result.out;
-  EXPECT_NE(result.out.find("golf.glsl:6:3: warning: 'O' (an out parameter) may be read"),
+  EXPECT_NE(result.out.find("golf.glsl:6:3: warning: [*] 'O' (an out parameter) may be read"),
             std::string::npos)
       << result.out;
   EXPECT_NE(result.out.find("golf.glsl:5:35: warning: index 'c' runs 0..7 here but 'col' (vec3) "
@@ -83,7 +83,8 @@ TEST(PortabilityCli, FixAndPortWriteTheBrowsersZeros) {
   const CommandResult fixed = RunShaderport("fix toy.glsl", dir);
   EXPECT_EQ(fixed.exit_code, 0) << fixed.err;
   EXPECT_EQ(fixed.out,
-            "void mainImage(out vec4 O, in vec2 U) { O = vec4(0.0);\n"
+            "void mainImage(out vec4 O, in vec2 U) {\n"
+            "  O = vec4(0.0);\n"
             "  vec4 col2 = vec4(0.0);\n"
             "  col2 += vec4(0.5);\n"
             "  O += col2;\n"
@@ -92,7 +93,8 @@ TEST(PortabilityCli, FixAndPortWriteTheBrowsersZeros) {
   const CommandResult ported = RunShaderport("port toy.glsl", dir);
   EXPECT_EQ(ported.exit_code, 0) << ported.err;
   EXPECT_NE(ported.out.find("#version 300 es"), std::string::npos) << ported.out;
-  EXPECT_NE(ported.out.find("void mainImage(out vec4 O, in vec2 U) { O = vec4(0.0);\n"
+  EXPECT_NE(ported.out.find("void mainImage(out vec4 O, in vec2 U) {\n"
+                            "  O = vec4(0.0);\n"
                             "  vec4 col2 = vec4(0.0);\n"),
             std::string::npos)
       << ported.out;

@@ -39,26 +39,29 @@ TEST(WalkCli, PortOutDirKeepsTheLayoutBelowTheDirectory) {
 TEST(WalkCli, PortOutDirWithSeveralRootsAndNamedFiles) {
   TempProject project("walk-port-roots");
   WriteNestedProject(project, kWebGL1Fragment);
-  // Each directory is its own root; a named file keeps the path it was named by.
+  // One layout for directories and named files: paths below the deepest directory
+  // that holds every argument (here shaders/, holding shaders/a and shaders/vendor).
   const CommandResult result =
       RunShaderport("port --out-dir out shaders/a shaders/vendor/v.frag", project.Root());
   ASSERT_EQ(result.exit_code, 0) << result.err;
-  EXPECT_TRUE(project.Exists("out/b.frag"));
+  EXPECT_TRUE(project.Exists("out/a/b.frag"));
   // Named directly, an excluded file is left out too (as ruff's --force-exclude:
   // pre-commit names every file)...
-  EXPECT_FALSE(project.Exists("out/shaders/vendor/v.frag"));
-  // ...unless --no-force-exclude: then it keeps the path it was named by.
+  EXPECT_FALSE(project.Exists("out/vendor/v.frag"));
+  // ...unless --no-force-exclude: then it is laid out as the walked files are.
   const CommandResult named = RunShaderport(
       "port --no-force-exclude --out-dir out shaders/a shaders/vendor/v.frag", project.Root());
   ASSERT_EQ(named.exit_code, 0) << named.err;
-  EXPECT_TRUE(project.Exists("out/shaders/vendor/v.frag"));
+  EXPECT_TRUE(project.Exists("out/vendor/v.frag"));
 }
 
 TEST(WalkCli, PortOutDirRefusesClashesAndWritesNothing) {
   TempProject project("walk-port-clash");
+  // Two names that differ only in the extension port replaces.
   project.Write("one/x.glsl", kWebGL1Fragment);
+  project.Write("one/x.fs", kWebGL1Fragment);
   project.Write("two/x.frag", kWebGL1Fragment);
-  const CommandResult clash = RunShaderport("port --out-dir out one two", project.Root());
+  const CommandResult clash = RunShaderport("port --out-dir out one", project.Root());
   EXPECT_EQ(clash.exit_code, 2);
   EXPECT_NE(clash.err.find("would both be written to out/x.frag"), std::string::npos) << clash.err;
   EXPECT_FALSE(project.Exists("out"));

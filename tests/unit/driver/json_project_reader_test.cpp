@@ -78,8 +78,9 @@ TEST(JsonProjectReader, ReadsListsBareExportsAndCorpusRecordsAndJsonLines) {
 TEST(JsonProjectReader, ALineOverTheProjectLimitIsLeftOutAlone) {
   const std::string record =
       R"({"id": "r1", "passes": [{"type": "image", "name": "Image", "code": "b"}]})";
-  const std::string huge = R"({"id": "big", "passes": [{"type": "image", "name": "Image", "code": ")" +
-                           std::string(9u << 20, 'x') + ""}]}";
+  const std::string huge =
+      R"({"id": "big", "passes": [{"type": "image", "name": "Image", "code": ")" +
+      std::string(9u << 20, 'x') + R"("}]})";
   const std::string lines = record + "\n" + huge + "\n" + record + "\n";
   const ProjectDocument read = ReadShaderToyJsonLines(lines);
   EXPECT_EQ(read.projects.size(), 2u);

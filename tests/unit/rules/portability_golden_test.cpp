@@ -117,8 +117,9 @@ TEST(PortabilityGolden, Cases) {
 
 // The lint scope: `check` runs both rules, `fix` and `port` apply their fixes.
 TEST(PortabilityRules, ScopeLintRunsInCheckFixAndPort) {
-  for (std::string_view id : {kUninitialized, kIndexRange, std::string_view("portability/infinite-loop"),
-                              std::string_view("portability/output-never-written")}) {
+  for (std::string_view id :
+       {kUninitialized, kIndexRange, std::string_view("portability/infinite-loop"),
+        std::string_view("portability/output-never-written")}) {
     const rule::Rule* r = rules::FindRule(id);
     ASSERT_NE(r, nullptr) << id;
     EXPECT_EQ(r->Info().scope, rule::RuleScope::kLint) << id;
