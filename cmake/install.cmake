@@ -39,19 +39,16 @@ install(FILES README.md DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT runtime)
 # The manual page and the shell completions are written by the built executable
 # from its own option tables (shaderport man, shaderport completion SHELL).
 set(shaderport_generated_docs ${CMAKE_CURRENT_BINARY_DIR}/generated-docs)
-add_custom_command(
-  OUTPUT ${shaderport_generated_docs}/shaderport.1 ${shaderport_generated_docs}/shaderport.bash
-         ${shaderport_generated_docs}/_shaderport ${shaderport_generated_docs}/shaderport.fish
+# After each link of the executable, so that building the target `shaderport` alone
+# (the GitHub Action does) leaves everything `cmake --install` needs.
+# Not VERBATIM: the generators run each command in a shell, which does the '>'.
+add_custom_command(TARGET shaderport POST_BUILD
   COMMAND ${CMAKE_COMMAND} -E make_directory ${shaderport_generated_docs}
-  # Not VERBATIM: the generators run each command in a shell, which does the '>'.
   COMMAND $<TARGET_FILE:shaderport> man > ${shaderport_generated_docs}/shaderport.1
   COMMAND $<TARGET_FILE:shaderport> completion bash > ${shaderport_generated_docs}/shaderport.bash
   COMMAND $<TARGET_FILE:shaderport> completion zsh > ${shaderport_generated_docs}/_shaderport
   COMMAND $<TARGET_FILE:shaderport> completion fish > ${shaderport_generated_docs}/shaderport.fish
-  DEPENDS shaderport
   COMMENT "Writing shaderport(1) and the shell completions")
-add_custom_target(shaderport_generated_docs ALL
-  DEPENDS ${shaderport_generated_docs}/shaderport.1)
 install(FILES ${shaderport_generated_docs}/shaderport.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1
   COMPONENT runtime)
 install(FILES ${shaderport_generated_docs}/shaderport.bash

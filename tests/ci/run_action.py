@@ -216,7 +216,7 @@ def main():
         with open(os.path.join(spaced, "second color.frag"), "w") as f:
             f.write(BAD)
         inputs = {"paths": "shaders\n  more shaders  \n", "deb": debs[0],
-                  "args": "--fail-on 'warning' --no-config"}
+                  "args": "--stage 'fragment' --no-config"}
         context, log = run_action(workspace, inputs, os.path.join(SCRATCH, "no-build"))
         install = step(log, "Install shaderport")
         if install[1] != 0:

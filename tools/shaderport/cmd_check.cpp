@@ -226,8 +226,10 @@ int RunCheckCommand(const CheckArgs& args) {
       if (!output.empty() && !table.empty()) output += '\n';
       output += table;
       if (!args.quiet) {
-        const std::string summary = SummaryLine(Summarize(run.report));
+        const ReportSummary counts = Summarize(run.report);
+        const std::string summary = SummaryLine(counts);
         output += report_options.color ? "\x1b[1m" + summary + "\x1b[0m\n" : summary + '\n';
+        if (counts.fixable > 0) output += FixableLine(counts) + '\n';
       }
     }
   }

@@ -78,7 +78,7 @@ TEST(StatisticsCli, CountsPerRuleAfterTheFindingsMostFrequentFirst) {
       "A value cannot be converted to the type it is assigned to\n"
       "1  portability/uninitialized-read  warning  "
       "A variable or out parameter may be read before it is written\n";
-  // The summary line and the count of what `fix` repairs: -q drops both.
+  // The summary line, then the count of what `fix` repairs.
   const std::string summary =
       "2 errors, 1 warning in 3 files (3 files checked)\n[*] 3 fixable with 'shaderport fix'\n";
   const size_t at = result.out.find(table);
@@ -105,7 +105,9 @@ TEST(QuietCli, OnlyTheFindings) {
   const CommandResult loud = RunShaderport("check s", project.Root());
   const CommandResult quiet = RunShaderport("check -q s", project.Root());
   EXPECT_EQ(quiet.exit_code, 1);
-  const std::string summary = "2 errors, 1 warning in 3 files (3 files checked)\n";
+  // The summary line and the count of what `fix` repairs: -q drops both.
+  const std::string summary =
+      "2 errors, 1 warning in 3 files (3 files checked)\n[*] 3 fixable with 'shaderport fix'\n";
   ASSERT_GT(loud.out.size(), summary.size());
   EXPECT_EQ(loud.out.substr(loud.out.size() - summary.size()), summary);
   EXPECT_EQ(quiet.out, loud.out.substr(0, loud.out.size() - summary.size()));

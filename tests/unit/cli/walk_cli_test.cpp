@@ -39,20 +39,20 @@ TEST(WalkCli, PortOutDirKeepsTheLayoutBelowTheDirectory) {
 TEST(WalkCli, PortOutDirWithSeveralRootsAndNamedFiles) {
   TempProject project("walk-port-roots");
   WriteNestedProject(project, kWebGL1Fragment);
-  // One layout for directories and named files: paths below the deepest directory
-  // that holds every argument (here shaders/, holding shaders/a and shaders/vendor).
+  // Named directly, an excluded file is left out too (as ruff's --force-exclude:
+  // pre-commit names every file), so shaders/a alone is laid out: below itself.
   const CommandResult result =
       RunShaderport("port --out-dir out shaders/a shaders/vendor/v.frag", project.Root());
   ASSERT_EQ(result.exit_code, 0) << result.err;
-  EXPECT_TRUE(project.Exists("out/a/b.frag"));
-  // Named directly, an excluded file is left out too (as ruff's --force-exclude:
-  // pre-commit names every file)...
+  EXPECT_TRUE(project.Exists("out/b.frag"));
   EXPECT_FALSE(project.Exists("out/vendor/v.frag"));
-  // ...unless --no-force-exclude: then it is laid out as the walked files are.
+  // With --no-force-exclude both are ported, laid out alike below the deepest
+  // directory that holds every argument (shaders/).
   const CommandResult named = RunShaderport(
-      "port --no-force-exclude --out-dir out shaders/a shaders/vendor/v.frag", project.Root());
+      "port --no-force-exclude --out-dir both shaders/a shaders/vendor/v.frag", project.Root());
   ASSERT_EQ(named.exit_code, 0) << named.err;
-  EXPECT_TRUE(project.Exists("out/vendor/v.frag"));
+  EXPECT_TRUE(project.Exists("both/a/b.frag"));
+  EXPECT_TRUE(project.Exists("both/vendor/v.frag"));
 }
 
 TEST(WalkCli, PortOutDirRefusesClashesAndWritesNothing) {
