@@ -269,7 +269,7 @@ FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceMana
                   [&](const Diagnostic& d) { return d.range.file == common->Id(); });
   }
   // What `shaderport fix` would repair, so that every format can say so.
-  if (!report.diagnostics.empty()) {
+  if (!report.diagnostics.empty() && FixOffersAnEdit(file, front, decision)) {
     AttachRepairs(PortSource(file, common, FixOptionsFor(decision), sources), sources,
                   report.diagnostics);
   }

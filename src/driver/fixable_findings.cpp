@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <vector>
 
+#include "rule/rule_context.h"
+#include "rules/registry.h"
+
 namespace shaderport::driver {
 namespace {
 
@@ -50,6 +53,29 @@ PortOptions FixOptionsFor(const FileDecision& decision) {
     options.channels[i] = KindOf(decision.channels[i]);
   }
   return options;
+}
+
+bool FixOffersAnEdit(const SourceFile& file, const FrontEndResult& front,
+                     const FileDecision& decision) {
+  if (!front.model) return false;
+  const PortOptions options = FixOptionsFor(decision);
+  rule::PortSettings settings;
+  settings.mode = rule::PortMode::kFix;
+  settings.stage = decision.kind.stage == Stage::kVertex ? rule::ShaderStage::kVertex
+                                                         : rule::ShaderStage::kFragment;
+  settings.harness = decision.harness;
+  settings.source_version = decision.kind.dialect == Dialect::kWebGL1 ? 100 : 300;
+  settings.buffer_pass = decision.kind.pass == ShaderToyPass::kBuffer;
+  for (size_t i = 0; i < 4; ++i) settings.channels[i] = options.channels[i];
+  for (const rule::Rule* r : rules::RulesForMode(rule::PortMode::kFix)) {
+    rule::RuleContext context(file, front.lexed, front.preprocessed, front.parsed.tree,
+                              *front.model, settings);
+    r->Run(context);
+    for (const Diagnostic& finding : context.TakeDiagnostics()) {
+      if (IsFixable(finding)) return true;
+    }
+  }
+  return false;
 }
 
 void AttachRepairs(const PortResult& fixed, const SourceManager& sources,

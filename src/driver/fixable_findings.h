@@ -7,6 +7,7 @@
 
 #include "diag/diagnostic.h"
 #include "driver/file_decision.h"
+#include "driver/front_end.h"
 #include "driver/port/port_file.h"
 #include "source/source_manager.h"
 
@@ -14,6 +15,11 @@ namespace shaderport::driver {
 
 // The fix-mode options that read a file as `decision` says it is.
 PortOptions FixOptionsFor(const FileDecision& decision);
+
+// Whether `fix` has anything to do on the file as check's front end read it: some
+// rule of fix mode offers a safe fix. No glslang: check runs fix only when it does.
+bool FixOffersAnEdit(const SourceFile& file, const FrontEndResult& front,
+                     const FileDecision& decision);
 
 // Attaches to `findings` (check's, located in the original files) the fixes of the
 // findings `fixed` repaired. Findings that already carry a safe fix are left alone.

@@ -109,6 +109,10 @@ TEST(ExitContract, EveryCommandExitsAndSpeaksAsDocumented) {
       {"port clean.frag", 0, ""},
       {"port --fail-on note clean.frag", 0, ""},
       {"port broken.frag", 1, ""},
+      {"port --write-invalid broken.frag", 1, ""},
+      {"port clean.frag fixable.frag", 2,
+       "shaderport: error: the paths hold 2 input files and standard output takes one shader: use "
+       "--out-dir DIR"},
       {"port missing.frag", 2, "shaderport: error: missing.frag: no such file or directory"},
       {"port --emit spirvv clean.frag", 2,
        "shaderport: error: unknown --emit 'spirvv'; did you mean 'spirv'?"},
@@ -154,6 +158,17 @@ TEST(ExitContract, EveryCommandExitsAndSpeaksAsDocumented) {
        "shaderport: error: give exactly one of --tokens, --pp-tokens, --ast, --types"},
       {"summary clean.frag", 0, ""},
       {"summary missing.frag", 2, "shaderport: error: missing.frag: no such file or directory"},
+      // completion, man
+      {"help help", 0, ""},
+      {"help completion", 0, ""},
+      {"completion bash", 0, ""},
+      {"completion zsh", 0, ""},
+      {"completion fish", 0, ""},
+      {"completion tcsh", 2,
+       "shaderport: error: unknown shell 'tcsh' (expected bash, zsh or fish)"},
+      {"completion", 2, "shaderport: error: completion: shell is required"},
+      {"man", 0, ""},
+      {"man extra", 2, "shaderport: error: unexpected argument 'extra' for 'man'"},
       {"version", 0, ""},
       {"version extra", 2, "shaderport: error: unexpected argument 'extra' for 'version'"},
   };
