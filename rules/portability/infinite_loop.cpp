@@ -53,11 +53,21 @@ bool CanLeave(const glsl::Node& body) {
   return leaves;
 }
 
+// A call that may change a global: one of the shader's own functions, or a call
+// the model could not resolve. Constructors, methods and built-ins change nothing.
+bool MayChangeGlobals(const glsl::SemanticModel& model, const glsl::Node& node) {
+  const auto* call = node.As<glsl::CallExpr>();
+  if (call == nullptr || call->call_kind != glsl::CallKind::kFunction) return false;
+  const uint32_t callee = model.SymbolAt(node.id);
+  return callee == glsl::kNoSymbol || model.symbols[callee].kind == glsl::SymbolKind::kFunction;
+}
+
 struct Condition {
   bool always_true = false;
-  bool analysable = true;          // no call of the shader's functions, no write
-  std::set<uint32_t> variables;    // the symbols it reads
-  std::vector<std::string> names;  // their names, in order, for the message
+  bool analysable = true;                // no call of the shader's functions, no write
+  std::set<uint32_t> variables;          // the symbols it reads
+  std::vector<std::string> names;        // those that could change (not constants), in order
+  std::vector<std::string> fixed_names;  // constants, uniforms and built-in inputs
   bool reads_global = false;
 };
 
@@ -95,12 +105,9 @@ Condition ReadCondition(const rule::RuleContext& context, const glsl::Node* cond
         }
         break;
       }
-      case glsl::NodeKind::kCallExpr: {
-        const uint32_t callee = model.SymbolAt(node.id);
-        if (callee == glsl::kNoSymbol || model.symbols[callee].kind == glsl::SymbolKind::kFunction)
-          result.analysable = false;
+      case glsl::NodeKind::kCallExpr:
+        if (MayChangeGlobals(model, node)) result.analysable = false;
         break;
-      }
       case glsl::NodeKind::kIdentifierExpr: {
         const uint32_t symbol = model.SymbolAt(node.id);
         if (symbol == glsl::kNoSymbol) {
@@ -112,8 +119,15 @@ Condition ReadCondition(const rule::RuleContext& context, const glsl::Node* cond
             s.kind != glsl::SymbolKind::kBuiltinVariable) {
           break;
         }
-        if (result.variables.insert(symbol).second) result.names.push_back(s.name);
-        if (s.kind != glsl::SymbolKind::kParameter && s.scope == 0) result.reads_global = true;
+        // A constant, a uniform or a built-in input cannot change during the loop.
+        const bool fixed =
+            s.is_const || s.predeclared || s.kind == glsl::SymbolKind::kBuiltinVariable;
+        if (result.variables.insert(symbol).second) {
+          (fixed ? result.fixed_names : result.names).push_back(s.name);
+        }
+        if (!fixed && s.kind != glsl::SymbolKind::kParameter && s.scope == 0) {
+          result.reads_global = true;
+        }
         break;
       }
       default:
@@ -133,19 +147,16 @@ bool NothingChanges(const rule::RuleContext& context, const std::vector<const gl
   for (const glsl::Node* node : nodes) {
     if (node == nullptr) continue;
     portability::ForEachWrittenExpr(context, *node, [&](const glsl::Expr& target) {
+      // A target that starts from no name (a call's result passed where a call of
+      // unknown overload might write) is no variable.
       const glsl::IdentifierExpr* root = portability::ChainRoot(&target);
-      const uint32_t symbol = root != nullptr ? model.SymbolAt(root->id) : glsl::kNoSymbol;
+      if (root == nullptr) return;
+      const uint32_t symbol = model.SymbolAt(root->id);
       if (symbol == glsl::kNoSymbol || condition.variables.contains(symbol)) changes = true;
     });
     if (!condition.reads_global) continue;
     glsl::VisitPreorder(*node, [&](const glsl::Node& inner, int /*depth*/) {
-      if (inner.kind == glsl::NodeKind::kCallExpr) {
-        const uint32_t callee = model.SymbolAt(inner.id);
-        if (callee == glsl::kNoSymbol ||
-            model.symbols[callee].kind == glsl::SymbolKind::kFunction) {
-          changes = true;
-        }
-      }
+      changes = changes || MayChangeGlobals(model, inner);
       return !changes;
     });
   }
@@ -203,7 +214,10 @@ class InfiniteLoopRule final : public rule::Rule {
                 : "its condition is always true";
     } else if (read.analysable && !read.variables.empty() &&
                NothingChanges(context, {body, increment}, read)) {
-      why = "nothing in it changes " + NameList(read.names) + ", which its condition reads";
+      why = read.names.empty()
+                ? "its condition reads only " + NameList(read.fixed_names) +
+                      ", which cannot change while it runs"
+                : "nothing in it changes " + NameList(read.names) + ", which its condition reads";
     } else {
       return;
     }
