@@ -35,6 +35,8 @@ test_packages=(
   # The completion tests run the generated scripts in each shell; the man page
   # test renders shaderport(1) with groff and fails on a warning.
   zsh fish groff-base
+  # The language server's end-to-end test drives Neovim's built-in LSP client.
+  neovim
 )
 
 # bench/parallel_scaling_sim.py counts instructions per file with callgrind.

@@ -77,7 +77,8 @@ def main():
             words = command.split()
             if PLACEHOLDER.search(command):
                 # A synopsis: the command it names must exist.
-                result = subprocess.run([BINARY, "help", words[1]], capture_output=True, text=True)
+                result = subprocess.run([BINARY, "help", words[1]], capture_output=True, text=True,
+                                        stdin=subprocess.DEVNULL)
                 checked += 1
                 if result.returncode != 0:
                     failures.append("%s:%d: 'shaderport help %s' exits %d: %s" %
@@ -98,7 +99,8 @@ def main():
             if "${" in script:  # shell-specific expansions (zsh's fpath)
                 script = re.sub(r'"\$\{[^}]*\}/', '"$HOME/', script)
             result = subprocess.run(["bash", "-c", script], cwd=root, env=env,
-                                    stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                                    stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                                    stderr=subprocess.PIPE,
                                     text=True, errors="replace", timeout=300)
             ran += 1
             if result.returncode not in (0, 1) or "shaderport: error:" in result.stderr:

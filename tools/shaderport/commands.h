@@ -26,5 +26,6 @@ void AddMergeCommand(CLI::App& app, int& exit_code);
 void AddExplainFileCommand(CLI::App& app, int& exit_code);
 void AddCompletionCommand(CLI::App& app, int& exit_code);
 void AddManCommand(CLI::App& app, int& exit_code);
+void AddLspCommand(CLI::App& app, int& exit_code);
 
 }  // namespace shaderport::cli

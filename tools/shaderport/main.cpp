@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   AddMergeCommand(app, exit_code);
   AddCompletionCommand(app, exit_code);
   AddManCommand(app, exit_code);
+  AddLspCommand(app, exit_code);
   try {
     if (const auto handled = HandleCommandWord(app, argc, argv)) return *handled;
     app.parse(argc, argv);

@@ -1,0 +1,146 @@
+#include "driver/lsp/lsp_check.h"
+
+#include <algorithm>
+#include <utility>
+
+#include "driver/check_pipeline.h"
+#include "driver/check_projects.h"
+#include "driver/port/port_file.h"
+#include "driver/read_input.h"
+#include "driver/lsp/lsp_text.h"
+#include "report/docs_links.h"
+
+namespace shaderport::driver::lsp {
+namespace {
+
+using Json = nlohmann::json;
+
+int SeverityCode(Severity severity) {
+  switch (severity) {
+    case Severity::kError:
+      return 1;
+    case Severity::kWarning:
+      return 2;
+    case Severity::kNote:
+      break;
+  }
+  return 3;  // Information
+}
+
+// Offsets into the document's own text: a pass of a JSON project sits inside the
+// document (its embedding), and a byte order mark was taken off what check read.
+class DocumentPositions {
+ public:
+  DocumentPositions(const std::string& text, uint32_t shift) : text_(text), shift_(shift) {}
+
+  // Nothing for a range outside the document.
+  std::optional<Json> Range(const SourceManager& sources, const SourceRange& range,
+                            FileId document) const {
+    if (!range.Valid()) return std::nullopt;
+    const SourceFile& file = sources.Get(range.file);
+    uint32_t begin = range.begin;
+    uint32_t end = range.end;
+    if (const Embedding* embedding = file.Embedded()) {
+      begin = embedding->ContainerOffset(begin);
+      end = embedding->ContainerOffset(end);
+    } else if (range.file != document) {
+      return std::nullopt;
+    }
+    return Json{{"start", ToJson(PositionOf(text_, begin + shift_))},
+                {"end", ToJson(PositionOf(text_, end + shift_))}};
+  }
+
+ private:
+  const std::string& text_;
+  uint32_t shift_;
+};
+
+Json WholeFileRange() {
+  return {{"start", ToJson({0, 0})}, {"end", ToJson({0, 0})}};
+}
+
+}  // namespace
+
+std::string UriOfPath(const std::filesystem::path& path) {
+  static constexpr char kHex[] = "0123456789ABCDEF";
+  std::string uri = "file://";
+  for (const unsigned char c : std::filesystem::absolute(path).lexically_normal().string()) {
+    const bool plain = std::isalnum(c) != 0 || c == '/' || c == '-' || c == '_' || c == '.' ||
+                       c == '~';
+    if (plain) {
+      uri += static_cast<char>(c);
+    } else {
+      uri += '%';
+      uri += kHex[c >> 4];
+      uri += kHex[c & 15];
+    }
+  }
+  return uri;
+}
+
+std::vector<DocumentFinding> CheckDocument(const std::filesystem::path& path,
+                                           std::string_view uri, const std::string& text,
+                                           const std::vector<std::string>& rules_with_sections) {
+  CheckOptions options;
+  options.jobs = 1;
+  options.force_exclude = false;  // an open file is checked even when the config skips it
+  InputText input = ClassifyInputText(text);
+  const uint32_t shift = input.byte_order_mark ? 3 : 0;
+  options.in_memory = CheckOptions::InMemoryFile{path, std::move(input)};
+  CheckRun run = RunCheck(options);
+  const SourceManager& sources = *run.sources;
+  const DocumentPositions positions(text, shift);
+  std::vector<DocumentFinding> findings;
+  for (const FileReport& report : run.report.files) {
+    if (report.file == nullptr) continue;
+    const FileId document = report.file->Id();
+    for (const Diagnostic& d : report.diagnostics) {
+      std::optional<Json> range = positions.Range(sources, d.range, document);
+      if (!range && d.range.Valid()) continue;  // in another file (Common): shown there
+      DocumentFinding finding;
+      Json& out = finding.diagnostic;
+      out = {{"range", range ? *range : WholeFileRange()},
+             {"severity", SeverityCode(d.severity)},
+             {"code", d.rule_id},
+             {"source", "shaderport"},
+             {"message", d.message}};
+      const bool documented = std::binary_search(rules_with_sections.begin(),
+                                                 rules_with_sections.end(), d.rule_id);
+      out["codeDescription"] = {{"href", RuleHelpUri(d.rule_id, documented)}};
+      Json related = Json::array();
+      for (const DiagnosticNote& note : d.notes) {
+        std::optional<Json> where = positions.Range(sources, note.range, document);
+        if (!where) continue;
+        related.push_back(
+            {{"location", {{"uri", std::string(uri)}, {"range", *where}}}, {"message", note.message}});
+      }
+      if (!related.empty()) out["relatedInformation"] = std::move(related);
+      finding.edits = Json::array();
+      finding.safe = !d.fixes.empty();
+      for (const FixIt& fix : d.fixes) {
+        std::optional<Json> where = positions.Range(sources, fix.range, document);
+        if (!where) {
+          finding.edits = Json::array();  // an edit elsewhere: the set is not offered
+          break;
+        }
+        finding.edits.push_back({{"range", *where}, {"newText", fix.replacement}});
+        finding.safe = finding.safe && fix.safety == FixSafety::kSafe;
+      }
+      out["data"] = {{"fixable", IsFixable(d)}};
+      findings.push_back(std::move(finding));
+    }
+  }
+  return findings;
+}
+
+std::string FixDocument(const std::filesystem::path& path, const std::string& text) {
+  if (IsProjectDocument(path)) return "";  // projects are fixed tab by tab (fix_document.h)
+  SourceManager sources;
+  PortOptions options;
+  options.mode = rule::PortMode::kFix;
+  PortResult fixed = PortInput(path, ClassifyInputText(text), options, sources);
+  if (!fixed.HasOutput() || !fixed.Changed()) return "";
+  return fixed.byte_order_mark ? "\xEF\xBB\xBF" + fixed.text : fixed.text;
+}
+
+}  // namespace shaderport::driver::lsp

@@ -1,0 +1,32 @@
+// An open document checked as `shaderport check --stdin --stdin-filename PATH` would
+// check it, and its findings in LSP terms (positions in the document's own text).
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace shaderport::driver::lsp {
+
+struct DocumentFinding {
+  nlohmann::json diagnostic;  // an LSP Diagnostic
+  nlohmann::json edits;       // its fix-its as TextEdits in the document (array)
+  bool safe = false;          // its fix-its are safe ones: what `shaderport fix` applies
+};
+
+// `uri` names the document in related information; `rules_with_sections` (sorted)
+// picks each rule's documentation link.
+std::vector<DocumentFinding> CheckDocument(const std::filesystem::path& path,
+                                           std::string_view uri, const std::string& text,
+                                           const std::vector<std::string>& rules_with_sections);
+
+// What `shaderport fix` writes for the document ("" when it changes nothing or
+// cannot: the text is not read, or the fixes did not settle).
+std::string FixDocument(const std::filesystem::path& path, const std::string& text);
+
+// A URI for a file path: file:// with the path percent-encoded.
+std::string UriOfPath(const std::filesystem::path& path);
+
+}  // namespace shaderport::driver::lsp

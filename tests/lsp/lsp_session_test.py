@@ -1,0 +1,229 @@
+#!/usr/bin/env python3
+"""Drives `shaderport lsp` over its standard input and output as an editor does.
+
+Asserts: the handshake; diagnostics on open and after full and incremental
+changes; that for every file of the corpus the published diagnostics equal
+`check --format json`'s (rule id, severity, range); quick fixes whose edits
+repair the finding; "fix all" equal to `shaderport fix`; errors for a malformed
+message, an unknown method and a request before initialize; a clean exit after
+shutdown and exit 1 when the client goes away.
+
+  lsp_session_test.py SHADERPORT SOURCE_DIR SCRATCH_DIR
+"""
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+BINARY, SOURCE, SCRATCH = (os.path.abspath(a) for a in sys.argv[1:4])
+REPAIRABLE = ("void mainImage(out vec4 fragColor, in vec2 fragCoord)\n{\n"
+              "    float t = iGlobalTime * 1;\n    vec3 c = 0.5;\n"
+              "    fragColor = vec4(c * t, 1.0);\n}\n")
+
+
+def fail(message):
+    print("FAIL: " + message)
+    sys.exit(1)
+
+
+class Client:
+    def __init__(self):
+        self.process = subprocess.Popen([BINARY, "lsp"], stdin=subprocess.PIPE,
+                                        stdout=subprocess.PIPE, cwd=SCRATCH)
+        self.next_id = 0
+
+    def send_raw(self, body):
+        self.process.stdin.write(b"Content-Length: %d\r\n\r\n" % len(body) + body)
+        self.process.stdin.flush()
+
+    def send(self, method, params=None, request=True):
+        message = {"jsonrpc": "2.0", "method": method}
+        if params is not None:
+            message["params"] = params
+        if request:
+            self.next_id += 1
+            message["id"] = self.next_id
+        self.send_raw(json.dumps(message).encode())
+        return message.get("id")
+
+    def receive(self):
+        length = None
+        while True:
+            line = self.process.stdout.readline()
+            if not line:
+                fail("the server closed its output")
+            line = line.strip()
+            if not line:
+                break
+            name, _, value = line.decode().partition(":")
+            if name.lower() == "content-length":
+                length = int(value)
+        return json.loads(self.process.stdout.read(length))
+
+    def request(self, method, params=None):
+        wanted = self.send(method, params)
+        while True:
+            message = self.receive()
+            if message.get("id") == wanted:
+                return message
+
+    def diagnostics(self):
+        while True:
+            message = self.receive()
+            if message.get("method") == "textDocument/publishDiagnostics":
+                return message["params"]
+
+
+def uri(path):
+    return "file://" + os.path.abspath(path)
+
+
+def apply(text, edits):
+    lines = text.split("\n")
+    starts = [0]
+    for line in lines[:-1]:
+        starts.append(starts[-1] + len(line) + 1)
+
+    def offset(position):  # ASCII texts: a UTF-16 unit is a byte
+        return starts[position["line"]] + position["character"]
+
+    for edit in sorted(edits, key=lambda e: offset(e["range"]["start"]), reverse=True):
+        text = text[:offset(edit["range"]["start"])] + edit["newText"] + text[offset(edit["range"]["end"]):]
+    return text
+
+
+def check_json(path):
+    done = subprocess.run([BINARY, "check", "--format", "json", "--no-cache", path],
+                          capture_output=True, text=True, cwd=SCRATCH)
+    return json.loads(done.stdout)
+
+
+def expected_of(path):
+    """check's findings in LSP terms (0-based; the corpus is ASCII)."""
+    out = []
+    for entry in check_json(path)["files"]:
+        for d in entry["diagnostics"]:
+            location = d["location"]
+            if location and os.path.abspath(os.path.join(SCRATCH, location["path"])) != os.path.abspath(path):
+                continue
+            if location:
+                r = location["range"]
+                rng = ((r["start"]["line"] - 1, r["start"]["column"] - 1),
+                       (r["end"]["line"] - 1, r["end"]["column"] - 1))
+            else:
+                rng = ((0, 0), (0, 0))
+            out.append((d["rule"], {"error": 1, "warning": 2, "note": 3}[d["severity"]], rng))
+    return sorted(out)
+
+
+def published_of(params):
+    return sorted((d["code"], d["severity"],
+                   ((d["range"]["start"]["line"], d["range"]["start"]["character"]),
+                    (d["range"]["end"]["line"], d["range"]["end"]["character"])))
+                  for d in params["diagnostics"])
+
+
+def main():
+    shutil.rmtree(SCRATCH, ignore_errors=True)
+    os.makedirs(SCRATCH)
+    toy = os.path.join(SCRATCH, "toy.glsl")
+    with open(toy, "w") as f:
+        f.write(REPAIRABLE)
+
+    client = Client()
+    early = client.request("textDocument/codeAction", {})
+    if early.get("error", {}).get("code") != -32002:
+        fail("a request before initialize: %r" % early)
+    init = client.request("initialize", {"processId": None, "rootUri": uri(SCRATCH), "capabilities": {}})
+    capabilities = init["result"]["capabilities"]
+    if capabilities["textDocumentSync"]["change"] != 2 or "codeActionProvider" not in capabilities:
+        fail("capabilities: %r" % capabilities)
+    client.send("initialized", {}, request=False)
+
+    # Open: the same findings as check.
+    client.send("textDocument/didOpen", {"textDocument": {
+        "uri": uri(toy), "languageId": "glsl", "version": 1, "text": REPAIRABLE}}, request=False)
+    published = client.diagnostics()
+    if published_of(published) != expected_of(toy):
+        fail("on open:\n%r\n!=\n%r" % (published_of(published), expected_of(toy)))
+    first = published["diagnostics"][0]
+    if not first["codeDescription"]["href"].startswith("https://") or first["source"] != "shaderport":
+        fail("diagnostic fields: %r" % first)
+
+    # A quick fix repairs its finding.
+    actions = client.request("textDocument/codeAction", {
+        "textDocument": {"uri": uri(toy)}, "range": first["range"],
+        "context": {"diagnostics": [first]}})["result"]
+    quick = [a for a in actions if a["kind"] == "quickfix"]
+    if not quick:
+        fail("no quick fix for %r: %r" % (first, actions))
+    repaired = apply(REPAIRABLE, quick[0]["edit"]["changes"][uri(toy)])
+    if "iGlobalTime" in repaired:
+        fail("the quick fix left iGlobalTime:\n" + repaired)
+    # Fix all is what `shaderport fix` writes.
+    fix_all = [a for a in actions if a["kind"] == "source.fixAll.shaderport"]
+    fixed = subprocess.run([BINARY, "fix", toy], capture_output=True, text=True).stdout
+    if not fix_all or apply(REPAIRABLE, fix_all[0]["edit"]["changes"][uri(toy)]) != fixed:
+        fail("fix all differs from shaderport fix: %r" % fix_all)
+
+    # An incremental change: replace line 3 with the repaired line.
+    client.send("textDocument/didChange", {
+        "textDocument": {"uri": uri(toy), "version": 2},
+        "contentChanges": [{"range": {"start": {"line": 2, "character": 0},
+                                      "end": {"line": 3, "character": 17}},
+                            "text": "    float t = iTime * 1.0;\n    vec3 c = vec3(0.5);"}]},
+        request=False)
+    after = client.diagnostics()
+    if after["version"] != 2 or after["diagnostics"]:
+        fail("after the incremental change: %r" % after)
+    # A full change back.
+    client.send("textDocument/didChange", {"textDocument": {"uri": uri(toy), "version": 3},
+                                           "contentChanges": [{"text": REPAIRABLE}]}, request=False)
+    if published_of(client.diagnostics()) != expected_of(toy):
+        fail("after the full change")
+
+    # Every corpus file: the server and check agree.
+    compared = 0
+    for folder, _, names in sorted(os.walk(os.path.join(SOURCE, "corpus"))):
+        for name in sorted(names):
+            if not name.endswith((".glsl", ".frag", ".vert")):
+                continue
+            path = os.path.join(folder, name)
+            text = open(path).read()
+            client.send("textDocument/didOpen", {"textDocument": {
+                "uri": uri(path), "languageId": "glsl", "version": 1, "text": text}}, request=False)
+            got = published_of(client.diagnostics())
+            want = expected_of(path)
+            if got != want:
+                fail("%s:\nserver %r\ncheck  %r" % (path, got, want))
+            client.send("textDocument/didClose", {"textDocument": {"uri": uri(path)}}, request=False)
+            if client.diagnostics()["diagnostics"]:
+                fail("closing did not clear the diagnostics")
+            compared += 1
+    if compared < 20:
+        fail("only %d corpus files" % compared)
+
+    # Robustness: not JSON, an unknown method, a notification it does not know.
+    client.send_raw(b"{not json")
+    if client.receive().get("error", {}).get("code") != -32700:
+        fail("a malformed message is not a parse error")
+    if client.request("shaderport/nothing", {}).get("error", {}).get("code") != -32601:
+        fail("an unknown method is not MethodNotFound")
+    client.send("$/cancelRequest", {"id": 99}, request=False)
+    if client.request("shutdown").get("result", "missing") is not None:
+        fail("shutdown")
+    client.send("exit", request=False)
+    if client.process.wait(timeout=30) != 0:
+        fail("exit after shutdown is not 0")
+
+    gone = Client()
+    gone.request("initialize", {"capabilities": {}})
+    gone.process.stdin.close()
+    if gone.process.wait(timeout=30) != 1:
+        fail("a client that goes away: exit is not 1")
+    print("lsp: handshake, diagnostics equal check's on %d corpus files, quick fix, fix all, "
+          "incremental and full changes, errors, shutdown" % compared)
+
+
+main()
