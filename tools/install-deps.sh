@@ -55,6 +55,13 @@ for p in "${packages[@]}"; do
     missing+=("$p")
   fi
 done
+# The editor-client tests run Node and npm (editors/vscode's pinned packages need
+# Node 16 or later). A machine that has them (Debian's nodejs and npm, or another
+# Node with its own npm) is left alone: Debian's npm package conflicts with Node
+# builds that bundle npm.
+if [[ ${1:-} != --build && ${1:-} != --bench ]] && ! { command -v node && command -v npm; } >/dev/null; then
+  missing+=(nodejs npm)
+fi
 
 if ((${#missing[@]} == 0)); then
   echo "install-deps: all ${#packages[@]} packages present"

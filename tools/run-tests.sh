@@ -6,6 +6,9 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 
 bash tools/install-deps.sh
+# The editor-client tests use the VS Code extension's npm packages, pinned by its
+# lockfile; installed here, so that no test fetches anything while it runs.
+(cd editors/vscode && npm ci --no-audit --no-fund --loglevel=error)
 
 jobs=$(nproc)
 export CTEST_OUTPUT_ON_FAILURE=1
