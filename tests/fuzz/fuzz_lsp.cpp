@@ -22,7 +22,8 @@ void Require(bool ok, const char* what) { shaderport::fuzz::Check(ok, "fuzz_lsp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   shaderport::driver::lsp::LspSession session({"fuzz", {}});
-  session.Handle({{"jsonrpc", "2.0"}, {"id", 0}, {"method", "initialize"}, {"params", Json::object()}});
+  session.Handle(
+      {{"jsonrpc", "2.0"}, {"id", 0}, {"method", "initialize"}, {"params", Json::object()}});
   const std::string_view input(reinterpret_cast<const char*>(data), size);
   size_t start = 0;
   while (start < input.size() && !session.Exited()) {

@@ -5,9 +5,9 @@
 
 #include "driver/check_pipeline.h"
 #include "driver/check_projects.h"
+#include "driver/lsp/lsp_text.h"
 #include "driver/port/port_file.h"
 #include "driver/read_input.h"
-#include "driver/lsp/lsp_text.h"
 #include "report/docs_links.h"
 
 namespace shaderport::driver::lsp {
@@ -55,9 +55,7 @@ class DocumentPositions {
   uint32_t shift_;
 };
 
-Json WholeFileRange() {
-  return {{"start", ToJson({0, 0})}, {"end", ToJson({0, 0})}};
-}
+Json WholeFileRange() { return {{"start", ToJson({0, 0})}, {"end", ToJson({0, 0})}}; }
 
 }  // namespace
 
@@ -65,8 +63,8 @@ std::string UriOfPath(const std::filesystem::path& path) {
   static constexpr char kHex[] = "0123456789ABCDEF";
   std::string uri = "file://";
   for (const unsigned char c : std::filesystem::absolute(path).lexically_normal().string()) {
-    const bool plain = std::isalnum(c) != 0 || c == '/' || c == '-' || c == '_' || c == '.' ||
-                       c == '~';
+    const bool plain =
+        std::isalnum(c) != 0 || c == '/' || c == '-' || c == '_' || c == '.' || c == '~';
     if (plain) {
       uri += static_cast<char>(c);
     } else {
@@ -78,8 +76,8 @@ std::string UriOfPath(const std::filesystem::path& path) {
   return uri;
 }
 
-std::vector<DocumentFinding> CheckDocument(const std::filesystem::path& path,
-                                           std::string_view uri, const std::string& text,
+std::vector<DocumentFinding> CheckDocument(const std::filesystem::path& path, std::string_view uri,
+                                           const std::string& text,
                                            const std::vector<std::string>& rules_with_sections) {
   CheckOptions options;
   options.jobs = 1;
@@ -104,15 +102,15 @@ std::vector<DocumentFinding> CheckDocument(const std::filesystem::path& path,
              {"code", d.rule_id},
              {"source", "shaderport"},
              {"message", d.message}};
-      const bool documented = std::binary_search(rules_with_sections.begin(),
-                                                 rules_with_sections.end(), d.rule_id);
+      const bool documented =
+          std::binary_search(rules_with_sections.begin(), rules_with_sections.end(), d.rule_id);
       out["codeDescription"] = {{"href", RuleHelpUri(d.rule_id, documented)}};
       Json related = Json::array();
       for (const DiagnosticNote& note : d.notes) {
         std::optional<Json> where = positions.Range(sources, note.range, document);
         if (!where) continue;
-        related.push_back(
-            {{"location", {{"uri", std::string(uri)}, {"range", *where}}}, {"message", note.message}});
+        related.push_back({{"location", {{"uri", std::string(uri)}, {"range", *where}}},
+                           {"message", note.message}});
       }
       if (!related.empty()) out["relatedInformation"] = std::move(related);
       finding.edits = Json::array();

@@ -18,8 +18,8 @@ struct DocumentFinding {
 
 // `uri` names the document in related information; `rules_with_sections` (sorted)
 // picks each rule's documentation link.
-std::vector<DocumentFinding> CheckDocument(const std::filesystem::path& path,
-                                           std::string_view uri, const std::string& text,
+std::vector<DocumentFinding> CheckDocument(const std::filesystem::path& path, std::string_view uri,
+                                           const std::string& text,
                                            const std::vector<std::string>& rules_with_sections);
 
 // What `shaderport fix` writes for the document ("" when it changes nothing or

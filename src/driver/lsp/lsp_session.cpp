@@ -1,5 +1,6 @@
 #include "driver/lsp/lsp_session.h"
 
+#include <algorithm>
 #include <exception>
 
 #include "driver/lsp/lsp_check.h"
@@ -103,6 +104,8 @@ std::vector<Json> LspSession::Handle(const Json& message) {
     out.push_back(ErrorResponse(id, kInvalidRequest, "the server is shutting down"));
     return out;
   }
+  // A request sees every change before it: pending checks are published first.
+  if (request) out = Flush();
   try {
     Json result = Dispatch(method, params, out);
     if (request) {
@@ -123,12 +126,12 @@ std::vector<Json> LspSession::Handle(const Json& message) {
 Json LspSession::Dispatch(const std::string& method, const Json& params, std::vector<Json>& out) {
   if (method == "initialize") {
     initialized_ = true;
-    return {{"capabilities",
-             {{"positionEncoding", "utf-16"},
-              {"textDocumentSync", {{"openClose", true}, {"change", 2}}},
-              {"codeActionProvider",
-               {{"codeActionKinds", {"quickfix", "source.fixAll.shaderport"}}}}}},
-            {"serverInfo", {{"name", "shaderport"}, {"version", options_.tool_version}}}};
+    return {
+        {"capabilities",
+         {{"positionEncoding", "utf-16"},
+          {"textDocumentSync", {{"openClose", true}, {"change", 2}}},
+          {"codeActionProvider", {{"codeActionKinds", {"quickfix", "source.fixAll.shaderport"}}}}}},
+        {"serverInfo", {{"name", "shaderport"}, {"version", options_.tool_version}}}};
   }
   if (method == "shutdown") {
     shutdown_ = true;
@@ -145,7 +148,7 @@ Json LspSession::Dispatch(const std::string& method, const Json& params, std::ve
     document.path = PathOfUri(uri);
     document.text = StringMember(item, "text");
     document.version = item.value("version", int64_t{0});
-    Publish(uri, document, out);
+    Changed(uri, document, out);
     return Json::value_t::discarded;
   }
   if (method == "textDocument/didChange") {
@@ -156,11 +159,12 @@ Json LspSession::Dispatch(const std::string& method, const Json& params, std::ve
       if (!ApplyChange(found->second.text, change)) throw BadParams{"a malformed change"};
     }
     found->second.version = item.value("version", found->second.version);
-    Publish(found->first, found->second, out);
+    Changed(found->first, found->second, out);
     return Json::value_t::discarded;
   }
   if (method == "textDocument/didClose") {
     const std::string uri = StringMember(Member(params, "textDocument"), "uri");
+    std::erase(dirty_, uri);
     if (documents_.erase(uri) > 0) {
       out.push_back({{"jsonrpc", "2.0"},
                      {"method", "textDocument/publishDiagnostics"},
@@ -174,6 +178,21 @@ Json LspSession::Dispatch(const std::string& method, const Json& params, std::ve
   return Json::value_t::discarded;
 }
 
+void LspSession::Changed(const std::string& uri, Document& document, std::vector<Json>& out) {
+  if (!options_.defer_checks) return Publish(uri, document, out);
+  if (std::find(dirty_.begin(), dirty_.end(), uri) == dirty_.end()) dirty_.push_back(uri);
+}
+
+std::vector<Json> LspSession::Flush() {
+  std::vector<Json> out;
+  for (const std::string& uri : dirty_) {
+    const auto found = documents_.find(uri);
+    if (found != documents_.end()) Publish(uri, found->second, out);
+  }
+  dirty_.clear();
+  return out;
+}
+
 void LspSession::Publish(const std::string& uri, Document& document, std::vector<Json>& out) {
   document.published.clear();
   Json diagnostics = Json::array();
@@ -183,10 +202,10 @@ void LspSession::Publish(const std::string& uri, Document& document, std::vector
     document.published.push_back(
         {std::move(finding.diagnostic), std::move(finding.edits), finding.safe});
   }
-  out.push_back({{"jsonrpc", "2.0"},
-                 {"method", "textDocument/publishDiagnostics"},
-                 {"params",
-                  {{"uri", uri}, {"version", document.version}, {"diagnostics", diagnostics}}}});
+  out.push_back(
+      {{"jsonrpc", "2.0"},
+       {"method", "textDocument/publishDiagnostics"},
+       {"params", {{"uri", uri}, {"version", document.version}, {"diagnostics", diagnostics}}}});
 }
 
 Json LspSession::CodeActions(const Json& params) {
@@ -211,13 +230,14 @@ Json LspSession::CodeActions(const Json& params) {
   if (any_safe) {
     const std::string fixed = FixDocument(document.path, document.text);
     if (!fixed.empty()) {
-      const Json whole = {{"start", ToJson({0, 0})},
-                          {"end", ToJson(PositionOf(document.text,
-                                                    static_cast<uint32_t>(document.text.size())))}};
+      const Json whole = {
+          {"start", ToJson({0, 0})},
+          {"end", ToJson(PositionOf(document.text, static_cast<uint32_t>(document.text.size())))}};
       actions.push_back(
           {{"title", "Fix all safe fixes in this file (shaderport fix)"},
            {"kind", "source.fixAll.shaderport"},
-           {"edit", {{"changes", {{uri, Json::array({{{"range", whole}, {"newText", fixed}}})}}}}}});
+           {"edit",
+            {{"changes", {{uri, Json::array({{{"range", whole}, {"newText", fixed}}})}}}}}});
     }
   }
   return actions;

@@ -19,6 +19,10 @@ namespace shaderport::driver::lsp {
 struct SessionOptions {
   std::string tool_version;
   std::vector<std::string> rules_with_sections;  // sorted: rules with a docs section
+  // Changes only mark a document; Flush() checks each marked one once. The server
+  // flushes when no message is waiting, so a burst of keystrokes is checked once, as
+  // its last version (stale versions are never checked).
+  bool defer_checks = false;
 };
 
 class LspSession {
@@ -27,6 +31,9 @@ class LspSession {
 
   // One parsed message; returns the responses and notifications to send, in order.
   std::vector<nlohmann::json> Handle(const nlohmann::json& message);
+
+  // Checks and publishes every document changed since the last flush (defer_checks).
+  std::vector<nlohmann::json> Flush();
 
   // The response to a message that was not JSON (JSON-RPC's parse error, id null).
   static nlohmann::json ParseErrorResponse(std::string_view what);
@@ -51,10 +58,12 @@ class LspSession {
   nlohmann::json Dispatch(const std::string& method, const nlohmann::json& params,
                           std::vector<nlohmann::json>& out);
   void Publish(const std::string& uri, Document& document, std::vector<nlohmann::json>& out);
+  void Changed(const std::string& uri, Document& document, std::vector<nlohmann::json>& out);
   nlohmann::json CodeActions(const nlohmann::json& params);
 
   SessionOptions options_;
   std::map<std::string, Document> documents_;  // by URI
+  std::vector<std::string> dirty_;             // changed, not yet checked (defer_checks)
   bool initialized_ = false;
   bool shutdown_ = false;
   bool exited_ = false;

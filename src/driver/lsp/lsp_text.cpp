@@ -46,8 +46,7 @@ Position PositionOf(std::string_view text, uint32_t offset) {
 uint32_t OffsetOf(std::string_view text, Position position) {
   uint32_t at = LineStart(text, position.line);
   uint32_t units = 0;
-  while (at < text.size() && text[at] != '\n' && text[at] != '\r' &&
-         units < position.character) {
+  while (at < text.size() && text[at] != '\n' && text[at] != '\r' && units < position.character) {
     const uint32_t length = SequenceLength(static_cast<unsigned char>(text[at]));
     units += length == 4 ? 2 : 1;
     at = std::min<uint32_t>(at + length, static_cast<uint32_t>(text.size()));

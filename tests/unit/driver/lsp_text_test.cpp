@@ -68,5 +68,51 @@ TEST(LspSession, AnswersEveryRequestOnceAndKnowsItsErrors) {
   EXPECT_EQ(session.ExitCode(), 1);  // exit without shutdown
 }
 
+// With deferred checks a burst of changes is checked once, as its last version, and
+// a request first publishes what is pending.
+TEST(LspSession, DeferredChecksRunOnceForTheLastVersion) {
+  LspSession session({"test", {}, true});
+  session.Handle({{"jsonrpc", "2.0"}, {"id", 1}, {"method", "initialize"}});
+  const nlohmann::json open = {
+      {"jsonrpc", "2.0"},
+      {"method", "textDocument/didOpen"},
+      {"params",
+       {{"textDocument",
+         {{"uri", "file:///tmp/deferred.frag"}, {"version", 1}, {"text", "void main() {}\n"}}}}}};
+  EXPECT_TRUE(session.Handle(open).empty());
+  for (int version = 2; version <= 4; ++version) {
+    EXPECT_TRUE(session
+                    .Handle({{"jsonrpc", "2.0"},
+                             {"method", "textDocument/didChange"},
+                             {"params",
+                              {{"textDocument",
+                                {{"uri", "file:///tmp/deferred.frag"}, {"version", version}}},
+                               {"contentChanges", {{{"text", "void main() { x; }\n"}}}}}}})
+                    .empty());
+  }
+  const auto flushed = session.Flush();
+  ASSERT_EQ(flushed.size(), 1u);
+  EXPECT_EQ(flushed[0]["params"]["version"], 4);
+  EXPECT_FALSE(flushed[0]["params"]["diagnostics"].empty());
+  EXPECT_TRUE(session.Flush().empty());
+  session.Handle({{"jsonrpc", "2.0"},
+                  {"method", "textDocument/didChange"},
+                  {"params",
+                   {{"textDocument", {{"uri", "file:///tmp/deferred.frag"}, {"version", 5}}},
+                    {"contentChanges", {{{"text", "void main() {}\n"}}}}}}});
+  const auto answered = session.Handle({{"jsonrpc", "2.0"},
+                                        {"id", 2},
+                                        {"method", "textDocument/codeAction"},
+                                        {"params",
+                                         {{"textDocument", {{"uri", "file:///tmp/deferred.frag"}}},
+                                          {"range",
+                                           {{"start", {{"line", 0}, {"character", 0}}},
+                                            {"end", {{"line", 0}, {"character", 1}}}}}}}});
+  ASSERT_EQ(answered.size(), 2u);
+  EXPECT_EQ(answered[0]["method"], "textDocument/publishDiagnostics");
+  EXPECT_EQ(answered[0]["params"]["version"], 5);
+  EXPECT_EQ(answered[1]["id"], 2);
+}
+
 }  // namespace
 }  // namespace shaderport::driver::lsp
