@@ -32,6 +32,7 @@ class Client:
         self.process = subprocess.Popen([BINARY, "lsp"], stdin=subprocess.PIPE,
                                         stdout=subprocess.PIPE, cwd=SCRATCH)
         self.next_id = 0
+        self.logs = []
 
     def send_raw(self, body):
         self.process.stdin.write(b"Content-Length: %d\r\n\r\n" % len(body) + body)
@@ -71,6 +72,8 @@ class Client:
     def diagnostics(self):
         while True:
             message = self.receive()
+            if message.get("method") == "window/logMessage":
+                self.logs.append(message["params"]["message"])
             if message.get("method") == "textDocument/publishDiagnostics":
                 return message["params"]
 
@@ -147,6 +150,9 @@ def main():
     published = client.diagnostics()
     if published_of(published) != expected_of(toy):
         fail("on open:\n%r\n!=\n%r" % (published_of(published), expected_of(toy)))
+    if "toy.glsl is checked as a shadertoy fragment shader, harness shadertoy, target webgl2" \
+            not in client.logs:
+        fail("the decision was not told: %r" % client.logs)
     first = published["diagnostics"][0]
     if not first["codeDescription"]["href"].startswith("https://") or first["source"] != "shaderport":
         fail("diagnostic fields: %r" % first)

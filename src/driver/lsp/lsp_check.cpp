@@ -76,9 +76,9 @@ std::string UriOfPath(const std::filesystem::path& path) {
   return uri;
 }
 
-std::vector<DocumentFinding> CheckDocument(const std::filesystem::path& path, std::string_view uri,
-                                           const std::string& text,
-                                           const std::vector<std::string>& rules_with_sections) {
+DocumentCheck CheckDocument(const std::filesystem::path& path, std::string_view uri,
+                            const std::string& text,
+                            const std::vector<std::string>& rules_with_sections) {
   CheckOptions options;
   options.jobs = 1;
   options.force_exclude = false;  // an open file is checked even when the config skips it
@@ -88,9 +88,15 @@ std::vector<DocumentFinding> CheckDocument(const std::filesystem::path& path, st
   CheckRun run = RunCheck(options);
   const SourceManager& sources = *run.sources;
   const DocumentPositions positions(text, shift);
-  std::vector<DocumentFinding> findings;
+  DocumentCheck checked;
+  std::vector<DocumentFinding>& findings = checked.findings;
   for (const FileReport& report : run.report.files) {
     if (report.file == nullptr) continue;
+    if (checked.decision.empty() && !report.dialect.empty()) {
+      checked.decision = report.dialect + " " + report.stage + " shader" +
+                         (report.harness.empty() ? "" : ", harness " + report.harness) +
+                         ", target " + report.target;
+    }
     const FileId document = report.file->Id();
     for (const Diagnostic& d : report.diagnostics) {
       std::optional<Json> range = positions.Range(sources, d.range, document);
@@ -128,7 +134,7 @@ std::vector<DocumentFinding> CheckDocument(const std::filesystem::path& path, st
       findings.push_back(std::move(finding));
     }
   }
-  return findings;
+  return checked;
 }
 
 std::string FixDocument(const std::filesystem::path& path, const std::string& text) {

@@ -16,11 +16,18 @@ struct DocumentFinding {
   bool safe = false;          // its fix-its are safe ones: what `shaderport fix` applies
 };
 
+struct DocumentCheck {
+  std::vector<DocumentFinding> findings;
+  // What the verdict is against, for people: "shadertoy fragment shader, harness
+  // shadertoy, target webgl2" (the file's decision, as `explain-file` shows it).
+  std::string decision;
+};
+
 // `uri` names the document in related information; `rules_with_sections` (sorted)
 // picks each rule's documentation link.
-std::vector<DocumentFinding> CheckDocument(const std::filesystem::path& path, std::string_view uri,
-                                           const std::string& text,
-                                           const std::vector<std::string>& rules_with_sections);
+DocumentCheck CheckDocument(const std::filesystem::path& path, std::string_view uri,
+                            const std::string& text,
+                            const std::vector<std::string>& rules_with_sections);
 
 // What `shaderport fix` writes for the document ("" when it changes nothing or
 // cannot: the text is not read, or the fixes did not settle).

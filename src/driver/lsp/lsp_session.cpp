@@ -196,8 +196,20 @@ std::vector<Json> LspSession::Flush() {
 void LspSession::Publish(const std::string& uri, Document& document, std::vector<Json>& out) {
   document.published.clear();
   Json diagnostics = Json::array();
-  for (DocumentFinding& finding :
-       CheckDocument(document.path, uri, document.text, options_.rules_with_sections)) {
+  DocumentCheck checked =
+      CheckDocument(document.path, uri, document.text, options_.rules_with_sections);
+  // What the verdict is against, told when it is new or changes (a #version line
+  // added, a mainImage removed).
+  if (!checked.decision.empty() && checked.decision != document.decision) {
+    document.decision = checked.decision;
+    out.push_back({{"jsonrpc", "2.0"},
+                   {"method", "window/logMessage"},
+                   {"params",
+                    {{"type", 3},
+                     {"message", document.path.filename().string() + " is checked as a " +
+                                     checked.decision}}}});
+  }
+  for (DocumentFinding& finding : checked.findings) {
     diagnostics.push_back(finding.diagnostic);
     document.published.push_back(
         {std::move(finding.diagnostic), std::move(finding.edits), finding.safe});

@@ -53,6 +53,7 @@ class LspSession {
     std::string text;
     int64_t version = 0;
     std::vector<Published> published;
+    std::string decision;  // last told to the client (window/logMessage)
   };
 
   nlohmann::json Dispatch(const std::string& method, const nlohmann::json& params,

@@ -90,10 +90,14 @@ TEST(LspSession, DeferredChecksRunOnceForTheLastVersion) {
                                {"contentChanges", {{{"text", "void main() { x; }\n"}}}}}}})
                     .empty());
   }
+  // The first check also tells what the verdict is against (window/logMessage).
   const auto flushed = session.Flush();
-  ASSERT_EQ(flushed.size(), 1u);
-  EXPECT_EQ(flushed[0]["params"]["version"], 4);
-  EXPECT_FALSE(flushed[0]["params"]["diagnostics"].empty());
+  ASSERT_EQ(flushed.size(), 2u);
+  EXPECT_EQ(flushed[0]["method"], "window/logMessage");
+  EXPECT_EQ(flushed[0]["params"]["message"],
+            "deferred.frag is checked as a webgl1 fragment shader, target webgl1");
+  EXPECT_EQ(flushed[1]["params"]["version"], 4);
+  EXPECT_FALSE(flushed[1]["params"]["diagnostics"].empty());
   EXPECT_TRUE(session.Flush().empty());
   session.Handle({{"jsonrpc", "2.0"},
                   {"method", "textDocument/didChange"},
