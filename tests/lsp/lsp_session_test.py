@@ -173,6 +173,19 @@ def main():
     if not fix_all or apply(REPAIRABLE, fix_all[0]["edit"]["changes"][uri(toy)]) != fixed:
         fail("fix all differs from shaderport fix: %r" % fix_all)
 
+    # The outline and a definition: 't' in line 5 is declared in line 3.
+    symbols = client.request("textDocument/documentSymbol", {"textDocument": {"uri": uri(toy)}})["result"]
+    if [(s["name"], s["kind"]) for s in symbols] != [("mainImage", 12)]:
+        fail("document symbols: %r" % symbols)
+    definition = client.request("textDocument/definition", {
+        "textDocument": {"uri": uri(toy)}, "position": {"line": 4, "character": 25}})["result"]
+    if definition is None or definition["range"]["start"] != {"line": 2, "character": 10}:
+        fail("definition of t: %r" % definition)
+    builtin = client.request("textDocument/definition", {
+        "textDocument": {"uri": uri(toy)}, "position": {"line": 2, "character": 16}})["result"]
+    if builtin is not None:
+        fail("iGlobalTime has no declaration in the document: %r" % builtin)
+
     # An incremental change: replace line 3 with the repaired line.
     client.send("textDocument/didChange", {
         "textDocument": {"uri": uri(toy), "version": 2},

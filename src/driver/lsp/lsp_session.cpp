@@ -4,6 +4,7 @@
 #include <exception>
 
 #include "driver/lsp/lsp_check.h"
+#include "driver/lsp/lsp_symbols.h"
 #include "driver/lsp/lsp_text.h"
 
 namespace shaderport::driver::lsp {
@@ -130,6 +131,8 @@ Json LspSession::Dispatch(const std::string& method, const Json& params, std::ve
         {"capabilities",
          {{"positionEncoding", "utf-16"},
           {"textDocumentSync", {{"openClose", true}, {"change", 2}}},
+          {"documentSymbolProvider", true},
+          {"definitionProvider", true},
           {"codeActionProvider", {{"codeActionKinds", {"quickfix", "source.fixAll.shaderport"}}}}}},
         {"serverInfo", {{"name", "shaderport"}, {"version", options_.tool_version}}}};
   }
@@ -173,6 +176,21 @@ Json LspSession::Dispatch(const std::string& method, const Json& params, std::ve
     return Json::value_t::discarded;
   }
   if (method == "textDocument/codeAction") return CodeActions(params);
+  if (method == "textDocument/documentSymbol" || method == "textDocument/definition") {
+    const std::string uri = StringMember(Member(params, "textDocument"), "uri");
+    const auto found = documents_.find(uri);
+    if (found == documents_.end()) return nullptr;  // not open: nothing known
+    const Document& document = found->second;
+    if (method == "textDocument/documentSymbol") {
+      return DocumentSymbols(document.path, document.text);
+    }
+    const std::optional<Position> position = PositionFromJson(Member(params, "position"));
+    if (!position) throw BadParams{"position is not a position"};
+    const std::optional<Json> range =
+        DefinitionRange(document.path, document.text, OffsetOf(document.text, *position));
+    if (!range) return nullptr;
+    return Json{{"uri", uri}, {"range", *range}};
+  }
   // Notifications the session has nothing to do for ($/cancelRequest: every request
   // is answered before the next message is read).
   return Json::value_t::discarded;

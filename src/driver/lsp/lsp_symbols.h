@@ -1,0 +1,21 @@
+// The outline of a document and the declaration a name refers to, from shaderport's
+// front end over the document alone (ShaderToy code read as GLSL ES 3.00, as the site
+// compiles it; the site's own uniforms have no declaration to go to).
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+namespace shaderport::driver::lsp {
+
+// DocumentSymbol[]: functions (definitions), global variables and constants, structs.
+nlohmann::json DocumentSymbols(const std::filesystem::path& path, const std::string& text);
+
+// The range of the declaration of the name at byte `offset` of `text` (a variable,
+// parameter, function or struct of the document); nothing for a built-in or no name.
+std::optional<nlohmann::json> DefinitionRange(const std::filesystem::path& path,
+                                              const std::string& text, uint32_t offset);
+
+}  // namespace shaderport::driver::lsp
