@@ -96,6 +96,20 @@ def apply(text, edits):
     return text
 
 
+def hover_on(client, path, name):
+    """Hover on the first use of `name` in a document opened just for it."""
+    text = "void mainImage(out vec4 o, in vec2 p) { o = vec4(p / %s.xy, 0.0, 1.0); }\n" % name
+    other = os.path.join(SCRATCH, "hover.glsl")
+    client.send("textDocument/didOpen", {"textDocument": {
+        "uri": uri(other), "languageId": "glsl", "version": 1, "text": text}}, request=False)
+    client.diagnostics()
+    result = client.request("textDocument/hover", {"textDocument": {"uri": uri(other)},
+                                                   "position": {"line": 0, "character": text.index(name) + 1}})
+    client.send("textDocument/didClose", {"textDocument": {"uri": uri(other)}}, request=False)
+    client.diagnostics()
+    return (result["result"] or {}).get("contents", {}).get("value", "")
+
+
 def check_json(path):
     done = subprocess.run([BINARY, "check", "--format", "json", "--no-cache", path],
                           capture_output=True, text=True, cwd=SCRATCH)
@@ -185,6 +199,18 @@ def main():
         "textDocument": {"uri": uri(toy)}, "position": {"line": 2, "character": 16}})["result"]
     if builtin is not None:
         fail("iGlobalTime has no declaration in the document: %r" % builtin)
+
+    # Hover: a local's type, a built-in's overloads, what the site provides.
+    def hover(line, character):
+        result = client.request("textDocument/hover", {
+            "textDocument": {"uri": uri(toy)}, "position": {"line": line, "character": character}})
+        return (result["result"] or {}).get("contents", {}).get("value", "")
+    if "float t" not in hover(4, 25) or "(local)" not in hover(4, 25):
+        fail("hover on t: %r" % hover(4, 25))
+    if "vec4 vec4" in hover(4, 18) or "fragColor" not in hover(4, 6):
+        fail("hover on fragColor: %r" % hover(4, 6))
+    if "uniform vec3 iResolution" not in hover_on(client, toy, "iResolution"):
+        fail("hover on iResolution")
 
     # An incremental change: replace line 3 with the repaired line.
     client.send("textDocument/didChange", {

@@ -133,6 +133,7 @@ Json LspSession::Dispatch(const std::string& method, const Json& params, std::ve
           {"textDocumentSync", {{"openClose", true}, {"change", 2}}},
           {"documentSymbolProvider", true},
           {"definitionProvider", true},
+          {"hoverProvider", true},
           {"codeActionProvider", {{"codeActionKinds", {"quickfix", "source.fixAll.shaderport"}}}}}},
         {"serverInfo", {{"name", "shaderport"}, {"version", options_.tool_version}}}};
   }
@@ -176,7 +177,8 @@ Json LspSession::Dispatch(const std::string& method, const Json& params, std::ve
     return Json::value_t::discarded;
   }
   if (method == "textDocument/codeAction") return CodeActions(params);
-  if (method == "textDocument/documentSymbol" || method == "textDocument/definition") {
+  if (method == "textDocument/documentSymbol" || method == "textDocument/definition" ||
+      method == "textDocument/hover") {
     const std::string uri = StringMember(Member(params, "textDocument"), "uri");
     const auto found = documents_.find(uri);
     if (found == documents_.end()) return nullptr;  // not open: nothing known
@@ -186,8 +188,13 @@ Json LspSession::Dispatch(const std::string& method, const Json& params, std::ve
     }
     const std::optional<Position> position = PositionFromJson(Member(params, "position"));
     if (!position) throw BadParams{"position is not a position"};
-    const std::optional<Json> range =
-        DefinitionRange(document.path, document.text, OffsetOf(document.text, *position));
+    const uint32_t offset = OffsetOf(document.text, *position);
+    if (method == "textDocument/hover") {
+      const std::optional<std::string> hover = HoverText(document.path, document.text, offset);
+      if (!hover) return nullptr;
+      return Json{{"contents", {{"kind", "markdown"}, {"value", *hover}}}};
+    }
+    const std::optional<Json> range = DefinitionRange(document.path, document.text, offset);
     if (!range) return nullptr;
     return Json{{"uri", uri}, {"range", *range}};
   }

@@ -1,8 +1,13 @@
 #include "driver/lsp/lsp_symbols.h"
 
+#include <algorithm>
+#include <vector>
+
 #include "driver/dialect.h"
 #include "driver/lsp/lsp_text.h"
+#include "glsl/sema/builtins.h"
 #include "rule/fix_engine.h"
+#include "rules/shadertoy/builtin_dialects.h"
 
 namespace shaderport::driver::lsp {
 namespace {
@@ -59,6 +64,41 @@ std::optional<SourceRange> NameRangeOf(const glsl::Node& node) {
   return std::nullopt;
 }
 
+// The node naming something at byte `at`: an identifier, or a called function's name.
+std::optional<uint32_t> NameAt(const glsl::SyntaxTree& tree, FileId file, uint32_t at) {
+  const auto contains = [&](const SourceRange& range) {
+    return range.file == file && range.begin <= at && at <= range.end;
+  };
+  for (uint32_t id = 0; id < tree.NodeCount(); ++id) {
+    const glsl::Node& node = tree.NodeAt(id);
+    const auto* call = node.As<glsl::CallExpr>();
+    if ((node.As<glsl::IdentifierExpr>() != nullptr && contains(node.range)) ||
+        (call != nullptr && call->call_kind == glsl::CallKind::kFunction &&
+         contains(call->callee.range))) {
+      return id;
+    }
+  }
+  return std::nullopt;
+}
+
+std::string NameOf(const glsl::Node& node) {
+  if (const auto* identifier = node.As<glsl::IdentifierExpr>()) return identifier->name;
+  if (const auto* call = node.As<glsl::CallExpr>()) return call->callee.text;
+  return "";
+}
+
+std::string Signature(const glsl::BuiltinFunction& overload) {
+  std::string text = glsl::Spell(overload.return_type) + " " + overload.name + "(";
+  for (size_t i = 0; i < overload.params.size(); ++i) {
+    if (i > 0) text += ", ";
+    const glsl::ParamQualifier q = overload.params[i].qualifier;
+    if (q == glsl::ParamQualifier::kOut) text += "out ";
+    if (q == glsl::ParamQualifier::kInOut) text += "inout ";
+    text += glsl::Spell(overload.params[i].type);
+  }
+  return text + ")";
+}
+
 }  // namespace
 
 Json DocumentSymbols(const std::filesystem::path& path, const std::string& text) {
@@ -106,20 +146,8 @@ std::optional<Json> DefinitionRange(const std::filesystem::path& path, const std
   if (tree == nullptr || model == nullptr || offset < analysed.shift) return std::nullopt;
   const uint32_t at = offset - analysed.shift;
   const FileId file = analysed.file->Id();
-  const auto contains = [&](const SourceRange& range) {
-    return range.file == file && range.begin <= at && at <= range.end;
-  };
-  // The name under the cursor: an identifier, or the name of a called function.
-  uint32_t symbol = glsl::kNoSymbol;
-  for (uint32_t id = 0; id < tree->NodeCount() && symbol == glsl::kNoSymbol; ++id) {
-    const glsl::Node& node = tree->NodeAt(id);
-    const auto* identifier = node.As<glsl::IdentifierExpr>();
-    const auto* call = node.As<glsl::CallExpr>();
-    const bool named = (identifier != nullptr && contains(node.range)) ||
-                       (call != nullptr && call->call_kind == glsl::CallKind::kFunction &&
-                        contains(call->callee.range));
-    if (named) symbol = model->SymbolAt(id);
-  }
+  const std::optional<uint32_t> node = NameAt(*tree, file, at);
+  const uint32_t symbol = node ? model->SymbolAt(*node) : glsl::kNoSymbol;
   if (symbol == glsl::kNoSymbol || symbol >= model->symbols.size()) return std::nullopt;
   const glsl::Symbol& found = model->symbols[symbol];
   const uint32_t declaration =
@@ -128,6 +156,66 @@ std::optional<Json> DefinitionRange(const std::filesystem::path& path, const std
   const std::optional<SourceRange> name = NameRangeOf(tree->NodeAt(declaration));
   if (!name || name->file != file || !name->Valid()) return std::nullopt;
   return RangeOf(text, analysed.shift, *name);
+}
+
+std::optional<std::string> HoverText(const std::filesystem::path& path, const std::string& text,
+                                     uint32_t offset) {
+  const Analysed analysed = Analyse(path, text);
+  const glsl::SyntaxTree* tree = analysed.shader.tree;
+  const glsl::SemanticModel* model = analysed.shader.model;
+  if (tree == nullptr || model == nullptr || offset < analysed.shift) return std::nullopt;
+  const std::optional<uint32_t> node = NameAt(*tree, analysed.file->Id(), offset - analysed.shift);
+  if (!node) return std::nullopt;
+  const std::string name = NameOf(tree->NodeAt(*node));
+  const uint32_t symbol = model->SymbolAt(*node);
+  if (symbol != glsl::kNoSymbol && symbol < model->symbols.size()) {
+    const glsl::Symbol& found = model->symbols[symbol];
+    switch (found.kind) {
+      case glsl::SymbolKind::kFunction: {
+        std::string signature = model->Spell(found.type) + " " + found.name + "(";
+        for (size_t i = 0; i < found.parameters.size(); ++i) {
+          signature += (i > 0 ? ", " : "") + model->Spell(found.parameters[i]);
+        }
+        return "```glsl\n" + signature + ")\n```";
+      }
+      case glsl::SymbolKind::kBuiltinFunction:
+        break;  // the overloads below
+      default:
+        if (!found.predeclared) {
+          const char* what = found.kind == glsl::SymbolKind::kParameter ? "parameter"
+                             : found.scope == 0                         ? "global"
+                                                                        : "local";
+          return "```glsl\n" + std::string(found.is_const ? "const " : "") +
+                 model->Spell(found.type) + " " + found.name + "\n```\n(" + what + ")";
+        }
+    }
+  }
+  // What the ShaderToy site provides (declared by the site, not in the document).
+  if (const rule::HarnessDialect* site = rules::FindBuiltinDialect("shadertoy")) {
+    if (const rule::ProvidedVariable* provided = site->FindProvided(name)) {
+      return "```glsl\nuniform " + provided->type + " " + provided->name +
+             "\n```\nProvided by shadertoy.com (declared by the site before the pass).";
+    }
+  }
+  // Families expand to the same signature more than once (mix(genType, genType,
+  // float) gives mix(float, float, float) again): each is listed once.
+  std::vector<std::string> signatures;
+  for (const glsl::BuiltinFunction* overload : glsl::BuiltinOverloads(name)) {
+    if (!overload->AvailableIn(model->version, model->stage)) continue;
+    std::string signature = Signature(*overload);
+    if (std::find(signatures.begin(), signatures.end(), signature) == signatures.end()) {
+      signatures.push_back(std::move(signature));
+    }
+  }
+  const size_t total = signatures.size();
+  const size_t shown = std::min<size_t>(total, 8);
+  std::string overloads;
+  for (size_t i = 0; i < shown; ++i) overloads += signatures[i] + "\n";
+  if (total == 0) return std::nullopt;
+  std::string hover = "```glsl\n" + overloads + "```";
+  if (total > shown) hover += "\n(" + std::to_string(total - shown) + " more overloads)";
+  return hover + "\nBuilt-in function of GLSL ES " + (model->version == 100 ? "1.00" : "3.00") +
+         ".";
 }
 
 }  // namespace shaderport::driver::lsp

@@ -18,4 +18,11 @@ nlohmann::json DocumentSymbols(const std::filesystem::path& path, const std::str
 std::optional<nlohmann::json> DefinitionRange(const std::filesystem::path& path,
                                               const std::string& text, uint32_t offset);
 
+// Hover text (Markdown) for the name at byte `offset`: the declared type of a
+// variable, parameter or function of the document, a built-in function's overloads
+// in the document's GLSL ES version, or what a harness (ShaderToy) provides; nothing
+// elsewhere.
+std::optional<std::string> HoverText(const std::filesystem::path& path, const std::string& text,
+                                     uint32_t offset);
+
 }  // namespace shaderport::driver::lsp
