@@ -212,6 +212,17 @@ def main():
     if "uniform vec3 iResolution" not in hover_on(client, toy, "iResolution"):
         fail("hover on iResolution")
 
+    # Completion: the document's names, built-ins of its version, the site's uniforms.
+    completion = client.request("textDocument/completion", {
+        "textDocument": {"uri": uri(toy)}, "position": {"line": 4, "character": 4}})["result"]
+    labels = {item["label"] for item in completion["items"]}
+    for wanted in ("mainImage", "fragColor", "t", "c", "texture", "smoothstep", "iTime",
+                   "iResolution", "gl_FragCoord"):
+        if wanted not in labels:
+            fail("completion lacks %r" % wanted)
+    if "texture2D" in labels:
+        fail("completion offers texture2D in GLSL ES 3.00 code")
+
     # An incremental change: replace line 3 with the repaired line.
     client.send("textDocument/didChange", {
         "textDocument": {"uri": uri(toy), "version": 2},

@@ -134,6 +134,7 @@ Json LspSession::Dispatch(const std::string& method, const Json& params, std::ve
           {"documentSymbolProvider", true},
           {"definitionProvider", true},
           {"hoverProvider", true},
+          {"completionProvider", {{"resolveProvider", false}}},
           {"codeActionProvider", {{"codeActionKinds", {"quickfix", "source.fixAll.shaderport"}}}}}},
         {"serverInfo", {{"name", "shaderport"}, {"version", options_.tool_version}}}};
   }
@@ -177,6 +178,13 @@ Json LspSession::Dispatch(const std::string& method, const Json& params, std::ve
     return Json::value_t::discarded;
   }
   if (method == "textDocument/codeAction") return CodeActions(params);
+  if (method == "textDocument/completion") {
+    const std::string uri = StringMember(Member(params, "textDocument"), "uri");
+    const auto found = documents_.find(uri);
+    if (found == documents_.end()) return Json::array();
+    return Json{{"isIncomplete", false},
+                {"items", CompletionItems(found->second.path, found->second.text)}};
+  }
   if (method == "textDocument/documentSymbol" || method == "textDocument/definition" ||
       method == "textDocument/hover") {
     const std::string uri = StringMember(Member(params, "textDocument"), "uri");

@@ -1,6 +1,7 @@
 #include "driver/lsp/lsp_symbols.h"
 
 #include <algorithm>
+#include <set>
 #include <vector>
 
 #include "driver/dialect.h"
@@ -216,6 +217,60 @@ std::optional<std::string> HoverText(const std::filesystem::path& path, const st
   if (total > shown) hover += "\n(" + std::to_string(total - shown) + " more overloads)";
   return hover + "\nBuilt-in function of GLSL ES " + (model->version == 100 ? "1.00" : "3.00") +
          ".";
+}
+
+Json CompletionItems(const std::filesystem::path& path, const std::string& text) {
+  // LSP CompletionItemKind values.
+  constexpr int kFunctionItem = 3;
+  constexpr int kVariableItem = 6;
+  constexpr int kStructItem = 22;
+  const Analysed analysed = Analyse(path, text);
+  Json items = Json::array();
+  std::set<std::string> seen;
+  const auto add = [&](const std::string& label, int kind, const std::string& detail) {
+    if (label.empty() || !seen.insert(label).second) return;
+    items.push_back({{"label", label}, {"kind", kind}, {"detail", detail}});
+  };
+  const glsl::SemanticModel* model = analysed.shader.model;
+  const int version = model != nullptr ? model->version : 300;
+  const glsl::ShaderStage stage = model != nullptr ? model->stage : glsl::ShaderStage::kFragment;
+  if (model != nullptr) {
+    for (const glsl::Symbol& symbol : model->symbols) {
+      if (symbol.predeclared || symbol.declaration == glsl::kNoNode) continue;
+      switch (symbol.kind) {
+        case glsl::SymbolKind::kFunction:
+          add(symbol.name, kFunctionItem, model->Spell(symbol.type) + " " + symbol.name + "(...)");
+          break;
+        case glsl::SymbolKind::kStruct:
+          add(symbol.name, kStructItem, "struct " + symbol.name);
+          break;
+        case glsl::SymbolKind::kVariable:
+        case glsl::SymbolKind::kParameter:
+          add(symbol.name, kVariableItem, model->Spell(symbol.type));
+          break;
+        default:
+          break;
+      }
+    }
+  }
+  if (DetectKind(text, path).dialect == Dialect::kShaderToy) {
+    if (const rule::HarnessDialect* site = rules::FindBuiltinDialect("shadertoy")) {
+      for (const rule::ProvidedVariable& provided : site->provides) {
+        add(provided.name, kVariableItem, "uniform " + provided.type + " (shadertoy.com)");
+      }
+    }
+  }
+  for (const glsl::BuiltinVariable& variable : glsl::AllBuiltinVariables()) {
+    if (glsl::FindBuiltinVariable(variable.name, version, stage) == &variable) {
+      add(variable.name, kVariableItem, glsl::Spell(variable.type) + " (built-in)");
+    }
+  }
+  for (const glsl::BuiltinFunction& function : glsl::AllBuiltinFunctions()) {
+    if (function.AvailableIn(version, stage) && function.extension.empty()) {
+      add(function.name, kFunctionItem, Signature(function) + " (built-in)");
+    }
+  }
+  return items;
 }
 
 }  // namespace shaderport::driver::lsp

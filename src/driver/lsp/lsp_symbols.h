@@ -25,4 +25,10 @@ std::optional<nlohmann::json> DefinitionRange(const std::filesystem::path& path,
 std::optional<std::string> HoverText(const std::filesystem::path& path, const std::string& text,
                                      uint32_t offset);
 
+// CompletionItem[] for the document: its own functions, structs and variables (each
+// name once), the built-in functions and variables of its GLSL ES version and stage,
+// and what shadertoy.com provides when the document is a ShaderToy pass. The client
+// filters by what is typed.
+nlohmann::json CompletionItems(const std::filesystem::path& path, const std::string& text);
+
 }  // namespace shaderport::driver::lsp
