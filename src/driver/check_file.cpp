@@ -6,6 +6,7 @@
 
 #include "base/limits.h"
 #include "diag/limit_breach.h"
+#include "driver/channel_notes.h"
 #include "driver/dialect.h"
 #include "driver/file_decision.h"
 #include "driver/fixable_findings.h"
@@ -260,6 +261,7 @@ FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceMana
   }
   validate::ValidationResult result = validate::ValidateWithGlslang(request);
   AlignGlslangWithBrowser(file, front, webgl, result.diagnostics);
+  ExplainChannelErrors(front, decision, result.diagnostics);
   report.diagnostics = RunWebglChecks(file, front, webgl);
   for (Diagnostic& diagnostic : result.diagnostics)
     report.diagnostics.push_back(std::move(diagnostic));
