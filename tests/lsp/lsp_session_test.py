@@ -187,6 +187,14 @@ def main():
     if not fix_all or apply(REPAIRABLE, fix_all[0]["edit"]["changes"][uri(toy)]) != fixed:
         fail("fix all differs from shaderport fix: %r" % fix_all)
 
+    # Port to WebGL2 is what `shaderport port` writes.
+    port_action = [a for a in actions if a["kind"] == "source.convert.webgl2.shaderport"]
+    ported = subprocess.run([BINARY, "port", toy], capture_output=True, text=True).stdout
+    if not port_action or apply(REPAIRABLE, port_action[0]["edit"]["changes"][uri(toy)]) != ported:
+        fail("port action differs from shaderport port: %r" % port_action)
+    if not ported.startswith("#version 300 es"):
+        fail("shaderport port wrote %r" % ported[:80])
+
     # The outline and a definition: 't' in line 5 is declared in line 3.
     symbols = client.request("textDocument/documentSymbol", {"textDocument": {"uri": uri(toy)}})["result"]
     if [(s["name"], s["kind"]) for s in symbols] != [("mainImage", 12)]:

@@ -137,14 +137,30 @@ DocumentCheck CheckDocument(const std::filesystem::path& path, std::string_view 
   return checked;
 }
 
-std::string FixDocument(const std::filesystem::path& path, const std::string& text) {
-  if (IsProjectDocument(path)) return "";  // projects are fixed tab by tab (fix_document.h)
+namespace {
+
+// The document through the fix engine in `mode` ("" when nothing is to be written).
+std::string Rewrite(const std::filesystem::path& path, const std::string& text,
+                    rule::PortMode mode) {
+  if (IsProjectDocument(path)) return "";  // projects are rewritten tab by tab
   SourceManager sources;
   PortOptions options;
-  options.mode = rule::PortMode::kFix;
-  PortResult fixed = PortInput(path, ClassifyInputText(text), options, sources);
-  if (!fixed.HasOutput() || !fixed.Changed()) return "";
-  return fixed.byte_order_mark ? "\xEF\xBB\xBF" + fixed.text : fixed.text;
+  options.mode = mode;
+  PortResult result = PortInput(path, ClassifyInputText(text), options, sources);
+  if (!result.HasOutput() || !result.Changed()) return "";
+  // As `port` writes nothing that does not compile, neither does the editor.
+  if (mode == rule::PortMode::kPort && !result.validated) return "";
+  return result.byte_order_mark ? "\xEF\xBB\xBF" + result.text : result.text;
+}
+
+}  // namespace
+
+std::string FixDocument(const std::filesystem::path& path, const std::string& text) {
+  return Rewrite(path, text, rule::PortMode::kFix);
+}
+
+std::string PortDocument(const std::filesystem::path& path, const std::string& text) {
+  return Rewrite(path, text, rule::PortMode::kPort);
 }
 
 }  // namespace shaderport::driver::lsp

@@ -33,6 +33,10 @@ DocumentCheck CheckDocument(const std::filesystem::path& path, std::string_view 
 // cannot: the text is not read, or the fixes did not settle).
 std::string FixDocument(const std::filesystem::path& path, const std::string& text);
 
+// What `shaderport port` writes for the document: WebGL2 that compiles ("" when the
+// port changes nothing, does not compile, or the document is a project).
+std::string PortDocument(const std::filesystem::path& path, const std::string& text);
+
 // A URI for a file path: file:// with the path percent-encoded.
 std::string UriOfPath(const std::filesystem::path& path);
 

@@ -127,16 +127,17 @@ std::vector<Json> LspSession::Handle(const Json& message) {
 Json LspSession::Dispatch(const std::string& method, const Json& params, std::vector<Json>& out) {
   if (method == "initialize") {
     initialized_ = true;
-    return {
-        {"capabilities",
-         {{"positionEncoding", "utf-16"},
-          {"textDocumentSync", {{"openClose", true}, {"change", 2}}},
-          {"documentSymbolProvider", true},
-          {"definitionProvider", true},
-          {"hoverProvider", true},
-          {"completionProvider", {{"resolveProvider", false}}},
-          {"codeActionProvider", {{"codeActionKinds", {"quickfix", "source.fixAll.shaderport"}}}}}},
-        {"serverInfo", {{"name", "shaderport"}, {"version", options_.tool_version}}}};
+    return {{"capabilities",
+             {{"positionEncoding", "utf-16"},
+              {"textDocumentSync", {{"openClose", true}, {"change", 2}}},
+              {"documentSymbolProvider", true},
+              {"definitionProvider", true},
+              {"hoverProvider", true},
+              {"completionProvider", {{"resolveProvider", false}}},
+              {"codeActionProvider",
+               {{"codeActionKinds",
+                 {"quickfix", "source.fixAll.shaderport", "source.convert.webgl2.shaderport"}}}}}},
+            {"serverInfo", {{"name", "shaderport"}, {"version", options_.tool_version}}}};
   }
   if (method == "shutdown") {
     shutdown_ = true;
@@ -272,18 +273,26 @@ Json LspSession::CodeActions(const Json& params) {
                        {"isPreferred", published.safe},
                        {"edit", {{"changes", {{uri, published.edits}}}}}});
   }
+  const Json whole = {
+      {"start", ToJson({0, 0})},
+      {"end", ToJson(PositionOf(document.text, static_cast<uint32_t>(document.text.size())))}};
   if (any_safe) {
     const std::string fixed = FixDocument(document.path, document.text);
     if (!fixed.empty()) {
-      const Json whole = {
-          {"start", ToJson({0, 0})},
-          {"end", ToJson(PositionOf(document.text, static_cast<uint32_t>(document.text.size())))}};
       actions.push_back(
           {{"title", "Fix all safe fixes in this file (shaderport fix)"},
            {"kind", "source.fixAll.shaderport"},
            {"edit",
             {{"changes", {{uri, Json::array({{{"range", whole}, {"newText", fixed}}})}}}}}});
     }
+  }
+  // Asked for explicitly (a source action), or offered beside the quick fixes.
+  const std::string ported = PortDocument(document.path, document.text);
+  if (!ported.empty()) {
+    actions.push_back(
+        {{"title", "Port this file to WebGL2 (shaderport port)"},
+         {"kind", "source.convert.webgl2.shaderport"},
+         {"edit", {{"changes", {{uri, Json::array({{{"range", whole}, {"newText", ported}}})}}}}}});
   }
   return actions;
 }
