@@ -169,6 +169,8 @@ TEST(ExitContract, EveryCommandExitsAndSpeaksAsDocumented) {
       {"completion", 2, "shaderport: error: completion: shell is required"},
       {"man", 0, ""},
       {"man extra", 2, "shaderport: error: unexpected argument 'extra' for 'man'"},
+      {"help lsp", 0, ""},
+      {"lsp --stdio-extra", 2, "shaderport: error: unknown option '--stdio-extra' for 'lsp'"},
       {"version", 0, ""},
       {"version extra", 2, "shaderport: error: unexpected argument 'extra' for 'version'"},
   };
