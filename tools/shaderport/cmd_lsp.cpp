@@ -54,7 +54,9 @@ void AddLspCommand(CLI::App& app, int& exit_code) {
       app.add_subcommand("lsp", "Run the language server (LSP 3.17) on standard input and output");
   // Clients that start servers with `--stdio` (VS Code's TransportKind.stdio) get the
   // one transport there is.
-  command->add_flag("--stdio", "Talk over standard input and output (the default and only way)");
+  static bool stdio = true;
+  command->add_flag("--stdio", stdio,
+                    "Talk over standard input and output (the default and only way)");
   command->callback([&exit_code] { exit_code = RunLsp(); });
 }
 
