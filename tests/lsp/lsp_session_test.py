@@ -220,6 +220,25 @@ def main():
     if "uniform vec3 iResolution" not in hover_on(client, toy, "iResolution"):
         fail("hover on iResolution")
 
+    # References of t: its declaration (asked for) and its one use.
+    references = client.request("textDocument/references", {
+        "textDocument": {"uri": uri(toy)}, "position": {"line": 4, "character": 25},
+        "context": {"includeDeclaration": True}})["result"]
+    if sorted((r["range"]["start"]["line"], r["range"]["start"]["character"]) for r in references) \
+            != [(2, 10), (4, 25)]:
+        fail("references of t: %r" % references)
+    # A suppression that silences nothing is unnecessary code (tag 1).
+    quiet = os.path.join(SCRATCH, "quiet.frag")
+    quiet_text = ("precision mediump float;\n// shaderport-ignore-next-line(glslang/type-mismatch)\n"
+                  "void main() { gl_FragColor = vec4(1.0); }\n")
+    client.send("textDocument/didOpen", {"textDocument": {
+        "uri": uri(quiet), "languageId": "glsl", "version": 1, "text": quiet_text}}, request=False)
+    tagged = client.diagnostics()["diagnostics"]
+    if [(d["code"], d.get("tags")) for d in tagged] != [("suppression/unused", [1])]:
+        fail("unused suppression: %r" % tagged)
+    client.send("textDocument/didClose", {"textDocument": {"uri": uri(quiet)}}, request=False)
+    client.diagnostics()
+
     # Completion: the document's names, built-ins of its version, the site's uniforms.
     completion = client.request("textDocument/completion", {
         "textDocument": {"uri": uri(toy)}, "position": {"line": 4, "character": 4}})["result"]

@@ -130,6 +130,8 @@ DocumentCheck CheckDocument(const std::filesystem::path& path, std::string_view 
         finding.edits.push_back({{"range", *where}, {"newText", fix.replacement}});
         finding.safe = finding.safe && fix.safety == FixSafety::kSafe;
       }
+      // Editors fade unnecessary code: a suppression comment that silences nothing.
+      if (d.rule_id == "suppression/unused") out["tags"] = Json::array({1});
       out["data"] = {{"fixable", IsFixable(d)}};
       findings.push_back(std::move(finding));
     }

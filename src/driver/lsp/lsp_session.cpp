@@ -133,6 +133,7 @@ Json LspSession::Dispatch(const std::string& method, const Json& params, std::ve
               {"documentSymbolProvider", true},
               {"definitionProvider", true},
               {"hoverProvider", true},
+              {"referencesProvider", true},
               {"completionProvider", {{"resolveProvider", false}}},
               {"codeActionProvider",
                {{"codeActionKinds",
@@ -187,7 +188,7 @@ Json LspSession::Dispatch(const std::string& method, const Json& params, std::ve
                 {"items", CompletionItems(found->second.path, found->second.text)}};
   }
   if (method == "textDocument/documentSymbol" || method == "textDocument/definition" ||
-      method == "textDocument/hover") {
+      method == "textDocument/hover" || method == "textDocument/references") {
     const std::string uri = StringMember(Member(params, "textDocument"), "uri");
     const auto found = documents_.find(uri);
     if (found == documents_.end()) return nullptr;  // not open: nothing known
@@ -198,6 +199,16 @@ Json LspSession::Dispatch(const std::string& method, const Json& params, std::ve
     const std::optional<Position> position = PositionFromJson(Member(params, "position"));
     if (!position) throw BadParams{"position is not a position"};
     const uint32_t offset = OffsetOf(document.text, *position);
+    if (method == "textDocument/references") {
+      const bool with_declaration =
+          params.contains("context") && params["context"].value("includeDeclaration", false);
+      Json locations = Json::array();
+      for (const Json& range :
+           ReferenceRanges(document.path, document.text, offset, with_declaration)) {
+        locations.push_back({{"uri", uri}, {"range", range}});
+      }
+      return locations;
+    }
     if (method == "textDocument/hover") {
       const std::optional<std::string> hover = HoverText(document.path, document.text, offset);
       if (!hover) return nullptr;

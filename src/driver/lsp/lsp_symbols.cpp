@@ -159,6 +159,37 @@ std::optional<Json> DefinitionRange(const std::filesystem::path& path, const std
   return RangeOf(text, analysed.shift, *name);
 }
 
+Json ReferenceRanges(const std::filesystem::path& path, const std::string& text, uint32_t offset,
+                     bool with_declaration) {
+  Json ranges = Json::array();
+  const Analysed analysed = Analyse(path, text);
+  const glsl::SyntaxTree* tree = analysed.shader.tree;
+  const glsl::SemanticModel* model = analysed.shader.model;
+  if (tree == nullptr || model == nullptr || offset < analysed.shift) return ranges;
+  const FileId file = analysed.file->Id();
+  const std::optional<uint32_t> node = NameAt(*tree, file, offset - analysed.shift);
+  const uint32_t symbol = node ? model->SymbolAt(*node) : glsl::kNoSymbol;
+  if (symbol == glsl::kNoSymbol || symbol >= model->symbols.size()) return ranges;
+  const glsl::Symbol& found = model->symbols[symbol];
+  if (with_declaration && found.declaration != glsl::kNoNode &&
+      found.declaration < tree->NodeCount()) {
+    const std::optional<SourceRange> name = NameRangeOf(tree->NodeAt(found.declaration));
+    if (name && name->file == file && name->Valid()) {
+      ranges.push_back(RangeOf(text, analysed.shift, *name));
+    }
+  }
+  for (uint32_t id = 0; id < tree->NodeCount() && id < model->references.size(); ++id) {
+    if (model->references[id] != symbol) continue;
+    const glsl::Node& use = tree->NodeAt(id);
+    const auto* call = use.As<glsl::CallExpr>();
+    const SourceRange where = call != nullptr ? call->callee.range : use.range;
+    if (where.file == file && where.Valid() && use.As<glsl::TypeSpecifier>() == nullptr) {
+      ranges.push_back(RangeOf(text, analysed.shift, where));
+    }
+  }
+  return ranges;
+}
+
 std::optional<std::string> HoverText(const std::filesystem::path& path, const std::string& text,
                                      uint32_t offset) {
   const Analysed analysed = Analyse(path, text);

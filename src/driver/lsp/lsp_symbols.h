@@ -18,6 +18,11 @@ nlohmann::json DocumentSymbols(const std::filesystem::path& path, const std::str
 std::optional<nlohmann::json> DefinitionRange(const std::filesystem::path& path,
                                               const std::string& text, uint32_t offset);
 
+// The ranges of every use of the name at byte `offset` and of its declaration
+// (when `with_declaration`), within the document; empty for no name or a built-in.
+nlohmann::json ReferenceRanges(const std::filesystem::path& path, const std::string& text,
+                               uint32_t offset, bool with_declaration);
+
 // Hover text (Markdown) for the name at byte `offset`: the declared type of a
 // variable, parameter or function of the document, a built-in function's overloads
 // in the document's GLSL ES version, or what a harness (ShaderToy) provides; nothing
