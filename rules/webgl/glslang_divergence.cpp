@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
+#include <cstdint>
 #include <map>
 #include <regex>
 #include <set>
@@ -412,11 +414,47 @@ void ReplaceFileMacro(std::string& text) {
   ReplaceWord(text, "__FILE__", "0       ");
 }
 
-// Lines inside #if groups our preprocessor skipped that hold characters glslang's
-// scanner trips on even there (an unterminated '"', `$`, `@`, non-ASCII bytes) are
-// emptied, but for the directives: browsers read nothing else in a skipped group. Only
-// such lines: glslang defines some extension macros that browsers do not (say
-// GL_OES_standard_derivatives in GLSL ES 3.00), so it may take a group we skip.
+// An integer literal past 32 bits (4294967296, 0x100000000, a long octal) on a line:
+// glslang's scanner reports "numeric literal too big" for it even in a skipped group
+// (and then loses track of the group's #endif).
+bool HasOversizedIntegerLiteral(std::string_view line) {
+  const auto word_char = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '.';
+  };
+  for (size_t i = 0; i < line.size();) {
+    if (!word_char(line[i])) {
+      ++i;
+      continue;
+    }
+    size_t end = i;
+    while (end < line.size() && word_char(line[end])) ++end;
+    std::string_view token = line.substr(i, end - i);
+    i = end;
+    if (std::isdigit(static_cast<unsigned char>(token[0])) == 0) continue;
+    if (!token.empty() && (token.back() == 'u' || token.back() == 'U')) token.remove_suffix(1);
+    const bool hex = token.size() > 2 && token[0] == '0' && (token[1] == 'x' || token[1] == 'X');
+    if (!hex && token.find_first_of(".eE") != std::string_view::npos) continue;  // a float
+    const unsigned base = hex ? 16 : (token.size() > 1 && token[0] == '0' ? 8 : 10);
+    uint64_t value = 0;
+    for (char c : token.substr(hex ? 2 : 0)) {
+      const int digit = std::isdigit(static_cast<unsigned char>(c)) != 0 ? c - '0'
+                        : std::isxdigit(static_cast<unsigned char>(c)) != 0
+                            ? std::tolower(static_cast<unsigned char>(c)) - 'a' + 10
+                            : -1;
+      if (digit < 0 || static_cast<unsigned>(digit) >= base) break;  // not a literal
+      value = value * base + static_cast<unsigned>(digit);
+      if (value > 0xFFFFFFFFull) return true;
+    }
+  }
+  return false;
+}
+
+// Lines inside #if groups our preprocessor skipped that hold what glslang's scanner
+// trips on even there (an unterminated '"', `$`, `@`, non-ASCII bytes, an integer
+// literal past 32 bits) are emptied, but for the directives: browsers read nothing
+// else in a skipped group. Only such lines: glslang defines some extension macros that
+// browsers do not (say GL_OES_standard_derivatives in GLSL ES 3.00), so it may take a
+// group we skip.
 void EmptyInactiveLines(const BrowserContext& context, FileId part, std::string& text) {
   if (context.preprocessed == nullptr) return;
   for (const SourceRange& region : context.preprocessed->inactive_regions) {
@@ -432,7 +470,9 @@ void EmptyInactiveLines(const BrowserContext& context, FileId part, std::string&
                         return c == '"' || c == '\'' || c == '$' || c == '@' || c == '`' ||
                                static_cast<unsigned char>(c) >= 0x80;
                       });
-      if (troubling && first < end && text[first] != '#') {
+      const bool oversized =
+          !troubling && HasOversizedIntegerLiteral(std::string_view(text).substr(line, end - line));
+      if ((troubling || oversized) && first < end && text[first] != '#') {
         for (size_t i = line; i < end; ++i) {
           if (text[i] != '\r' && text[i] != '\\') text[i] = ' ';
         }
