@@ -13,8 +13,9 @@ namespace {
 
 TEST(ChannelNotesCli, AChannelGivenAs2DButSampledAsACubeMapIsNamed) {
   TempProject project("channel-notes");
-  project.Write("cube.glsl",
-                "void mainImage(out vec4 o, in vec2 p) { o = texture(iChannel0, vec3(p, 1.0)); }\n");
+  project.Write(
+      "cube.glsl",
+      "void mainImage(out vec4 o, in vec2 p) { o = texture(iChannel0, vec3(p, 1.0)); }\n");
   // Inferred: a cube map, no error.
   EXPECT_EQ(RunShaderport("check cube.glsl", project.Root()).exit_code, 0);
   const CommandResult forced = RunShaderport("check --channel 0=2d cube.glsl", project.Root());
