@@ -14,6 +14,8 @@ function activate(context) {
       { scheme: 'untitled', language: 'glsl' },
       { scheme: 'file', pattern: '**/*.shadertoy.json' },
     ],
+    // The server reads `shaderport.target` from workspace/didChangeConfiguration.
+    synchronize: { configurationSection: 'shaderport' },
   });
   context.subscriptions.push({ dispose: () => client && client.stop() });
   return client.start();

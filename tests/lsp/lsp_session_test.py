@@ -69,6 +69,13 @@ class Client:
             if message.get("id") == wanted:
                 return message
 
+    def diagnostics_for(self, wanted):
+        """The next diagnostics published for `wanted` (others are passed over)."""
+        while True:
+            params = self.diagnostics()
+            if params["uri"] == wanted:
+                return params
+
     def diagnostics(self):
         while True:
             message = self.receive()
@@ -131,6 +138,19 @@ def expected_of(path):
             else:
                 rng = ((0, 0), (0, 0))
             out.append((d["rule"], {"error": 1, "warning": 2, "note": 3}[d["severity"]], rng))
+    return sorted(out)
+
+
+def expected_of_target(path, target):
+    done = subprocess.run([BINARY, "check", "--format", "json", "--no-cache", "--target", target,
+                           path], capture_output=True, text=True, cwd=SCRATCH)
+    out = []
+    for entry in json.loads(done.stdout)["files"]:
+        for d in entry["diagnostics"]:
+            r = d["location"]["range"]
+            out.append((d["rule"], {"error": 1, "warning": 2, "note": 3}[d["severity"]],
+                        ((r["start"]["line"] - 1, r["start"]["column"] - 1),
+                         (r["end"]["line"] - 1, r["end"]["column"] - 1))))
     return sorted(out)
 
 
@@ -286,6 +306,30 @@ def main():
             compared += 1
     if compared < 20:
         fail("only %d corpus files" % compared)
+
+    # Settings: shaderport.target makes every document checked for that context.
+    webgl1 = os.path.join(SCRATCH, "derivative.frag")
+    webgl1_text = ("#version 300 es\nprecision highp float;\nout vec4 c;\n"
+                   "void main() { c = vec4(1.0); }\n")
+    with open(webgl1, "w") as f:
+        f.write(webgl1_text)
+    client.send("textDocument/didOpen", {"textDocument": {
+        "uri": uri(webgl1), "languageId": "glsl", "version": 1, "text": webgl1_text}}, request=False)
+    if client.diagnostics()["diagnostics"]:
+        fail("a WebGL2 shader has findings for WebGL2")
+    client.send("workspace/didChangeConfiguration",
+                {"settings": {"shaderport": {"target": "webgl1"}}}, request=False)
+    # Every open document is checked again; this one's diagnostics are what counts.
+    against_webgl1 = client.diagnostics_for(uri(webgl1))
+    want = expected_of_target(webgl1, "webgl1")
+    if not against_webgl1["diagnostics"] or published_of(against_webgl1) != want:
+        fail("with target webgl1: %r != %r" % (published_of(against_webgl1), want))
+    client.send("workspace/didChangeConfiguration", {"settings": {"shaderport": {}}}, request=False)
+    back = client.diagnostics_for(uri(webgl1))
+    if back["diagnostics"]:
+        fail("back to per-file targets: %r" % published_of(back))
+    client.send("textDocument/didClose", {"textDocument": {"uri": uri(webgl1)}}, request=False)
+    client.diagnostics_for(uri(webgl1))
 
     # Robustness: not JSON, an unknown method, a notification it does not know.
     client.send_raw(b"{not json")

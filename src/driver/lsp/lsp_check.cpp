@@ -78,8 +78,10 @@ std::string UriOfPath(const std::filesystem::path& path) {
 
 DocumentCheck CheckDocument(const std::filesystem::path& path, std::string_view uri,
                             const std::string& text,
-                            const std::vector<std::string>& rules_with_sections) {
+                            const std::vector<std::string>& rules_with_sections,
+                            std::optional<Target> target) {
   CheckOptions options;
+  options.target = target;
   options.jobs = 1;
   options.force_exclude = false;  // an open file is checked even when the config skips it
   InputText input = ClassifyInputText(text);

@@ -4,9 +4,12 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "driver/dialect.h"
 
 namespace shaderport::driver::lsp {
 
@@ -25,9 +28,12 @@ struct DocumentCheck {
 
 // `uri` names the document in related information; `rules_with_sections` (sorted)
 // picks each rule's documentation link.
+// `target`: the WebGL context asked for in the client's settings (else decided per
+// file, as `check` without --target does).
 DocumentCheck CheckDocument(const std::filesystem::path& path, std::string_view uri,
                             const std::string& text,
-                            const std::vector<std::string>& rules_with_sections);
+                            const std::vector<std::string>& rules_with_sections,
+                            std::optional<Target> target = std::nullopt);
 
 // What `shaderport fix` writes for the document ("" when it changes nothing or
 // cannot: the text is not read, or the fixes did not settle).

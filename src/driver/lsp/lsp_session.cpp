@@ -179,6 +179,32 @@ Json LspSession::Dispatch(const std::string& method, const Json& params, std::ve
     }
     return Json::value_t::discarded;
   }
+  if (method == "workspace/didChangeConfiguration") {
+    // {"settings": {"shaderport": {"target": "webgl1"}}}; null or "" decides per file.
+    const Json& settings = Member(params, "settings");
+    std::optional<Target> target;
+    if (settings.is_object() && settings.contains("shaderport") &&
+        settings["shaderport"].is_object()) {
+      const Json& value = settings["shaderport"].value("target", Json());
+      if (value.is_string() && !value.get<std::string>().empty()) {
+        target = ParseTarget(value.get<std::string>());
+        if (!target) {
+          out.push_back({{"jsonrpc", "2.0"},
+                         {"method", "window/showMessage"},
+                         {"params",
+                          {{"type", 1},
+                           {"message", "shaderport.target must be webgl1 or webgl2, not '" +
+                                           value.get<std::string>() + "'"}}}});
+          return Json::value_t::discarded;
+        }
+      }
+    }
+    if (target != target_) {
+      target_ = target;
+      for (auto& [uri, document] : documents_) Changed(uri, document, out);
+    }
+    return Json::value_t::discarded;
+  }
   if (method == "textDocument/codeAction") return CodeActions(params);
   if (method == "textDocument/completion") {
     const std::string uri = StringMember(Member(params, "textDocument"), "uri");
@@ -242,7 +268,7 @@ void LspSession::Publish(const std::string& uri, Document& document, std::vector
   document.published.clear();
   Json diagnostics = Json::array();
   DocumentCheck checked =
-      CheckDocument(document.path, uri, document.text, options_.rules_with_sections);
+      CheckDocument(document.path, uri, document.text, options_.rules_with_sections, target_);
   // What the verdict is against, told when it is new or changes (a #version line
   // added, a mainImage removed).
   if (!checked.decision.empty() && checked.decision != document.decision) {

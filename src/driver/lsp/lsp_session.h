@@ -10,9 +10,12 @@
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "driver/dialect.h"
 
 namespace shaderport::driver::lsp {
 
@@ -65,6 +68,9 @@ class LspSession {
   SessionOptions options_;
   std::map<std::string, Document> documents_;  // by URI
   std::vector<std::string> dirty_;             // changed, not yet checked (defer_checks)
+  // From workspace/didChangeConfiguration, `shaderport.target`: the WebGL context every
+  // document is checked for (unset: decided per file, as check does).
+  std::optional<Target> target_;
   bool initialized_ = false;
   bool shutdown_ = false;
   bool exited_ = false;
