@@ -1,0 +1,2 @@
+precision mediump float;
+float f() { return 1.0; }
