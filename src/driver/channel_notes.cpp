@@ -2,22 +2,11 @@
 
 #include <string>
 
+#include "driver/validate_kinds.h"
 #include "rules/shadertoy/harness_support.h"
 
 namespace shaderport::driver {
 namespace {
-
-std::string KindName(validate::ChannelType type) {
-  switch (type) {
-    case validate::ChannelType::kCube:
-      return "cube";
-    case validate::ChannelType::k3D:
-      return "3d";
-    case validate::ChannelType::k2D:
-      break;
-  }
-  return "2d";
-}
 
 // Where the channel's type came from, as the decision recorded it.
 std::string Origin(const FileDecision& decision, const std::string& name) {
@@ -47,8 +36,8 @@ void ExplainChannelErrors(const FrontEndResult& front, const FileDecision& decis
     if (misfit == glsl::kNoNode || misfit >= tree.NodeCount()) continue;
     const SourceRange call = tree.NodeAt(misfit).range;
     const std::string note =
-        names[i] + " is a " + KindName(decision.channels[i]) + " texture here (" +
-        Origin(decision, names[i]) + "), and this samples it with a " +
+        names[i] + " is a " + std::string(ChannelTypeName(decision.channels[i])) +
+        " texture here (" + Origin(decision, names[i]) + "), and this samples it with a " +
         (flat ? "3-component coordinate, as a cube map or 3D texture is"
               : "2-component coordinate, as a 2D texture is") +
         ": give it as --channel " + std::to_string(i) + "=" + (flat ? "cube" : "2d") +

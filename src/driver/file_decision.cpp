@@ -11,18 +11,6 @@
 namespace shaderport::driver {
 namespace {
 
-std::string_view ChannelTypeName(validate::ChannelType type) {
-  switch (type) {
-    case validate::ChannelType::kCube:
-      return "cube";
-    case validate::ChannelType::k3D:
-      return "3d";
-    case validate::ChannelType::k2D:
-      return "2d";
-  }
-  return "2d";
-}
-
 std::string_view PassName(ShaderToyPass pass) {
   switch (pass) {
     case ShaderToyPass::kBuffer:

@@ -3,23 +3,12 @@
 #include <algorithm>
 #include <vector>
 
+#include "driver/validate_kinds.h"
 #include "rule/rule_context.h"
 #include "rules/registry.h"
 
 namespace shaderport::driver {
 namespace {
-
-rule::ChannelKind KindOf(validate::ChannelType type) {
-  switch (type) {
-    case validate::ChannelType::kCube:
-      return rule::ChannelKind::kCube;
-    case validate::ChannelType::k3D:
-      return rule::ChannelKind::k3D;
-    case validate::ChannelType::k2D:
-      break;
-  }
-  return rule::ChannelKind::k2D;
-}
 
 uint32_t LineOf(const SourceManager& sources, const SourceRange& range) {
   return sources.Get(range.file).LocationOf(range.begin).line;
@@ -50,7 +39,7 @@ PortOptions FixOptionsFor(const FileDecision& decision) {
   if (decision.IsShaderToy()) options.pass = decision.kind.pass;
   if (!decision.IsShaderToy()) options.harness = decision.harness;
   for (size_t i = 0; i < decision.channels.size(); ++i) {
-    options.channels[i] = KindOf(decision.channels[i]);
+    options.channels[i] = ToChannelKind(decision.channels[i]);
   }
   return options;
 }

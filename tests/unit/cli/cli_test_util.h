@@ -17,6 +17,20 @@ struct CommandResult {
   std::string err;
 };
 
+// Runs `command_line` in the shell: its standard output and exit code (128 + the
+// signal for a killed process).
+inline CommandResult RunShellLine(const std::string& command_line) {
+  CommandResult result;
+  FILE* pipe = ::popen(command_line.c_str(), "r");
+  if (pipe == nullptr) return result;
+  char buffer[65536];
+  size_t n = 0;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) result.out.append(buffer, n);
+  const int status = ::pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return result;
+}
+
 // `args` is passed to the shell as is; `directory` is the working directory.
 inline CommandResult RunShaderport(const std::string& args, const std::filesystem::path& directory,
                                    const std::string& environment = "NO_COLOR=1") {
@@ -26,14 +40,7 @@ inline CommandResult RunShaderport(const std::string& args, const std::filesyste
       ("shaderport-cli-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ".err");
   const std::string command = "cd '" + directory.string() + "' && env " + environment + " '" +
                               SHADERPORT_BINARY + "' " + args + " 2>'" + err_file.string() + "'";
-  CommandResult result;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return result;
-  char buffer[65536];
-  size_t n = 0;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) result.out.append(buffer, n);
-  const int status = ::pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  CommandResult result = RunShellLine(command);
   result.err = ReadWholeFile(err_file);
   std::filesystem::remove(err_file);
   return result;

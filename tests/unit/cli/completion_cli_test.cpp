@@ -3,9 +3,7 @@
 // test machine has them, as tools/install-deps.sh installs), and the man page
 // renders without a warning from groff.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <cstdio>
 #include <string>
 
 #include "cli/cli_test_util.h"
@@ -15,16 +13,7 @@ namespace shaderport::testing {
 namespace {
 
 CommandResult RunShell(const std::string& command, const std::filesystem::path& directory) {
-  CommandResult result;
-  const std::string line = "cd '" + directory.string() + "' && " + command + " 2>&1";
-  FILE* pipe = ::popen(line.c_str(), "r");
-  if (pipe == nullptr) return result;
-  char buffer[4096];
-  size_t n = 0;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) result.out.append(buffer, n);
-  const int status = ::pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  return result;
+  return RunShellLine("cd '" + directory.string() + "' && " + command + " 2>&1");
 }
 
 bool Have(const std::string& program) {
