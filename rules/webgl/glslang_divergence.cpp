@@ -131,8 +131,12 @@ bool AlignConstantExpression(const BrowserContext& context, Diagnostic& diagnost
                webgl::IsConstantExpression(*context.model, *declarator->initializer, rules) &&
                InitializerFitsDeclaration(context, *declarator);
   } else {
+    // A size must be an integer too: `float a[3.5e38];` is constant, and browsers
+    // reject it as glslang does.
     for (const glsl::ArrayDimension& dimension : declarator->array) {
       constant = constant && dimension.size != nullptr &&
+                 context.model->TypeOf(dimension.size->id).IsScalar() &&
+                 context.model->TypeOf(dimension.size->id).IsIntegral() &&
                  webgl::IsConstantExpression(*context.model, *dimension.size, rules);
     }
     constant = constant && !declarator->array.empty();
