@@ -166,6 +166,7 @@ std::optional<std::string> EncodeCacheEntry(const FileReport& report, const Sour
   out.Text(report.stage);
   out.Text(report.harness);
   out.Text(report.target);
+  out.Text(report.channels);
   out.U32(static_cast<uint32_t>(generated.size()));
   for (const CachedText& file : generated) {
     out.Text(file.name);
@@ -220,6 +221,7 @@ std::optional<CacheEntry> DecodeCacheEntry(std::string_view bytes, const CacheKe
   entry.stage = in.Text();
   entry.harness = in.Text();
   entry.target = in.Text();
+  entry.channels = in.Text();
   const uint32_t generated_count = in.Count(8);
   for (uint32_t i = 0; i < generated_count && in.Ok(); ++i) {
     CachedText file;
@@ -283,6 +285,7 @@ FileReport RestoreReport(CacheEntry entry, std::string path, std::string text,
   report.stage = std::move(entry.stage);
   report.harness = std::move(entry.harness);
   report.target = std::move(entry.target);
+  report.channels = std::move(entry.channels);
   std::vector<FileId> ids = {report.file->Id(), common != nullptr ? common->Id() : kNoFile};
   for (CachedText& file : entry.generated) {
     ids.push_back(sources.Add(std::move(file.name), std::move(file.text), true).Id());

@@ -17,7 +17,8 @@
 namespace shaderport::driver {
 
 // Bumped whenever the layout changes; entries of another version are misses.
-inline constexpr uint32_t kCacheEntryVersion = 3;  // 2: harness and target; 3: fix's repairs
+inline constexpr uint32_t kCacheEntryVersion =
+    4;  // 2: harness and target; 3: fix's repairs; 4: channels
 
 struct CachedText {
   std::string name;
@@ -29,6 +30,7 @@ struct CacheEntry {
   std::string stage;
   std::string harness;
   std::string target;
+  std::string channels;
   std::vector<CachedText> generated;  // synthetic files the ranges point into, in creation order
   // Range file ids here are kSelfFile, kCommonFile, kFirstGenerated + i or kNoFile.
   DiagnosticList diagnostics;

@@ -67,6 +67,12 @@ void RecordDecision(const FileDecision& decision, FileReport& report) {
   report.stage = std::string(StageName(decision.kind.stage));
   report.harness = decision.harness != nullptr ? decision.harness->name : "";
   report.target = std::string(TargetName(decision.target));
+  report.channels.clear();
+  if (!decision.IsShaderToy()) return;
+  for (const validate::ChannelType channel : decision.channels) {
+    if (!report.channels.empty()) report.channels += ' ';
+    report.channels += ChannelTypeName(channel);
+  }
 }
 
 FrontEndOptions FrontEndOptionsFor(const FileDecision& decision) {

@@ -43,6 +43,8 @@ struct FileReport {
   std::string
       harness{};  // the host that completes the code ("shadertoy", "raymarch-blog"; "": none)
   std::string target{};  // the WebGL context it is checked for: "webgl1", "webgl2" ("": unknown)
+  // ShaderToy code: the sampler type of iChannel0..3 as checked ("2d 2d cube 2d"; "": none).
+  std::string channels{};
   std::vector<DecisionPart> decision{};  // filled for `explain-file` only
 };
 

@@ -33,6 +33,10 @@ class Client:
                                         stdout=subprocess.PIPE, cwd=SCRATCH)
         self.next_id = 0
         self.logs = []
+        self.statuses = []
+        # Messages read while waiting for a response: checks run on the server's own
+        # thread, so their diagnostics may come before or after a response.
+        self.waiting = []
 
     def send_raw(self, body):
         self.process.stdin.write(b"Content-Length: %d\r\n\r\n" % len(body) + body)
@@ -49,6 +53,11 @@ class Client:
         return message.get("id")
 
     def receive(self):
+        if self.waiting:
+            return self.waiting.pop(0)
+        return self.read()
+
+    def read(self):
         length = None
         while True:
             line = self.process.stdout.readline()
@@ -63,11 +72,17 @@ class Client:
         return json.loads(self.process.stdout.read(length))
 
     def request(self, method, params=None):
-        wanted = self.send(method, params)
+        return self.response_to(self.send(method, params))
+
+    def response_to(self, wanted):
+        for index, message in enumerate(self.waiting):
+            if message.get("id") == wanted and "method" not in message:
+                return self.waiting.pop(index)
         while True:
-            message = self.receive()
-            if message.get("id") == wanted:
+            message = self.read()
+            if message.get("id") == wanted and "method" not in message:
                 return message
+            self.waiting.append(message)
 
     def diagnostics_for(self, wanted):
         """The next diagnostics published for `wanted` (others are passed over)."""
@@ -81,6 +96,8 @@ class Client:
             message = self.receive()
             if message.get("method") == "window/logMessage":
                 self.logs.append(message["params"]["message"])
+            if message.get("method") == "shaderport/status":
+                self.statuses.append(message["params"])
             if message.get("method") == "textDocument/publishDiagnostics":
                 return message["params"]
 
@@ -161,6 +178,90 @@ def published_of(params):
                   for d in params["diagnostics"])
 
 
+def large_pass(lines):
+    """A valid ShaderToy pass of about `lines` lines (its check takes a while)."""
+    body = "".join("float f%d(vec3 p) { vec3 q = abs(p) - vec3(0.5); return length(max(q, 0.0)) + %d.0; }\n"
+                   % (i, i) for i in range(lines))
+    return body + "void mainImage(out vec4 o, in vec2 c) { o = vec4(f0(vec3(c, 1.0))); }\n"
+
+
+def status_for(client, wanted):
+    """The newest shaderport/status of `wanted` (read up to its diagnostics)."""
+    client.diagnostics_for(wanted)
+    return [s for s in client.statuses if s["uri"] == wanted][-1]
+
+
+def responsiveness(client, toy):
+    """Checks run off the reading thread: stale versions are not published, a queued
+    code action can be cancelled, a render on save does not hold up requests."""
+    big = os.path.join(SCRATCH, "big.glsl")
+    text = large_pass(1500)
+    client.send("textDocument/didOpen", {"textDocument": {
+        "uri": uri(big), "languageId": "glsl", "version": 1, "text": text}}, request=False)
+    client.diagnostics_for(uri(big))
+    # A burst of edits: versions are published in order, the last one is published,
+    # and edits made while a check ran are checked together (fewer publications).
+    for version in range(2, 22):
+        client.send("textDocument/didChange", {
+            "textDocument": {"uri": uri(big), "version": version},
+            "contentChanges": [{"range": {"start": {"line": 0, "character": 0},
+                                          "end": {"line": 0, "character": 0}}, "text": " "}]},
+            request=False)
+    # Requests that need no check are answered while the checks run.
+    symbols_id = client.send("textDocument/documentSymbol", {"textDocument": {"uri": uri(toy)}})
+    # A code action waits for the checks before it; cancelled, it is answered so.
+    action_id = client.send("textDocument/codeAction", {
+        "textDocument": {"uri": uri(big)},
+        "range": {"start": {"line": 0, "character": 0}, "end": {"line": 0, "character": 0}},
+        "context": {"diagnostics": []}})
+    client.send("$/cancelRequest", {"id": action_id}, request=False)
+    order = []
+    versions = []
+    while True:
+        message = client.receive()
+        if message.get("id") in (symbols_id, action_id) and "method" not in message:
+            order.append(message)
+        elif message.get("method") == "textDocument/publishDiagnostics" and \
+                message["params"]["uri"] == uri(big):
+            versions.append(message["params"]["version"])
+            order.append(message)
+        if versions and versions[-1] == 21 and len([m for m in order if "id" in m]) == 2:
+            break
+    if versions != sorted(versions) or len(versions) >= 20:
+        fail("published versions after a burst of 20 edits: %r" % versions)
+    symbols_at = next(i for i, m in enumerate(order) if m.get("id") == symbols_id)
+    last_publish = max(i for i, m in enumerate(order) if m.get("method"))
+    if symbols_at > last_publish:
+        fail("documentSymbol waited for every check: %r" % [m.get("method", m.get("id")) for m in order])
+    cancelled = next(m for m in order if m.get("id") == action_id)
+    if cancelled.get("error", {}).get("code") != -32800:
+        fail("a cancelled code action queued behind a check: %r" % cancelled)
+    client.send("textDocument/didClose", {"textDocument": {"uri": uri(big)}}, request=False)
+    client.diagnostics_for(uri(big))
+    print("lsp: 20 edits of a %d-line pass published as versions %r" % (text.count("\n"), versions))
+
+    # Render on save: the picture is checked in the background; requests go on.
+    client.send("workspace/didChangeConfiguration",
+                {"settings": {"shaderport": {"renderOnSave": True, "failOn": "warning"}}},
+                request=False)
+    status = status_for(client, uri(toy))
+    if status["failOn"] != "warning" or status["rendered"]:
+        fail("status after failOn: %r" % status)
+    client.send("textDocument/didSave", {"textDocument": {"uri": uri(toy)}}, request=False)
+    hover_id = client.send("textDocument/hover", {
+        "textDocument": {"uri": uri(toy)}, "position": {"line": 4, "character": 25}})
+    first = client.receive()
+    while first.get("method") == "window/logMessage":
+        first = client.receive()
+    if first.get("id") != hover_id:
+        fail("a hover waited for the render: %r came first" % first.get("method"))
+    rendered = status_for(client, uri(toy))
+    if not rendered["rendered"]:
+        fail("no rendered status after save: %r" % rendered)
+    client.send("workspace/didChangeConfiguration", {"settings": {"shaderport": {}}}, request=False)
+    status_for(client, uri(toy))
+
+
 def main():
     shutil.rmtree(SCRATCH, ignore_errors=True)
     os.makedirs(SCRATCH)
@@ -187,6 +288,10 @@ def main():
     if "toy.glsl is checked as a shadertoy fragment shader, harness shadertoy, target webgl2" \
             not in client.logs:
         fail("the decision was not told: %r" % client.logs)
+    status = client.statuses[-1]
+    if (status["target"], status["harness"], status["channels"], status["failOn"], status["fails"]) != \
+            ("webgl2", "shadertoy", ["2d", "2d", "2d", "2d"], "error", True):
+        fail("status on open: %r" % status)
     first = published["diagnostics"][0]
     if not first["codeDescription"]["href"].startswith("https://") or first["source"] != "shaderport":
         fail("diagnostic fields: %r" % first)
@@ -286,6 +391,8 @@ def main():
     if published_of(client.diagnostics()) != expected_of(toy):
         fail("after the full change")
 
+    responsiveness(client, toy)
+
     # Every corpus file: the server and check agree.
     compared = 0
     for folder, _, names in sorted(os.walk(os.path.join(SOURCE, "corpus"))):
@@ -333,7 +440,7 @@ def main():
 
     # Robustness: not JSON, an unknown method, a notification it does not know.
     client.send_raw(b"{not json")
-    if client.receive().get("error", {}).get("code") != -32700:
+    if client.response_to(None).get("error", {}).get("code") != -32700:
         fail("a malformed message is not a parse error")
     if client.request("shaderport/nothing", {}).get("error", {}).get("code") != -32601:
         fail("an unknown method is not MethodNotFound")

@@ -1,22 +1,13 @@
 // `shaderport lsp`: the language server on standard input and output.
-#include <poll.h>
-#include <unistd.h>
-
 #include <cstdio>
 
 #include "commands.h"
-#include "driver/lsp/lsp_session.h"
+#include "driver/lsp/lsp_server.h"
 #include "driver/port/rule_reference.h"
 #include "lsp_framing.h"
 
 namespace shaderport::cli {
 namespace {
-
-// True when the client has already sent more (a message waits on standard input).
-bool MoreInputWaiting() {
-  pollfd input{STDIN_FILENO, POLLIN, 0};
-  return ::poll(&input, 1, 0) > 0 && (input.revents & POLLIN) != 0;
-}
 
 void Send(const nlohmann::json& message) {
   // Invalid UTF-8 in a message (a shader's bytes) is replaced, never thrown on.
@@ -25,24 +16,19 @@ void Send(const nlohmann::json& message) {
 }
 
 int RunLsp() {
-  driver::lsp::LspSession session({SHADERPORT_VERSION, driver::PortingRuleIds(), true});
+  driver::lsp::LspServer server({SHADERPORT_VERSION, driver::PortingRuleIds()}, Send);
   while (std::optional<FramedMessage> framed = ReadFramedMessage(stdin)) {
     if (!framed->error.empty()) {
-      WriteFramedMessage(stdout, driver::lsp::LspSession::ParseErrorResponse(framed->error).dump());
+      server.ReceiveUnreadable(framed->error);
       continue;
     }
     const nlohmann::json message = nlohmann::json::parse(framed->body, nullptr, false);
     if (message.is_discarded()) {
-      WriteFramedMessage(stdout, driver::lsp::LspSession::ParseErrorResponse("not JSON").dump());
+      server.ReceiveUnreadable("not JSON");
       continue;
     }
-    for (const nlohmann::json& out : session.Handle(message)) Send(out);
-    if (session.Exited()) return session.ExitCode();
-    // Keystrokes already sent make the pending check stale: check when none waits.
-    // (Input already in stdin's buffer is not seen: that only checks once more.)
-    if (!MoreInputWaiting()) {
-      for (const nlohmann::json& out : session.Flush()) Send(out);
-    }
+    server.Receive(message);
+    if (server.Exited()) return server.ExitCode();
   }
   return 1;  // the client went away without `exit`
 }

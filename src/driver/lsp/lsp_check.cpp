@@ -79,9 +79,11 @@ std::string UriOfPath(const std::filesystem::path& path) {
 DocumentCheck CheckDocument(const std::filesystem::path& path, std::string_view uri,
                             const std::string& text,
                             const std::vector<std::string>& rules_with_sections,
-                            std::optional<Target> target) {
+                            const DocumentCheckSettings& settings) {
   CheckOptions options;
-  options.target = target;
+  options.target = settings.target;
+  options.fail_on = settings.fail_on;
+  options.render = settings.render;
   options.jobs = 1;
   options.force_exclude = false;  // an open file is checked even when the config skips it
   InputText input = ClassifyInputText(text);
@@ -91,6 +93,8 @@ DocumentCheck CheckDocument(const std::filesystem::path& path, std::string_view 
   const SourceManager& sources = *run.sources;
   const DocumentPositions positions(text, shift);
   DocumentCheck checked;
+  checked.rendered = settings.render;
+  checked.fails = run.failed;
   std::vector<DocumentFinding>& findings = checked.findings;
   for (const FileReport& report : run.report.files) {
     if (report.file == nullptr) continue;
@@ -98,6 +102,16 @@ DocumentCheck CheckDocument(const std::filesystem::path& path, std::string_view 
       checked.decision = report.dialect + " " + report.stage + " shader" +
                          (report.harness.empty() ? "" : ", harness " + report.harness) +
                          ", target " + report.target;
+      checked.dialect = report.dialect;
+      checked.stage = report.stage;
+      checked.harness = report.harness;
+      checked.target = report.target;
+      for (size_t at = 0; at < report.channels.size();) {
+        const size_t space = std::min(report.channels.find(' ', at), report.channels.size());
+        checked.channels.push_back(report.channels.substr(at, space - at));
+        at = space + 1;
+      }
+      checked.fail_on = report.fail_on;
     }
     const FileId document = report.file->Id();
     for (const Diagnostic& d : report.diagnostics) {

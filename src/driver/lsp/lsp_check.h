@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "diag/diagnostic.h"
 #include "driver/dialect.h"
 
 namespace shaderport::driver::lsp {
@@ -24,16 +25,27 @@ struct DocumentCheck {
   // What the verdict is against, for people: "shadertoy fragment shader, harness
   // shadertoy, target webgl2" (the file's decision, as `explain-file` shows it).
   std::string decision;
+  // The same, as fields for the `shaderport/status` notification.
+  std::string dialect, stage, harness, target;
+  std::vector<std::string> channels;    // ShaderToy code: iChannel0..3's sampler types
+  Severity fail_on = Severity::kError;  // findings at or above it fail `check`
+  bool fails = false;                   // some finding at or above fail_on
+  bool rendered = false;                // the picture was rendered and checked too
+};
+
+// What a check should do besides check, from the client's settings.
+struct DocumentCheckSettings {
+  std::optional<Target> target;     // the WebGL context (else decided per file)
+  std::optional<Severity> fail_on;  // else the file's .shaderport.toml, else error
+  bool render = false;              // smoke-render and check the picture (check --render)
 };
 
 // `uri` names the document in related information; `rules_with_sections` (sorted)
 // picks each rule's documentation link.
-// `target`: the WebGL context asked for in the client's settings (else decided per
-// file, as `check` without --target does).
 DocumentCheck CheckDocument(const std::filesystem::path& path, std::string_view uri,
                             const std::string& text,
                             const std::vector<std::string>& rules_with_sections,
-                            std::optional<Target> target = std::nullopt);
+                            const DocumentCheckSettings& settings = {});
 
 // What `shaderport fix` writes for the document ("" when it changes nothing or
 // cannot: the text is not read, or the fixes did not settle).

@@ -56,6 +56,29 @@ std::string StringMember(const Json& object, const char* name) {
   return value.get<std::string>();
 }
 
+// `shaderport/status`: what the document's verdict is against and what it is, for a
+// status bar (the VS Code extension shows it).
+Json StatusParams(const std::string& uri, int64_t version, const DocumentCheck& checked) {
+  std::string summary = checked.target.empty() ? "not checked" : checked.target;
+  if (!checked.harness.empty()) summary += ", " + checked.harness;
+  for (size_t i = 0; i < checked.channels.size(); ++i) {
+    if (checked.channels[i] != "2d") {
+      summary += ", iChannel" + std::to_string(i) + " " + checked.channels[i];
+    }
+  }
+  return {{"uri", uri},
+          {"version", version},
+          {"dialect", checked.dialect},
+          {"stage", checked.stage},
+          {"harness", checked.harness},
+          {"target", checked.target},
+          {"channels", checked.channels},
+          {"failOn", SeverityName(checked.fail_on)},
+          {"fails", checked.fails},
+          {"rendered", checked.rendered},
+          {"summary", summary}};
+}
+
 }  // namespace
 
 std::filesystem::path PathOfUri(std::string_view uri) {
@@ -97,16 +120,15 @@ std::vector<Json> LspSession::Handle(const Json& message) {
   const bool request = message.contains("id");
   const Json id = request ? message["id"] : Json();
   const Json params = message.value("params", Json::object());
-  if (request && !initialized_ && method != "initialize") {
-    out.push_back(ErrorResponse(id, kServerNotInitialized, "initialize comes first"));
-    return out;
+  if (request) {
+    if (Json refusal = Refusal(method, id); !refusal.is_null()) {
+      out.push_back(std::move(refusal));
+      return out;
+    }
   }
-  if (request && shutdown_) {
-    out.push_back(ErrorResponse(id, kInvalidRequest, "the server is shutting down"));
-    return out;
-  }
-  // A request sees every change before it: pending checks are published first.
-  if (request) out = Flush();
+  // A request sees every change before it: pending checks are published first
+  // (a caller that checks on its own thread orders them itself).
+  if (request && !options_.checks_by_caller) out = Flush();
   try {
     Json result = Dispatch(method, params, out);
     if (request) {
@@ -124,12 +146,20 @@ std::vector<Json> LspSession::Handle(const Json& message) {
   return out;
 }
 
+Json LspSession::Refusal(const std::string& method, const Json& id) const {
+  if (!initialized_ && method != "initialize") {
+    return ErrorResponse(id, kServerNotInitialized, "initialize comes first");
+  }
+  if (shutdown_) return ErrorResponse(id, kInvalidRequest, "the server is shutting down");
+  return nullptr;
+}
+
 Json LspSession::Dispatch(const std::string& method, const Json& params, std::vector<Json>& out) {
   if (method == "initialize") {
     initialized_ = true;
     return {{"capabilities",
              {{"positionEncoding", "utf-16"},
-              {"textDocumentSync", {{"openClose", true}, {"change", 2}}},
+              {"textDocumentSync", {{"openClose", true}, {"change", 2}, {"save", true}}},
               {"documentSymbolProvider", true},
               {"definitionProvider", true},
               {"hoverProvider", true},
@@ -172,6 +202,7 @@ Json LspSession::Dispatch(const std::string& method, const Json& params, std::ve
   if (method == "textDocument/didClose") {
     const std::string uri = StringMember(Member(params, "textDocument"), "uri");
     std::erase(dirty_, uri);
+    std::erase(saved_, uri);
     if (documents_.erase(uri) > 0) {
       out.push_back({{"jsonrpc", "2.0"},
                      {"method", "textDocument/publishDiagnostics"},
@@ -179,33 +210,26 @@ Json LspSession::Dispatch(const std::string& method, const Json& params, std::ve
     }
     return Json::value_t::discarded;
   }
-  if (method == "workspace/didChangeConfiguration") {
-    // {"settings": {"shaderport": {"target": "webgl1"}}}; null or "" decides per file.
-    const Json& settings = Member(params, "settings");
-    std::optional<Target> target;
-    if (settings.is_object() && settings.contains("shaderport") &&
-        settings["shaderport"].is_object()) {
-      const Json& value = settings["shaderport"].value("target", Json());
-      if (value.is_string() && !value.get<std::string>().empty()) {
-        target = ParseTarget(value.get<std::string>());
-        if (!target) {
-          out.push_back({{"jsonrpc", "2.0"},
-                         {"method", "window/showMessage"},
-                         {"params",
-                          {{"type", 1},
-                           {"message", "shaderport.target must be webgl1 or webgl2, not '" +
-                                           value.get<std::string>() + "'"}}}});
-          return Json::value_t::discarded;
-        }
-      }
-    }
-    if (target != target_) {
-      target_ = target;
-      for (auto& [uri, document] : documents_) Changed(uri, document, out);
+  if (method == "textDocument/didSave") {
+    const std::string uri = StringMember(Member(params, "textDocument"), "uri");
+    const auto found = documents_.find(uri);
+    if (!render_on_save_ || found == documents_.end()) return Json::value_t::discarded;
+    if (!options_.checks_by_caller) {
+      Publish(uri, found->second,
+              JobFor(uri, found->second, true).Run(options_.rules_with_sections), out);
+    } else if (std::find(saved_.begin(), saved_.end(), uri) == saved_.end()) {
+      saved_.push_back(uri);
     }
     return Json::value_t::discarded;
   }
-  if (method == "textDocument/codeAction") return CodeActions(params);
+  if (method == "workspace/didChangeConfiguration") {
+    Configure(Member(params, "settings"), out);
+    return Json::value_t::discarded;
+  }
+  if (method == "textDocument/codeAction") {
+    const std::optional<CodeActionInput> input = CodeActionInputFor(params);
+    return input ? ComputeCodeActions(*input) : Json::array();
+  }
   if (method == "textDocument/completion") {
     const std::string uri = StringMember(Member(params, "textDocument"), "uri");
     const auto found = documents_.find(uri);
@@ -244,31 +268,111 @@ Json LspSession::Dispatch(const std::string& method, const Json& params, std::ve
     if (!range) return nullptr;
     return Json{{"uri", uri}, {"range", *range}};
   }
-  // Notifications the session has nothing to do for ($/cancelRequest: every request
-  // is answered before the next message is read).
+  // Notifications the session has nothing to do for ($/cancelRequest: the requests
+  // it answers are answered before the next message is read; LspServer cancels the
+  // ones it queues).
   return Json::value_t::discarded;
 }
 
+void LspSession::Configure(const Json& settings, std::vector<Json>& out) {
+  // {"shaderport": {"target": "webgl1", "failOn": "warning", "renderOnSave": true}};
+  // a missing, null or "" value means the default.
+  const Json section =
+      settings.is_object() && settings.contains("shaderport") && settings["shaderport"].is_object()
+          ? settings["shaderport"]
+          : Json::object();
+  const auto text = [&](const char* name) {
+    const Json& value = section.value(name, Json());
+    return value.is_string() ? value.get<std::string>() : std::string();
+  };
+  const auto complain = [&](const std::string& message) {
+    out.push_back({{"jsonrpc", "2.0"},
+                   {"method", "window/showMessage"},
+                   {"params", {{"type", 1}, {"message", message}}}});
+  };
+  std::optional<Target> target;
+  if (const std::string name = text("target"); !name.empty()) {
+    target = ParseTarget(name);
+    if (!target) return complain("shaderport.target must be webgl1 or webgl2, not '" + name + "'");
+  }
+  std::optional<Severity> fail_on;
+  if (const std::string name = text("failOn"); !name.empty()) {
+    fail_on = SeverityFromName(name);
+    if (!fail_on) {
+      return complain("shaderport.failOn must be error, warning or note, not '" + name + "'");
+    }
+  }
+  render_on_save_ =
+      section.value("renderOnSave", Json()).is_boolean() && section["renderOnSave"].get<bool>();
+  if (target == target_ && fail_on == fail_on_) return;
+  target_ = target;
+  fail_on_ = fail_on;
+  for (auto& [uri, document] : documents_) Changed(uri, document, out);
+}
+
+CheckJob LspSession::JobFor(const std::string& uri, const Document& document, bool render) const {
+  return {uri, document.path, document.text, document.revision, {target_, fail_on_, render}};
+}
+
+DocumentCheck CheckJob::Run(const std::vector<std::string>& rules_with_sections) const {
+  return CheckDocument(path, uri, text, rules_with_sections, settings);
+}
+
 void LspSession::Changed(const std::string& uri, Document& document, std::vector<Json>& out) {
-  if (!options_.defer_checks) return Publish(uri, document, out);
+  document.revision = ++revisions_;
+  if (!options_.checks_by_caller) {
+    return Publish(uri, document, JobFor(uri, document, false).Run(options_.rules_with_sections),
+                   out);
+  }
   if (std::find(dirty_.begin(), dirty_.end(), uri) == dirty_.end()) dirty_.push_back(uri);
 }
 
 std::vector<Json> LspSession::Flush() {
   std::vector<Json> out;
-  for (const std::string& uri : dirty_) {
-    const auto found = documents_.find(uri);
-    if (found != documents_.end()) Publish(uri, found->second, out);
+  while (std::optional<CheckJob> job = TakeCheck()) {
+    const auto found = documents_.find(job->uri);
+    Publish(job->uri, found->second, job->Run(options_.rules_with_sections), out);
   }
-  dirty_.clear();
   return out;
 }
 
-void LspSession::Publish(const std::string& uri, Document& document, std::vector<Json>& out) {
-  document.published.clear();
-  Json diagnostics = Json::array();
-  DocumentCheck checked =
-      CheckDocument(document.path, uri, document.text, options_.rules_with_sections, target_);
+std::optional<CheckJob> LspSession::TakeCheck() {
+  while (!dirty_.empty()) {
+    const std::string uri = dirty_.front();
+    dirty_.erase(dirty_.begin());
+    const auto found = documents_.find(uri);
+    if (found != documents_.end()) return JobFor(uri, found->second, false);
+  }
+  return std::nullopt;
+}
+
+std::optional<CheckJob> LspSession::TakeRender() {
+  while (!saved_.empty()) {
+    const std::string uri = saved_.front();
+    saved_.erase(saved_.begin());
+    const auto found = documents_.find(uri);
+    if (found != documents_.end()) return JobFor(uri, found->second, true);
+  }
+  return std::nullopt;
+}
+
+std::vector<Json> LspSession::Completed(const CheckJob& job, DocumentCheck checked) {
+  std::vector<Json> out;
+  const auto found = documents_.find(job.uri);
+  // Closed, changed, or reconfigured since the job began: a newer check is coming.
+  if (found == documents_.end() || found->second.revision != job.revision) return out;
+  Document& document = found->second;
+  if (job.settings.render) {
+    document.rendered_revision = job.revision;
+  } else if (document.rendered_revision == job.revision) {
+    return out;  // the render's findings (a superset) stand for this revision
+  }
+  Publish(job.uri, document, std::move(checked), out);
+  return out;
+}
+
+void LspSession::Publish(const std::string& uri, Document& document, DocumentCheck checked,
+                         std::vector<Json>& out) {
   // What the verdict is against, told when it is new or changes (a #version line
   // added, a mainImage removed).
   if (!checked.decision.empty() && checked.decision != document.decision) {
@@ -280,56 +384,86 @@ void LspSession::Publish(const std::string& uri, Document& document, std::vector
                      {"message", document.path.filename().string() + " is checked as a " +
                                      checked.decision}}}});
   }
-  for (DocumentFinding& finding : checked.findings) {
-    diagnostics.push_back(finding.diagnostic);
-    document.published.push_back(
-        {std::move(finding.diagnostic), std::move(finding.edits), finding.safe});
-  }
+  Json diagnostics = Json::array();
+  for (const DocumentFinding& finding : checked.findings) diagnostics.push_back(finding.diagnostic);
+  out.push_back({{"jsonrpc", "2.0"},
+                 {"method", "shaderport/status"},
+                 {"params", StatusParams(uri, document.version, checked)}});
   out.push_back(
       {{"jsonrpc", "2.0"},
        {"method", "textDocument/publishDiagnostics"},
        {"params", {{"uri", uri}, {"version", document.version}, {"diagnostics", diagnostics}}}});
+  document.published = std::move(checked.findings);
 }
 
-Json LspSession::CodeActions(const Json& params) {
+std::optional<CodeActionInput> LspSession::CodeActionInputFor(const Json& params) const {
   const std::string uri = StringMember(Member(params, "textDocument"), "uri");
   const Json& range = Member(params, "range");
-  Json actions = Json::array();
+  if (!range.is_object() || !range.contains("start") || !range.contains("end") ||
+      !PositionFromJson(range["start"]) || !PositionFromJson(range["end"])) {
+    throw BadParams{"range is not a range"};
+  }
   const auto found = documents_.find(uri);
-  if (found == documents_.end()) return actions;
+  if (found == documents_.end()) return std::nullopt;
   const Document& document = found->second;
+  return CodeActionInput{uri, document.path, document.text, range, document.published};
+}
+
+LspSession::CodeActionRequest LspSession::TakeCodeActionRequest(const Json& message) {
+  const Json id = message.value("id", Json());
+  CodeActionRequest request;
+  if (Json refusal = Refusal("textDocument/codeAction", id); !refusal.is_null()) {
+    request.response = std::move(refusal);
+    return request;
+  }
+  try {
+    request.input = CodeActionInputFor(message.value("params", Json::object()));
+    if (!request.input) {
+      request.response = {{"jsonrpc", "2.0"}, {"id", id}, {"result", Json::array()}};
+    }
+  } catch (const BadParams& bad) {
+    request.response = ErrorResponse(id, kInvalidParams, "textDocument/codeAction: " + bad.what);
+  } catch (const Json::exception& error) {
+    request.response =
+        ErrorResponse(id, kInvalidParams, std::string("textDocument/codeAction: ") + error.what());
+  }
+  return request;
+}
+
+Json ComputeCodeActions(const CodeActionInput& input) {
+  Json actions = Json::array();
   bool any_safe = false;
-  for (const Published& published : document.published) {
+  for (const DocumentFinding& published : input.published) {
     if (published.edits.empty()) continue;
     any_safe = any_safe || published.safe;
-    if (!Overlaps(published.diagnostic["range"], range)) continue;
+    if (!Overlaps(published.diagnostic["range"], input.range)) continue;
     const std::string rule = published.diagnostic["code"];
     actions.push_back({{"title", "Apply the fix of " + rule},
                        {"kind", "quickfix"},
                        {"diagnostics", Json::array({published.diagnostic})},
                        {"isPreferred", published.safe},
-                       {"edit", {{"changes", {{uri, published.edits}}}}}});
+                       {"edit", {{"changes", {{input.uri, published.edits}}}}}});
   }
   const Json whole = {
       {"start", ToJson({0, 0})},
-      {"end", ToJson(PositionOf(document.text, static_cast<uint32_t>(document.text.size())))}};
+      {"end", ToJson(PositionOf(input.text, static_cast<uint32_t>(input.text.size())))}};
+  const auto replace_all = [&](const std::string& text) {
+    return Json{{"changes", {{input.uri, Json::array({{{"range", whole}, {"newText", text}}})}}}};
+  };
   if (any_safe) {
-    const std::string fixed = FixDocument(document.path, document.text);
+    const std::string fixed = FixDocument(input.path, input.text);
     if (!fixed.empty()) {
-      actions.push_back(
-          {{"title", "Fix all safe fixes in this file (shaderport fix)"},
-           {"kind", "source.fixAll.shaderport"},
-           {"edit",
-            {{"changes", {{uri, Json::array({{{"range", whole}, {"newText", fixed}}})}}}}}});
+      actions.push_back({{"title", "Fix all safe fixes in this file (shaderport fix)"},
+                         {"kind", "source.fixAll.shaderport"},
+                         {"edit", replace_all(fixed)}});
     }
   }
   // Asked for explicitly (a source action), or offered beside the quick fixes.
-  const std::string ported = PortDocument(document.path, document.text);
+  const std::string ported = PortDocument(input.path, input.text);
   if (!ported.empty()) {
-    actions.push_back(
-        {{"title", "Port this file to WebGL2 (shaderport port)"},
-         {"kind", "source.convert.webgl2.shaderport"},
-         {"edit", {{"changes", {{uri, Json::array({{{"range", whole}, {"newText", ported}}})}}}}}});
+    actions.push_back({{"title", "Port this file to WebGL2 (shaderport port)"},
+                       {"kind", "source.convert.webgl2.shaderport"},
+                       {"edit", replace_all(ported)}});
   }
   return actions;
 }

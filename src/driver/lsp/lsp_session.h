@@ -15,18 +15,42 @@
 #include <string_view>
 #include <vector>
 
+#include "diag/diagnostic.h"
 #include "driver/dialect.h"
+#include "driver/lsp/lsp_check.h"
 
 namespace shaderport::driver::lsp {
 
 struct SessionOptions {
   std::string tool_version;
   std::vector<std::string> rules_with_sections;  // sorted: rules with a docs section
-  // Changes only mark a document; Flush() checks each marked one once. The server
-  // flushes when no message is waiting, so a burst of keystrokes is checked once, as
-  // its last version (stale versions are never checked).
-  bool defer_checks = false;
+  // Changes only mark a document; the caller takes each marked one with TakeCheck(),
+  // checks it away from the session (CheckJob::Run) and hands the result to
+  // Completed(), which publishes it unless the document changed meanwhile. A burst of
+  // keystrokes is checked as its last version (LspServer does this on a worker).
+  bool checks_by_caller = false;
 };
+
+// A document as it was when its check began: what a worker checks, without the session.
+struct CheckJob {
+  std::string uri;
+  std::filesystem::path path;
+  std::string text;
+  uint64_t revision = 0;  // the document's revision then: a newer one makes the result stale
+  DocumentCheckSettings settings;  // the client's settings then (render: a render-on-save)
+
+  DocumentCheck Run(const std::vector<std::string>& rules_with_sections) const;
+};
+
+// What a code action request needs, taken from the session: computed off its lock.
+struct CodeActionInput {
+  std::string uri;
+  std::filesystem::path path;
+  std::string text;
+  nlohmann::json range;
+  std::vector<DocumentFinding> published;
+};
+nlohmann::json ComputeCodeActions(const CodeActionInput& input);
 
 class LspSession {
  public:
@@ -35,8 +59,25 @@ class LspSession {
   // One parsed message; returns the responses and notifications to send, in order.
   std::vector<nlohmann::json> Handle(const nlohmann::json& message);
 
-  // Checks and publishes every document changed since the last flush (defer_checks).
+  // Checks and publishes every document changed since the last flush (without
+  // checks_by_caller, Handle() has done so already).
   std::vector<nlohmann::json> Flush();
+
+  // checks_by_caller: the next document to check (changed ones first, oldest change
+  // first; then saved ones to render), and publishing a finished check.
+  bool HasCheckWaiting() const { return !dirty_.empty(); }
+  bool HasRenderWaiting() const { return !saved_.empty(); }
+  std::optional<CheckJob> TakeCheck();
+  std::optional<CheckJob> TakeRender();
+  std::vector<nlohmann::json> Completed(const CheckJob& job, DocumentCheck checked);
+
+  // A code action request's input (nothing when the document is not open), or the
+  // error response to send instead (not initialized, shutting down, bad params).
+  struct CodeActionRequest {
+    std::optional<CodeActionInput> input;
+    nlohmann::json response;  // set when there is nothing to compute
+  };
+  CodeActionRequest TakeCodeActionRequest(const nlohmann::json& message);
 
   // The response to a message that was not JSON (JSON-RPC's parse error, id null).
   static nlohmann::json ParseErrorResponse(std::string_view what);
@@ -46,31 +87,39 @@ class LspSession {
   int ExitCode() const { return shutdown_ ? 0 : 1; }
 
  private:
-  struct Published {
-    nlohmann::json diagnostic;  // as sent in publishDiagnostics
-    nlohmann::json edits;       // its fix-its as TextEdits (an array; empty: none)
-    bool safe = false;          // every fix-it safe: `shaderport fix` applies them
-  };
   struct Document {
     std::filesystem::path path;
     std::string text;
     int64_t version = 0;
-    std::vector<Published> published;
+    uint64_t revision = 0;  // the session's count of changes when this one came
+    std::vector<DocumentFinding> published;
     std::string decision;  // last told to the client (window/logMessage)
+    // The last render-on-save result: shown instead of a plain check of the same revision.
+    std::optional<uint64_t> rendered_revision;
   };
 
   nlohmann::json Dispatch(const std::string& method, const nlohmann::json& params,
                           std::vector<nlohmann::json>& out);
-  void Publish(const std::string& uri, Document& document, std::vector<nlohmann::json>& out);
+  void Publish(const std::string& uri, Document& document, DocumentCheck checked,
+               std::vector<nlohmann::json>& out);
   void Changed(const std::string& uri, Document& document, std::vector<nlohmann::json>& out);
-  nlohmann::json CodeActions(const nlohmann::json& params);
+  void Configure(const nlohmann::json& settings, std::vector<nlohmann::json>& out);
+  CheckJob JobFor(const std::string& uri, const Document& document, bool render) const;
+  std::optional<CodeActionInput> CodeActionInputFor(const nlohmann::json& params) const;
+  // The error response a request gets before it is dispatched (null when none).
+  nlohmann::json Refusal(const std::string& method, const nlohmann::json& id) const;
 
   SessionOptions options_;
   std::map<std::string, Document> documents_;  // by URI
-  std::vector<std::string> dirty_;             // changed, not yet checked (defer_checks)
-  // From workspace/didChangeConfiguration, `shaderport.target`: the WebGL context every
-  // document is checked for (unset: decided per file, as check does).
+  std::vector<std::string> dirty_;             // changed, not yet checked
+  std::vector<std::string> saved_;             // saved, not yet rendered (render-on-save)
+  uint64_t revisions_ = 0;
+  // From workspace/didChangeConfiguration (`shaderport.*`): the WebGL context every
+  // document is checked for (unset: decided per file, as check does), the severity
+  // that fails (unset: the file's .shaderport.toml, else error) and render-on-save.
   std::optional<Target> target_;
+  std::optional<Severity> fail_on_;
+  bool render_on_save_ = false;
   bool initialized_ = false;
   bool shutdown_ = false;
   bool exited_ = false;
