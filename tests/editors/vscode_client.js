@@ -1,7 +1,7 @@
 // The protocol library VS Code's client is built on (vscode-languageserver-protocol,
 // from editors/vscode's pinned dependencies) against `shaderport lsp`: initialize,
 // open a ShaderToy pass, wait for the diagnostics, ask for the code actions, apply
-// the quick fix of the first finding, shut down.
+// the quick fix of the first finding, read the status notification, shut down.
 //   node vscode_client.js SHADERPORT EXTENSION_DIR SCRATCH_DIR
 const path = require('path');
 const fs = require('fs');
@@ -24,6 +24,8 @@ async function main() {
     new protocol.StreamMessageReader(server.stdout), new protocol.StreamMessageWriter(server.stdin));
   const published = new Promise((resolve) =>
     connection.onNotification(protocol.PublishDiagnosticsNotification.type, resolve));
+  const statused = new Promise((resolve) =>
+    connection.onNotification(new protocol.NotificationType('shaderport/status'), resolve));
   connection.listen();
   const init = await connection.sendRequest(protocol.InitializeRequest.type,
     { processId: process.pid, rootUri: null, capabilities: {} });
@@ -37,6 +39,11 @@ async function main() {
   const diagnostics = (await published).diagnostics;
   if (diagnostics.length !== 1 || diagnostics[0].code !== 'glslang/undeclared-identifier') {
     fail('diagnostics ' + JSON.stringify(diagnostics));
+  }
+  const status = await statused;
+  if (status.target !== 'webgl2' || status.harness !== 'shadertoy' || !status.fails ||
+      status.summary !== 'webgl2, shadertoy') {
+    fail('status ' + JSON.stringify(status));
   }
   const actions = await connection.sendRequest(protocol.CodeActionRequest.type, {
     textDocument: { uri }, range: diagnostics[0].range, context: { diagnostics },
@@ -53,7 +60,7 @@ async function main() {
   await connection.sendNotification(protocol.ExitNotification.type);
   const code = await new Promise((resolve) => server.on('exit', resolve));
   if (code !== 0) fail('exit code ' + code);
-  console.log('vscode-languageserver-protocol: diagnostics, quick fix, shutdown');
+  console.log('vscode-languageserver-protocol: diagnostics, status, quick fix, shutdown');
   process.exit(0);
 }
 

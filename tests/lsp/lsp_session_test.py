@@ -262,6 +262,93 @@ def responsiveness(client, toy):
     status_for(client, uri(toy))
 
 
+def position_of(text, needle, skip=0):
+    """The LSP position of `needle` (plus `skip` characters) in an ASCII text."""
+    at = text.index(needle) + skip
+    return {"line": text.count("\n", 0, at), "character": at - (text.rfind("\n", 0, at) + 1)}
+
+
+def project_navigation(client):
+    """Definitions, references, hover and completion across a ShaderToy project's tabs
+    (folder form and JSON form); scope-aware completion; expression types on hover."""
+    folder = os.path.join(SCRATCH, "project")
+    os.makedirs(folder, exist_ok=True)
+    common = "float hash(float n) { return fract(sin(n) * 43758.5453); }\nconst float SCALE = 2.0;\n"
+    image = ("float helper(float x) { float inner = x; return inner; }\n"
+             "void mainImage(out vec4 o, in vec2 p) {\n    float h = hash(p.x * SCALE);\n"
+             "    o = vec4(h);\n}\n")
+    buffer = "void mainImage(out vec4 o, in vec2 p) { o = vec4(hash(p.y)); }\n"
+    for name, text in (("common.glsl", common), ("image.glsl", image), ("buffer-a.glsl", buffer)):
+        with open(os.path.join(folder, name), "w") as f:
+            f.write(text)
+    image_uri, common_uri = uri(os.path.join(folder, "image.glsl")), uri(os.path.join(folder, "common.glsl"))
+    client.send("textDocument/didOpen", {"textDocument": {
+        "uri": image_uri, "languageId": "glsl", "version": 1, "text": image}}, request=False)
+    client.diagnostics_for(image_uri)
+
+    def ask(method, at_uri, position, **extra):
+        params = {"textDocument": {"uri": at_uri}, "position": position}
+        params.update(extra)
+        return client.request(method, params)["result"]
+
+    definition = ask("textDocument/definition", image_uri, position_of(image, "hash("))
+    if definition != {"uri": common_uri, "range": {"start": {"line": 0, "character": 6},
+                                                   "end": {"line": 0, "character": 10}}}:
+        fail("definition of hash from image.glsl: %r" % definition)
+    hover = ask("textDocument/hover", image_uri, position_of(image, "SCALE"))["contents"]["value"]
+    if "const float SCALE" not in hover or "Common" not in hover:
+        fail("hover on SCALE: %r" % hover)
+    expression = ask("textDocument/hover", image_uri, position_of(image, "p.x", 2))
+    if expression is None or "float" not in expression["contents"]["value"] or \
+            "p.x" not in expression["contents"]["value"]:
+        fail("hover on the x of p.x: %r" % expression)
+    items = ask("textDocument/completion", image_uri, position_of(image, "    o = vec4(h)"))["items"]
+    labels = {item["label"] for item in items}
+    for wanted in ("hash", "SCALE", "helper", "h", "o", "p", "iTime", "texture"):
+        if wanted not in labels:
+            fail("completion in mainImage lacks %r" % wanted)
+    for unwanted in ("inner", "x"):
+        if unwanted in labels:
+            fail("completion in mainImage offers %r, a name of helper()" % unwanted)
+    # From Common: every tab's use is a reference (buffer-a.glsl is not open: read from disk).
+    client.send("textDocument/didOpen", {"textDocument": {
+        "uri": common_uri, "languageId": "glsl", "version": 1, "text": common}}, request=False)
+    client.diagnostics_for(common_uri)
+    references = ask("textDocument/references", common_uri, position_of(common, "hash"),
+                     context={"includeDeclaration": True})
+    got = sorted((os.path.basename(r["uri"]), r["range"]["start"]["line"], r["range"]["start"]["character"])
+                 for r in references)
+    if got != [("buffer-a.glsl", 0, 49), ("common.glsl", 0, 6), ("image.glsl", 2, 14)]:
+        fail("references of hash across the folder: %r" % got)
+    for closing in (image_uri, common_uri):
+        client.send("textDocument/didClose", {"textDocument": {"uri": closing}}, request=False)
+        client.diagnostics_for(closing)
+
+    # The JSON form: positions are in the JSON document; the passes are its strings.
+    record = {"id": "navtst", "name": "navigation", "author": "shaderport", "license": "MIT",
+              "passes": [{"name": "Common", "type": "common", "code": common},
+                         {"name": "Image", "type": "image", "code": image}]}
+    document = json.dumps(record, indent=1)
+    project = os.path.join(SCRATCH, "navigation.json")
+    with open(project, "w") as f:
+        f.write(document)
+    client.send("textDocument/didOpen", {"textDocument": {
+        "uri": uri(project), "languageId": "json", "version": 1, "text": document}}, request=False)
+    client.diagnostics_for(uri(project))
+    use = document.index("hash(p.x")
+    definition = ask("textDocument/definition", uri(project), position_of(document, "hash(p.x"))
+    want = position_of(document, "hash(float")
+    if definition is None or definition["uri"] != uri(project) or definition["range"]["start"] != want:
+        fail("definition of hash in the JSON project: %r (want %r, use at %d)" % (definition, want, use))
+    symbols = client.request("textDocument/documentSymbol", {"textDocument": {"uri": uri(project)}})["result"]
+    outline = [(s["name"], [c["name"] for c in s.get("children", [])]) for s in symbols]
+    if outline != [("Common", ["hash", "SCALE"]), ("Image", ["helper", "mainImage"])]:
+        fail("outline of the JSON project: %r" % outline)
+    client.send("textDocument/didClose", {"textDocument": {"uri": uri(project)}}, request=False)
+    client.diagnostics_for(uri(project))
+    print("lsp: definition, references, hover and completion across a project's tabs")
+
+
 def main():
     shutil.rmtree(SCRATCH, ignore_errors=True)
     os.makedirs(SCRATCH)
@@ -392,6 +479,7 @@ def main():
         fail("after the full change")
 
     responsiveness(client, toy)
+    project_navigation(client)
 
     # Every corpus file: the server and check agree.
     compared = 0

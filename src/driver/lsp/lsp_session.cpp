@@ -230,43 +230,10 @@ Json LspSession::Dispatch(const std::string& method, const Json& params, std::ve
     const std::optional<CodeActionInput> input = CodeActionInputFor(params);
     return input ? ComputeCodeActions(*input) : Json::array();
   }
-  if (method == "textDocument/completion") {
-    const std::string uri = StringMember(Member(params, "textDocument"), "uri");
-    const auto found = documents_.find(uri);
-    if (found == documents_.end()) return Json::array();
-    return Json{{"isIncomplete", false},
-                {"items", CompletionItems(found->second.path, found->second.text)}};
-  }
-  if (method == "textDocument/documentSymbol" || method == "textDocument/definition" ||
-      method == "textDocument/hover" || method == "textDocument/references") {
-    const std::string uri = StringMember(Member(params, "textDocument"), "uri");
-    const auto found = documents_.find(uri);
-    if (found == documents_.end()) return nullptr;  // not open: nothing known
-    const Document& document = found->second;
-    if (method == "textDocument/documentSymbol") {
-      return DocumentSymbols(document.path, document.text);
-    }
-    const std::optional<Position> position = PositionFromJson(Member(params, "position"));
-    if (!position) throw BadParams{"position is not a position"};
-    const uint32_t offset = OffsetOf(document.text, *position);
-    if (method == "textDocument/references") {
-      const bool with_declaration =
-          params.contains("context") && params["context"].value("includeDeclaration", false);
-      Json locations = Json::array();
-      for (const Json& range :
-           ReferenceRanges(document.path, document.text, offset, with_declaration)) {
-        locations.push_back({{"uri", uri}, {"range", range}});
-      }
-      return locations;
-    }
-    if (method == "textDocument/hover") {
-      const std::optional<std::string> hover = HoverText(document.path, document.text, offset);
-      if (!hover) return nullptr;
-      return Json{{"contents", {{"kind", "markdown"}, {"value", *hover}}}};
-    }
-    const std::optional<Json> range = DefinitionRange(document.path, document.text, offset);
-    if (!range) return nullptr;
-    return Json{{"uri", uri}, {"range", *range}};
+  if (method == "textDocument/completion" || method == "textDocument/documentSymbol" ||
+      method == "textDocument/definition" || method == "textDocument/hover" ||
+      method == "textDocument/references") {
+    return Navigate(method, params);
   }
   // Notifications the session has nothing to do for ($/cancelRequest: the requests
   // it answers are answered before the next message is read; LspServer cancels the
@@ -308,6 +275,40 @@ void LspSession::Configure(const Json& settings, std::vector<Json>& out) {
   target_ = target;
   fail_on_ = fail_on;
   for (auto& [uri, document] : documents_) Changed(uri, document, out);
+}
+
+Json LspSession::Navigate(const std::string& method, const Json& params) const {
+  const std::string uri = StringMember(Member(params, "textDocument"), "uri");
+  const auto found = documents_.find(uri);
+  const bool completion = method == "textDocument/completion";
+  if (found == documents_.end()) return completion ? Json::array() : Json();  // not open
+  const Document& document = found->second;
+  // Files of the document's project that are open are read as the editor has them.
+  const auto open_text = [this](const std::filesystem::path& path) -> std::optional<std::string> {
+    for (const auto& [other_uri, other] : documents_) {
+      if (other.path == path) return other.text;
+    }
+    return std::nullopt;
+  };
+  const ProjectCode code = ProjectCode::Of(document.path, uri, document.text, open_text);
+  if (method == "textDocument/documentSymbol") return DocumentSymbols(code);
+  const std::optional<Position> position = PositionFromJson(Member(params, "position"));
+  if (!position) throw BadParams{"position is not a position"};
+  const uint32_t offset = OffsetOf(document.text, *position);
+  if (completion) {
+    return Json{{"isIncomplete", false}, {"items", CompletionItems(code, offset)}};
+  }
+  if (method == "textDocument/references") {
+    const bool with_declaration =
+        params.contains("context") && params["context"].value("includeDeclaration", false);
+    return ReferenceLocations(code, offset, with_declaration);
+  }
+  if (method == "textDocument/hover") {
+    const std::optional<std::string> hover = HoverText(code, offset);
+    if (!hover) return nullptr;
+    return Json{{"contents", {{"kind", "markdown"}, {"value", *hover}}}};
+  }
+  return DefinitionLocation(code, offset).value_or(Json());
 }
 
 CheckJob LspSession::JobFor(const std::string& uri, const Document& document, bool render) const {

@@ -103,6 +103,8 @@ class LspSession {
   void Publish(const std::string& uri, Document& document, DocumentCheck checked,
                std::vector<nlohmann::json>& out);
   void Changed(const std::string& uri, Document& document, std::vector<nlohmann::json>& out);
+  // Completion, symbols, definition, hover, references over the document's project.
+  nlohmann::json Navigate(const std::string& method, const nlohmann::json& params) const;
   void Configure(const nlohmann::json& settings, std::vector<nlohmann::json>& out);
   CheckJob JobFor(const std::string& uri, const Document& document, bool render) const;
   std::optional<CodeActionInput> CodeActionInputFor(const nlohmann::json& params) const;

@@ -1,39 +1,41 @@
-// The outline of a document and the declaration a name refers to, from shaderport's
-// front end over the document alone (ShaderToy code read as GLSL ES 3.00, as the site
-// compiles it; the site's own uniforms have no declaration to go to).
+// Navigation over a document's code (ProjectCode): its outline, where a name is
+// declared, every use of it (a Common name across the project's passes), hover and
+// completion. ShaderToy code is read as GLSL ES 3.00, as the site compiles it; the
+// site's own uniforms have no declaration to go to.
 #pragma once
 
-#include <filesystem>
+#include <cstdint>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 
+#include "driver/lsp/lsp_project.h"
+
 namespace shaderport::driver::lsp {
 
-// DocumentSymbol[]: functions (definitions), global variables and constants, structs.
-nlohmann::json DocumentSymbols(const std::filesystem::path& path, const std::string& text);
+// DocumentSymbol[]: functions (definitions), global variables and constants, structs;
+// a JSON project's passes each hold their own.
+nlohmann::json DocumentSymbols(const ProjectCode& code);
 
-// The range of the declaration of the name at byte `offset` of `text` (a variable,
-// parameter, function or struct of the document); nothing for a built-in or no name.
-std::optional<nlohmann::json> DefinitionRange(const std::filesystem::path& path,
-                                              const std::string& text, uint32_t offset);
+// The Location of the declaration of the name at byte `offset` of the document (in
+// the document, or in the Common its pass sees); nothing for a built-in or no name.
+std::optional<nlohmann::json> DefinitionLocation(const ProjectCode& code, uint32_t offset);
 
-// The ranges of every use of the name at byte `offset` and of its declaration
-// (when `with_declaration`), within the document; empty for no name or a built-in.
-nlohmann::json ReferenceRanges(const std::filesystem::path& path, const std::string& text,
-                               uint32_t offset, bool with_declaration);
+// The Locations of every use of the name at byte `offset` and of its declaration
+// (when `with_declaration`): a global of Common is also found in every pass that
+// sees it. Empty for no name or a built-in.
+nlohmann::json ReferenceLocations(const ProjectCode& code, uint32_t offset, bool with_declaration);
 
-// Hover text (Markdown) for the name at byte `offset`: the declared type of a
-// variable, parameter or function of the document, a built-in function's overloads
-// in the document's GLSL ES version, or what a harness (ShaderToy) provides; nothing
-// elsewhere.
-std::optional<std::string> HoverText(const std::filesystem::path& path, const std::string& text,
-                                     uint32_t offset);
+// Hover text (Markdown) for byte `offset`: the declared type of a variable, parameter
+// or function (of the document or its Common), a built-in function's overloads in the
+// code's GLSL ES version, what a harness (ShaderToy) provides, or else the type of
+// the innermost expression there; nothing elsewhere.
+std::optional<std::string> HoverText(const ProjectCode& code, uint32_t offset);
 
-// CompletionItem[] for the document: its own functions, structs and variables (each
-// name once), the built-in functions and variables of its GLSL ES version and stage,
-// and what shadertoy.com provides when the document is a ShaderToy pass. The client
-// filters by what is typed.
-nlohmann::json CompletionItems(const std::filesystem::path& path, const std::string& text);
+// CompletionItem[] at byte `offset`: the names in scope there (locals and parameters
+// declared before it, globals, Common's globals for a pass), the built-in functions
+// and variables of the code's GLSL ES version and stage, and what shadertoy.com
+// provides for a ShaderToy pass. The client filters by what is typed.
+nlohmann::json CompletionItems(const ProjectCode& code, uint32_t offset);
 
 }  // namespace shaderport::driver::lsp
