@@ -68,54 +68,65 @@ TEST(LspSession, AnswersEveryRequestOnceAndKnowsItsErrors) {
   EXPECT_EQ(session.ExitCode(), 1);  // exit without shutdown
 }
 
-// With deferred checks a burst of changes is checked once, as its last version, and
-// a request first publishes what is pending.
-TEST(LspSession, DeferredChecksRunOnceForTheLastVersion) {
+// With checks left to the caller (LspServer), a burst of changes is one job for its
+// last version, and a job whose document changed while it ran publishes nothing.
+TEST(LspSession, CallerChecksTakeTheLastVersionAndDropStaleResults) {
   LspSession session({"test", {}, true});
   session.Handle({{"jsonrpc", "2.0"}, {"id", 1}, {"method", "initialize"}});
-  const nlohmann::json open = {
-      {"jsonrpc", "2.0"},
-      {"method", "textDocument/didOpen"},
-      {"params",
-       {{"textDocument",
-         {{"uri", "file:///tmp/deferred.frag"}, {"version", 1}, {"text", "void main() {}\n"}}}}}};
-  EXPECT_TRUE(session.Handle(open).empty());
-  for (int version = 2; version <= 4; ++version) {
-    EXPECT_TRUE(session
-                    .Handle({{"jsonrpc", "2.0"},
-                             {"method", "textDocument/didChange"},
-                             {"params",
-                              {{"textDocument",
-                                {{"uri", "file:///tmp/deferred.frag"}, {"version", version}}},
-                               {"contentChanges", {{{"text", "void main() { x; }\n"}}}}}}})
-                    .empty());
-  }
+  const std::string uri = "file:///tmp/deferred.frag";
+  const auto change = [&](int version, const char* text) {
+    return session.Handle({{"jsonrpc", "2.0"},
+                           {"method", "textDocument/didChange"},
+                           {"params",
+                            {{"textDocument", {{"uri", uri}, {"version", version}}},
+                             {"contentChanges", {{{"text", text}}}}}}});
+  };
+  EXPECT_TRUE(session
+                  .Handle({{"jsonrpc", "2.0"},
+                           {"method", "textDocument/didOpen"},
+                           {"params",
+                            {{"textDocument",
+                              {{"uri", uri}, {"version", 1}, {"text", "void main() {}\n"}}}}}})
+                  .empty());
+  for (int version = 2; version <= 4; ++version)
+    EXPECT_TRUE(change(version, "void main() { x; }\n").empty());
+  std::optional<CheckJob> job = session.TakeCheck();
+  ASSERT_TRUE(job.has_value());
+  EXPECT_EQ(job->text, "void main() { x; }\n");
+  EXPECT_FALSE(session.TakeCheck().has_value());
   // The first check also tells what the verdict is against (window/logMessage).
-  const auto flushed = session.Flush();
-  ASSERT_EQ(flushed.size(), 2u);
-  EXPECT_EQ(flushed[0]["method"], "window/logMessage");
-  EXPECT_EQ(flushed[0]["params"]["message"],
+  const auto published = session.Completed(*job, job->Run({}));
+  ASSERT_EQ(published.size(), 3u);
+  EXPECT_EQ(published[0]["method"], "window/logMessage");
+  EXPECT_EQ(published[0]["params"]["message"],
             "deferred.frag is checked as a webgl1 fragment shader, target webgl1");
-  EXPECT_EQ(flushed[1]["params"]["version"], 4);
-  EXPECT_FALSE(flushed[1]["params"]["diagnostics"].empty());
-  EXPECT_TRUE(session.Flush().empty());
-  session.Handle({{"jsonrpc", "2.0"},
-                  {"method", "textDocument/didChange"},
-                  {"params",
-                   {{"textDocument", {{"uri", "file:///tmp/deferred.frag"}, {"version", 5}}},
-                    {"contentChanges", {{{"text", "void main() {}\n"}}}}}}});
-  const auto answered = session.Handle({{"jsonrpc", "2.0"},
-                                        {"id", 2},
-                                        {"method", "textDocument/codeAction"},
-                                        {"params",
-                                         {{"textDocument", {{"uri", "file:///tmp/deferred.frag"}}},
-                                          {"range",
-                                           {{"start", {{"line", 0}, {"character", 0}}},
-                                            {"end", {{"line", 0}, {"character", 1}}}}}}}});
-  ASSERT_EQ(answered.size(), 2u);
-  EXPECT_EQ(answered[0]["method"], "textDocument/publishDiagnostics");
-  EXPECT_EQ(answered[0]["params"]["version"], 5);
-  EXPECT_EQ(answered[1]["id"], 2);
+  EXPECT_EQ(published[1]["method"], "shaderport/status");
+  EXPECT_EQ(published[1]["params"]["target"], "webgl1");
+  EXPECT_TRUE(published[1]["params"]["fails"].get<bool>());
+  EXPECT_EQ(published[2]["params"]["version"], 4);
+  EXPECT_FALSE(published[2]["params"]["diagnostics"].empty());
+
+  change(5, "void main() {}\n");
+  std::optional<CheckJob> stale = session.TakeCheck();
+  ASSERT_TRUE(stale.has_value());
+  change(6, "void main() { y; }\n");
+  EXPECT_TRUE(session.Completed(*stale, stale->Run({})).empty());
+  std::optional<CheckJob> fresh = session.TakeCheck();
+  ASSERT_TRUE(fresh.has_value());
+  EXPECT_EQ(fresh->text, "void main() { y; }\n");
+
+  // Code actions are the caller's too: the session hands out what they need.
+  const LspSession::CodeActionRequest request =
+      session.TakeCodeActionRequest({{"jsonrpc", "2.0"},
+                                     {"id", 2},
+                                     {"method", "textDocument/codeAction"},
+                                     {"params",
+                                      {{"textDocument", {{"uri", uri}}},
+                                       {"range",
+                                        {{"start", {{"line", 0}, {"character", 0}}},
+                                         {"end", {{"line", 0}, {"character", 1}}}}}}}});
+  ASSERT_TRUE(request.input.has_value());
+  EXPECT_EQ(request.input->text, "void main() { y; }\n");
 }
 
 }  // namespace
