@@ -379,6 +379,10 @@ def main():
     if (status["target"], status["harness"], status["channels"], status["failOn"], status["fails"]) != \
             ("webgl2", "shadertoy", ["2d", "2d", "2d", "2d"], "error", True):
         fail("status on open: %r" % status)
+    # iGlobalTime, a name the site renamed: deprecated code (tag 2).
+    deprecated = [d for d in published["diagnostics"] if d.get("tags") == [2]]
+    if not deprecated or deprecated[0]["range"]["start"] != {"line": 2, "character": 14}:
+        fail("iGlobalTime is not tagged deprecated: %r" % published["diagnostics"])
     first = published["diagnostics"][0]
     if not first["codeDescription"]["href"].startswith("https://") or first["source"] != "shaderport":
         fail("diagnostic fields: %r" % first)

@@ -9,6 +9,7 @@
 #include "driver/port/port_file.h"
 #include "driver/read_input.h"
 #include "report/docs_links.h"
+#include "rules/shadertoy/builtin_dialects.h"
 
 namespace shaderport::driver::lsp {
 namespace {
@@ -54,6 +55,15 @@ class DocumentPositions {
   const std::string& text_;
   uint32_t shift_;
 };
+
+// An old name the harness renamed (ShaderToy's iGlobalTime, now iTime): editors
+// strike it through as deprecated code.
+bool IsRenamedHarnessName(const std::string& harness, std::string_view text) {
+  const rule::HarnessDialect* dialect = rules::FindBuiltinDialect(harness);
+  if (dialect == nullptr || text.empty()) return false;
+  return std::any_of(dialect->renames.begin(), dialect->renames.end(),
+                     [&](const auto& rename) { return rename.first == text; });
+}
 
 Json WholeFileRange() { return {{"start", ToJson({0, 0})}, {"end", ToJson({0, 0})}}; }
 
@@ -148,6 +158,12 @@ DocumentCheck CheckDocument(const std::filesystem::path& path, std::string_view 
       }
       // Editors fade unnecessary code: a suppression comment that silences nothing.
       if (d.rule_id == "suppression/unused") out["tags"] = Json::array({1});
+      if (d.range.Valid() && d.range.end <= sources.Get(d.range.file).Text().size() &&
+          IsRenamedHarnessName(
+              report.harness,
+              sources.Get(d.range.file).Text().substr(d.range.begin, d.range.Size()))) {
+        out["tags"] = Json::array({2});
+      }
       out["data"] = {{"fixable", IsFixable(d)}};
       findings.push_back(std::move(finding));
     }
