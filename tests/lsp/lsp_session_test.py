@@ -530,6 +530,19 @@ def main():
     client.send("textDocument/didClose", {"textDocument": {"uri": uri(webgl1)}}, request=False)
     client.diagnostics_for(uri(webgl1))
 
+    # A 20 MB document: check's input limit applies; navigation does not read it.
+    huge = os.path.join(SCRATCH, "huge.glsl")
+    client.send("textDocument/didOpen", {"textDocument": {
+        "uri": uri(huge), "languageId": "glsl", "version": 1, "text": "// x\n" * (4 << 20)}},
+        request=False)
+    if client.request("textDocument/hover", {"textDocument": {"uri": uri(huge)},
+                                             "position": {"line": 3, "character": 1}})["result"] is not None:
+        fail("hover in a 20 MB document")
+    if [d["code"] for d in client.diagnostics_for(uri(huge))["diagnostics"]] != ["input/too-large"]:
+        fail("a 20 MB document is not input/too-large")
+    client.send("textDocument/didClose", {"textDocument": {"uri": uri(huge)}}, request=False)
+    client.diagnostics_for(uri(huge))
+
     # Robustness: not JSON, an unknown method, a notification it does not know.
     client.send_raw(b"{not json")
     if client.response_to(None).get("error", {}).get("code") != -32700:

@@ -132,6 +132,8 @@ Json CodeUnit::LocationOf(const SourceRange& range) const {
 ProjectCode ProjectCode::Of(const fs::path& path, const std::string& uri, const std::string& text,
                             const OpenTextLookup& open_text) {
   ProjectCode code;
+  // As check, which reports such a file as input/too-large without reading its code.
+  if (text.size() > limits::kMaxFileBytes) return code;
   auto shown = std::make_shared<const std::string>(text);
   if (IsProjectDocument(path)) {
     AddJsonPasses(path, uri, shown, code);
