@@ -35,6 +35,14 @@ class Client:
                 length = int(line.split(b":")[1])
         return json.loads(self.process.stdout.read(length))
 
+    def published(self, version):
+        """Reads until the diagnostics of `version` (status and log messages come too)."""
+        while True:
+            message = self.receive()
+            if message.get("method") == "textDocument/publishDiagnostics" and \
+                    message["params"].get("version") == version:
+                return message
+
 
 def shader(lines_wanted):
     """A valid ShaderToy pass of about `lines_wanted` lines: distance functions in the
@@ -62,7 +70,7 @@ def measure(client, name, text, rounds):
     uri = "file:///tmp/bench-%s.glsl" % name
     client.send({"jsonrpc": "2.0", "method": "textDocument/didOpen", "params": {"textDocument": {
         "uri": uri, "languageId": "glsl", "version": 1, "text": text}}})
-    client.receive()
+    client.published(1)
     times = []
     last = text.count("\n") - 1
     for version in range(2, rounds + 2):
@@ -71,7 +79,7 @@ def measure(client, name, text, rounds):
         start = time.perf_counter()
         client.send({"jsonrpc": "2.0", "method": "textDocument/didChange", "params": {
             "textDocument": {"uri": uri, "version": version}, "contentChanges": [edit]}})
-        client.receive()
+        client.published(version)
         times.append((time.perf_counter() - start) * 1000)
     times.sort()
     p95 = times[min(len(times) - 1, int(len(times) * 0.95))]
