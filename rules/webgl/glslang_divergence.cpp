@@ -110,6 +110,38 @@ bool AlignGlobalInitializer(const BrowserContext& context, Diagnostic& diagnosti
   return true;
 }
 
+// `float[4];` in GLSL ES 3.00: a declaration of an array type that declares no name
+// is an empty declaration to browsers (as `float;`); glslang wants a name. Its size
+// is still checked by both (glslang's own errors stay), and with no size at all
+// browsers reject it too ("empty array declaration needs to specify a size").
+bool AlignNamelessArrayDeclaration(const BrowserContext& context, Diagnostic& diagnostic) {
+  if (context.version < 300 ||
+      diagnostic.message.find("expect an array name") == std::string::npos) {
+    return false;
+  }
+  const uint32_t line = LineOf(context, diagnostic.range.begin);
+  bool nameless_sized_array = false;
+  glsl::ForEachNodeOf(
+      *context.tree, {glsl::NodeKind::kVariableDeclaration}, [&](const glsl::Node& node) {
+        const auto& declaration = *node.As<glsl::VariableDeclaration>();
+        if (declaration.type == nullptr || declaration.type->array.empty() ||
+            node.range.file != context.file->Id() || LineOf(context, node.range.begin) != line) {
+          return;
+        }
+        const bool sized = std::all_of(
+            declaration.type->array.begin(), declaration.type->array.end(),
+            [](const glsl::ArrayDimension& dimension) { return dimension.size != nullptr; });
+        const bool nameless =
+            declaration.declarators.empty() || declaration.declarators.front()->name.Empty();
+        nameless_sized_array = nameless_sized_array || (sized && nameless);
+      });
+  if (!nameless_sized_array) return false;
+  Demote(diagnostic, Severity::kNote,
+         "not an error in browsers: in GLSL ES 3.00 a declaration of an array type with no "
+         "name declares nothing, as 'float;' does; glslang asks for a name");
+  return true;
+}
+
 // `const` initialisers and array sizes that are constant expressions glslang cannot
 // fold (`vec4(0.5).x`, `matrixCompMult(m, m)`, `(2, 3)`): browsers fold them.
 bool AlignConstantExpression(const BrowserContext& context, Diagnostic& diagnostic) {
@@ -631,6 +663,7 @@ void AlignWithBrowser(const BrowserContext& context, Diagnostic& diagnostic) {
   if (!InFile(context, diagnostic) || context.tree == nullptr) return;
   if (AlignContinuedComment(context, diagnostic)) return;
   if (AlignLenientMessages(context, diagnostic)) return;
+  if (AlignNamelessArrayDeclaration(context, diagnostic)) return;
   if (context.model == nullptr) return;
   if (AlignGlobalInitializer(context, diagnostic)) return;
   AlignConstantExpression(context, diagnostic);
