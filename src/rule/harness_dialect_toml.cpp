@@ -293,6 +293,8 @@ class DialectParser {
         } else if (precision) {
           Error(value.source(), "'precision' must be lowp, mediump or highp");
         }
+      } else if (key == "description") {
+        if (auto description = String(key, value)) variable.description = std::move(*description);
       } else if (key == "channel") {
         const auto* number = value.as_integer();
         if (number == nullptr || number->get() < 0 || number->get() > 3) {

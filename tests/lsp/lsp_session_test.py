@@ -433,8 +433,22 @@ def main():
         fail("hover on t: %r" % hover(4, 25))
     if "vec4 vec4" in hover(4, 18) or "fragColor" not in hover(4, 6):
         fail("hover on fragColor: %r" % hover(4, 6))
-    if "uniform vec3 iResolution" not in hover_on(client, toy, "iResolution"):
-        fail("hover on iResolution")
+    if "uniform vec3 iResolution" not in hover_on(client, toy, "iResolution") or \
+            "viewport size in pixels" not in hover_on(client, toy, "iResolution"):
+        fail("hover on iResolution: %r" % hover_on(client, toy, "iResolution"))
+    # A channel is shown with the sampler type the check gave it (a cube map here).
+    cube = os.path.join(SCRATCH, "cube.glsl")
+    cube_text = ("void mainImage(out vec4 o, in vec2 p) {\n"
+                 "    o = texture(iChannel1, normalize(vec3(p, 1.0)));\n}\n")
+    client.send("textDocument/didOpen", {"textDocument": {
+        "uri": uri(cube), "languageId": "glsl", "version": 1, "text": cube_text}}, request=False)
+    client.diagnostics_for(uri(cube))
+    channel = client.request("textDocument/hover", {"textDocument": {"uri": uri(cube)},
+                                                    "position": position_of(cube_text, "iChannel1", 2)})
+    if "uniform samplerCube iChannel1" not in (channel["result"] or {}).get("contents", {}).get("value", ""):
+        fail("hover on a cube-map channel: %r" % channel)
+    client.send("textDocument/didClose", {"textDocument": {"uri": uri(cube)}}, request=False)
+    client.diagnostics_for(uri(cube))
 
     # References of t: its declaration (asked for) and its one use.
     references = client.request("textDocument/references", {

@@ -304,7 +304,7 @@ Json LspSession::Navigate(const std::string& method, const Json& params) const {
     return ReferenceLocations(code, offset, with_declaration);
   }
   if (method == "textDocument/hover") {
-    const std::optional<std::string> hover = HoverText(code, offset);
+    const std::optional<std::string> hover = HoverText(code, offset, document.channels);
     if (!hover) return nullptr;
     return Json{{"contents", {{"kind", "markdown"}, {"value", *hover}}}};
   }
@@ -395,6 +395,7 @@ void LspSession::Publish(const std::string& uri, Document& document, DocumentChe
        {"method", "textDocument/publishDiagnostics"},
        {"params", {{"uri", uri}, {"version", document.version}, {"diagnostics", diagnostics}}}});
   document.published = std::move(checked.findings);
+  document.channels = std::move(checked.channels);
 }
 
 std::optional<CodeActionInput> LspSession::CodeActionInputFor(const Json& params) const {

@@ -93,7 +93,8 @@ class LspSession {
     int64_t version = 0;
     uint64_t revision = 0;  // the session's count of changes when this one came
     std::vector<DocumentFinding> published;
-    std::string decision;  // last told to the client (window/logMessage)
+    std::string decision;               // last told to the client (window/logMessage)
+    std::vector<std::string> channels;  // iChannel0..3's sampler types as last checked
     // The last render-on-save result: shown instead of a plain check of the same revision.
     std::optional<uint64_t> rendered_revision;
   };

@@ -348,7 +348,8 @@ std::optional<std::string> ExpressionHover(const CodeUnit& unit, uint32_t at) {
 
 }  // namespace
 
-std::optional<std::string> HoverText(const ProjectCode& code, uint32_t offset) {
+std::optional<std::string> HoverText(const ProjectCode& code, uint32_t offset,
+                                     const std::vector<std::string>& channel_kinds) {
   const auto at = code.At(offset);
   if (!at || !Analysed(*at->first)) return std::nullopt;
   const CodeUnit& unit = *at->first;
@@ -366,8 +367,18 @@ std::optional<std::string> HoverText(const ProjectCode& code, uint32_t offset) {
   // What the ShaderToy site provides (declared by the site, not in the document).
   if (const rule::HarnessDialect* site = rules::FindBuiltinDialect("shadertoy")) {
     if (const rule::ProvidedVariable* provided = site->FindProvided(name)) {
-      return "```glsl\nuniform " + provided->type + " " + provided->name +
-             "\n```\nProvided by shadertoy.com (declared by the site before the pass).";
+      std::string type = provided->type;
+      std::string checked_as;
+      if (provided->channel >= 0 && static_cast<size_t>(provided->channel) < channel_kinds.size()) {
+        const std::string& kind = channel_kinds[provided->channel];
+        type = kind == "cube" ? "samplerCube" : kind == "3d" ? "sampler3D" : "sampler2D";
+        checked_as = "\n\nChecked as a " + type + " (the sampler type check gave this channel).";
+      }
+      std::string hover =
+          "```glsl\nuniform " + type + " " + provided->name +
+          "\n```\nProvided by shadertoy.com (declared by the site before the pass).";
+      if (!provided->description.empty()) hover += "\n\n" + provided->description;
+      return hover + checked_as;
     }
   }
   if (std::string builtin = BuiltinHover(model, name); !builtin.empty()) return builtin;

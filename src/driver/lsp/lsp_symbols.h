@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "driver/lsp/lsp_project.h"
 
@@ -28,9 +29,12 @@ nlohmann::json ReferenceLocations(const ProjectCode& code, uint32_t offset, bool
 
 // Hover text (Markdown) for byte `offset`: the declared type of a variable, parameter
 // or function (of the document or its Common), a built-in function's overloads in the
-// code's GLSL ES version, what a harness (ShaderToy) provides, or else the type of
-// the innermost expression there; nothing elsewhere.
-std::optional<std::string> HoverText(const ProjectCode& code, uint32_t offset);
+// code's GLSL ES version, what a harness (ShaderToy) provides and what the site feeds
+// it, or else the type of
+// the innermost expression there; nothing elsewhere. A ShaderToy channel is shown
+// with the sampler type of `channel_kinds` (iChannel0..3 as last checked: "2d").
+std::optional<std::string> HoverText(const ProjectCode& code, uint32_t offset,
+                                     const std::vector<std::string>& channel_kinds = {});
 
 // CompletionItem[] at byte `offset`: the names in scope there (locals and parameters
 // declared before it, globals, Common's globals for a pass), the built-in functions
