@@ -39,6 +39,7 @@ const rule::Rule& WebglForbiddenOperatorRule();  // webgl/forbidden-operator
 const rule::Rule& WebglFragmentOutputLocationsRule();  // webgl/fragment-output-locations
 const rule::Rule& WebglFragDataAndColorRule();  // webgl/frag-data-and-color
 const rule::Rule& WebglFunctionAsValueRule();  // webgl/function-as-value
+const rule::Rule& WebglGlslangOnlyBuiltinRule();  // webgl/glslang-only-builtin
 const rule::Rule& WebglIndexExpressionRule();  // webgl/index-expression
 const rule::Rule& WebglInterpolationQualifierRule();  // webgl/interpolation-qualifier
 const rule::Rule& WebglInvariantRule();  // webgl/invariant

@@ -39,6 +39,7 @@ std::vector<const rule::Rule*> BuildRegistry() {
       &WebglFragmentOutputLocationsRule(),  // webgl/fragment-output-locations
       &WebglFragDataAndColorRule(),  // webgl/frag-data-and-color
       &WebglFunctionAsValueRule(),  // webgl/function-as-value
+      &WebglGlslangOnlyBuiltinRule(),  // webgl/glslang-only-builtin
       &WebglIndexExpressionRule(),  // webgl/index-expression
       &WebglInterpolationQualifierRule(),  // webgl/interpolation-qualifier
       &WebglInvariantRule(),  // webgl/invariant

@@ -14,6 +14,7 @@
 #include "glsl/sema/builtins.h"
 #include "glsl/syntax/visit.h"
 #include "rules/webgl/constant_expression.h"
+#include "rules/webgl/glslang_only_functions.h"
 #include "rules/webgl/webgl_support.h"
 
 namespace shaderport::rules {
@@ -27,20 +28,19 @@ uint32_t LineOf(const BrowserContext& context, uint32_t offset) {
   return context.file->LocationOf(offset).line;
 }
 
-// The declarator with an initializer or array size on the diagnostic's line.
-const glsl::Declarator* DeclaratorOnLine(const BrowserContext& context,
-                                         const Diagnostic& diagnostic, bool& global) {
+// The declarators on the diagnostic's line (glslang places a declaration's error at
+// the start of the line's first statement, so any of them may be the one it means).
+std::vector<const glsl::Declarator*> DeclaratorsOnLine(const BrowserContext& context,
+                                                       const Diagnostic& diagnostic) {
   const uint32_t line = LineOf(context, diagnostic.range.begin);
-  const glsl::Declarator* found = nullptr;
-  glsl::VisitPreorder(*context.tree, [&](const glsl::Node& node, uint32_t depth) {
-    if (found != nullptr) return false;
+  std::vector<const glsl::Declarator*> found;
+  glsl::VisitPreorder(*context.tree, [&](const glsl::Node& node, uint32_t) {
     const auto* declarator = node.As<glsl::Declarator>();
     if (declarator == nullptr || declarator->range.file != context.file->Id())
       return !node.IsExpr();
     if (LineOf(context, declarator->range.begin) <= line &&
         line <= LineOf(context, declarator->range.end)) {
-      found = declarator;
-      global = depth <= 2;  // translation unit > declaration > declarator
+      found.push_back(declarator);
     }
     return false;
   });
@@ -151,27 +151,31 @@ bool AlignConstantExpression(const BrowserContext& context, Diagnostic& diagnost
   const bool array_size =
       diagnostic.message.find("array size must be a constant") != std::string::npos;
   if (!initializer && !array_size) return false;
-  bool global = false;
-  const glsl::Declarator* declarator = DeclaratorOnLine(context, diagnostic, global);
-  if (declarator == nullptr) return false;
   const webgl::ConstantRules rules{context.version, nullptr};
-  bool constant = true;
-  if (initializer) {
-    // The value must also have the declared type: `const vec4 c = (0.0, 1.0);` is a
-    // float, which browsers reject ("dimension mismatch").
-    constant = declarator->initializer != nullptr && IsConstDeclarator(context, *declarator) &&
-               webgl::IsConstantExpression(*context.model, *declarator->initializer, rules) &&
-               InitializerFitsDeclaration(context, *declarator);
-  } else {
-    // A size must be an integer too: `float a[3.5e38];` is constant, and browsers
-    // reject it as glslang does.
-    for (const glsl::ArrayDimension& dimension : declarator->array) {
-      constant = constant && dimension.size != nullptr &&
-                 context.model->TypeOf(dimension.size->id).IsScalar() &&
-                 context.model->TypeOf(dimension.size->id).IsIntegral() &&
-                 webgl::IsConstantExpression(*context.model, *dimension.size, rules);
+  // Every declaration on the line that glslang could mean must be one browsers fold.
+  bool constant = false;
+  for (const glsl::Declarator* declarator : DeclaratorsOnLine(context, diagnostic)) {
+    if (initializer) {
+      if (declarator->initializer == nullptr || !IsConstDeclarator(context, *declarator)) continue;
+      // The value must also have the declared type: `const vec4 c = (0.0, 1.0);` is a
+      // float, which browsers reject ("dimension mismatch").
+      if (!webgl::IsConstantExpression(*context.model, *declarator->initializer, rules) ||
+          !InitializerFitsDeclaration(context, *declarator)) {
+        return false;
+      }
+    } else {
+      if (declarator->array.empty()) continue;
+      // A size must be an integer too: `float a[3.5e38];` is constant, and browsers
+      // reject it as glslang does.
+      for (const glsl::ArrayDimension& dimension : declarator->array) {
+        if (dimension.size == nullptr || !context.model->TypeOf(dimension.size->id).IsScalar() ||
+            !context.model->TypeOf(dimension.size->id).IsIntegral() ||
+            !webgl::IsConstantExpression(*context.model, *dimension.size, rules)) {
+          return false;
+        }
+      }
     }
-    constant = constant && !declarator->array.empty();
+    constant = true;
   }
   if (!constant) return false;
   Demote(diagnostic, Severity::kNote,
@@ -271,6 +275,11 @@ bool AlignContinuedComment(const BrowserContext& context, Diagnostic& diagnostic
 constexpr std::array<std::string_view, 6> kEs3DeclarableBuiltins = {
     "mix", "texelFetch", "texture", "textureGrad", "textureLod", "textureSize"};
 
+// A name glslang has as a built-in function here and browsers do not.
+bool GlslangOnlyFunctionName(const BrowserContext& context, std::string_view name) {
+  return webgl::IsGlslangOnlyFunction(name, context.version, context.preprocessed);
+}
+
 bool SameParameters(const glsl::BuiltinFunction& builtin, const glsl::Symbol& function) {
   if (builtin.params.size() != function.parameters.size()) return false;
   for (size_t i = 0; i < builtin.params.size(); ++i) {
@@ -281,8 +290,10 @@ bool SameParameters(const glsl::BuiltinFunction& builtin, const glsl::Symbol& fu
 
 // A user function with a built-in's name that the browser accepts: in GLSL ES 1.00 an
 // overload with parameters no built-in of that name has (the same ones redefine it, an
-// error); in GLSL ES 3.00 a name that is no built-in in this stage or is listed above.
+// error); in GLSL ES 3.00 a name that is no built-in in this stage or is listed above;
+// in both, a name only glslang has.
 bool BrowserAcceptsName(const BrowserContext& context, const glsl::Symbol& function) {
+  if (GlslangOnlyFunctionName(context, function.name)) return true;
   const glsl::ShaderStage stage =
       context.vertex ? glsl::ShaderStage::kVertex : glsl::ShaderStage::kFragment;
   const int version = context.version >= 300 ? 300 : 100;
@@ -327,7 +338,8 @@ void RenameDeclarableBuiltins(const BrowserContext& context, FileId part, std::s
     // GLSL ES 3.00 globals named like a built-in function (`const int max = 4;`) hide it
     // in browsers; glslang calls them a redefinition.
     const bool global = symbol.kind == glsl::SymbolKind::kVariable && symbol.scope == 0 &&
-                        context.version >= 300 && glsl::IsBuiltinFunctionName(symbol.name);
+                        ((context.version >= 300 && glsl::IsBuiltinFunctionName(symbol.name)) ||
+                         GlslangOnlyFunctionName(context, symbol.name));
     if (!function && !global) continue;
     std::string alias;
     for (const auto& [other, taken] : aliases) {
