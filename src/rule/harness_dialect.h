@@ -29,7 +29,7 @@ struct ProvidedVariable {
   ProvidedStorage storage = ProvidedStorage::kUniform;
   std::string precision;    // "", "lowp", "mediump" or "highp"
   int channel = -1;         // 0..3 for a texture channel whose sampler type the port chooses
-  std::string description;  // what the host feeds it, for people (editor hover)
+  std::string description{};  // what the host feeds it, for people (editor hover)
 };
 
 // One function the user writes instead of main(), and the main() that calls it.

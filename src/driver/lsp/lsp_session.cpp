@@ -204,6 +204,7 @@ Json LspSession::Dispatch(const std::string& method, const Json& params, std::ve
     std::erase(dirty_, uri);
     std::erase(saved_, uri);
     if (documents_.erase(uri) > 0) {
+      ++revisions_;  // its project's other documents now read it from disk
       out.push_back({{"jsonrpc", "2.0"},
                      {"method", "textDocument/publishDiagnostics"},
                      {"params", {{"uri", uri}, {"diagnostics", Json::array()}}}});
@@ -290,7 +291,14 @@ Json LspSession::Navigate(const std::string& method, const Json& params) const {
     }
     return std::nullopt;
   };
-  const ProjectCode code = ProjectCode::Of(document.path, uri, document.text, open_text);
+  // Analysed once per state of the open documents: a cursor moving over unchanged
+  // text asks again and again (files that are not open are read when this is built).
+  if (document.navigation == nullptr || document.navigation_revision != revisions_) {
+    document.navigation = std::make_shared<const ProjectCode>(
+        ProjectCode::Of(document.path, uri, document.text, open_text));
+    document.navigation_revision = revisions_;
+  }
+  const ProjectCode& code = *document.navigation;
   if (method == "textDocument/documentSymbol") return DocumentSymbols(code);
   const std::optional<Position> position = PositionFromJson(Member(params, "position"));
   if (!position) throw BadParams{"position is not a position"};

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -18,6 +19,7 @@
 #include "diag/diagnostic.h"
 #include "driver/dialect.h"
 #include "driver/lsp/lsp_check.h"
+#include "driver/lsp/lsp_project.h"
 
 namespace shaderport::driver::lsp {
 
@@ -95,6 +97,10 @@ class LspSession {
     std::vector<DocumentFinding> published;
     std::string decision;               // last told to the client (window/logMessage)
     std::vector<std::string> channels;  // iChannel0..3's sampler types as last checked
+    // Navigation's analysis of the document and its project, and the session's
+    // revision it was made at (any change of an open document makes it stale).
+    mutable std::shared_ptr<const ProjectCode> navigation;
+    mutable uint64_t navigation_revision = 0;
     // The last render-on-save result: shown instead of a plain check of the same revision.
     std::optional<uint64_t> rendered_revision;
   };
