@@ -537,11 +537,72 @@ void EmptyInactiveLines(const BrowserContext& context, FileId part, std::string&
 // not expanded again in browsers, where glslang counts the inner call's arguments
 // against the macro. Only uses written in `part` itself, outside other macros, and
 // only when our front end found no error there.
+// A function-like macro that names itself in its body (`#define normalize(x)
+// normalize(x + 1e-6)`), defined and used only in `part` (a use inside another macro's
+// arguments or body included, where its name is spelled) and named by no other
+// directive there: the macro and its uses get a same-length alias, so that glslang,
+// like a browser, reads the name in the body as the function it is (a built-in or the
+// shader's own) and never as the macro again. Returns the macros renamed.
+std::set<std::string> RenameSelfNamingMacros(const BrowserContext& context, FileId part,
+                                             std::string_view original, std::string& text) {
+  const glsl::PreprocessResult& pp = *context.preprocessed;
+  // Function-like macros of `part` whose body names the macro itself.
+  std::set<std::string> self_naming;
+  for (const glsl::MacroUse& use : pp.macro_uses) {
+    const SourceRange& at = use.definition;
+    if (at.file != part || at.end >= original.size() || original[at.end] != '(' ||
+        self_naming.contains(use.name)) {
+      continue;
+    }
+    size_t end = at.end;
+    while (end < original.size() && original[end] != '\n') {
+      end += (original[end] == '\\' && end + 1 < original.size()) ? 2 : 1;
+    }
+    const size_t body = original.find(')', at.end);
+    if (body == std::string_view::npos || body >= end) continue;
+    const std::regex names_itself("\\b" + use.name + "\\b");
+    const std::string text_of_body(original.substr(body + 1, end - body - 1));
+    if (std::regex_search(text_of_body, names_itself)) self_naming.insert(use.name);
+  }
+  std::set<std::string> renamed;
+  for (const std::string& name : self_naming) {
+    bool movable = true;
+    std::vector<SourceRange> names;  // the definition's and every use's name
+    for (const glsl::MacroUse& use : pp.macro_uses) {
+      if (use.name != name) continue;
+      movable = movable && use.use.file == part && use.definition.file == part &&
+                use.use.begin + name.size() <= original.size() &&
+                original.substr(use.use.begin, name.size()) == name;
+      names.push_back(
+          {use.use.file, use.use.begin, use.use.begin + static_cast<uint32_t>(name.size())});
+      names.push_back(use.definition);
+    }
+    // `#ifdef NAME`, `#undef NAME`, `defined(NAME)`: they would lose the macro.
+    const std::regex other_directive("^[ \\t]*#[ \\t]*(?!define)[a-z]+\\b.*\\b" + name + "\\b",
+                                     std::regex::multiline);
+    const std::string whole(original);
+    if (!movable || std::regex_search(whole, other_directive)) continue;
+    const std::string alias = SameLengthAlias(whole, name);
+    if (alias.empty()) continue;
+    std::set<uint32_t> done;
+    for (const SourceRange& range : names) {
+      if (range.file != part || range.end > text.size() || !done.insert(range.begin).second ||
+          text.compare(range.begin, name.size(), name) != 0) {
+        continue;
+      }
+      text.replace(range.begin, alias.size(), alias);
+    }
+    renamed.insert(name);
+  }
+  return renamed;
+}
+
 void ExpandMacroUses(const BrowserContext& context, FileId part, std::string_view original,
                      std::string& text) {
   if (context.preprocessed == nullptr || context.tree == nullptr || context.front_end_errors) {
     return;
   }
+  const std::set<std::string> renamed = RenameSelfNamingMacros(context, part, original, text);
   static const std::regex kEmptyUse(R"(^[A-Za-z_][A-Za-z0-9_]*[ \t]*\([ \t]*\)$)");
   const glsl::PreprocessResult& pp = *context.preprocessed;
   struct Replacement {
@@ -556,7 +617,8 @@ void ExpandMacroUses(const BrowserContext& context, FileId part, std::string_vie
       continue;
     }
     const std::string spelled(original.substr(use.use.begin, use.use.end - use.use.begin));
-    if (spelled.find('\n') != std::string::npos || spelled.find('(') == std::string::npos) {
+    if (spelled.find('\n') != std::string::npos || spelled.find('(') == std::string::npos ||
+        renamed.contains(use.name)) {
       continue;
     }
     Replacement replacement{use.use, {}, {}};
