@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <regex>
 #include <set>
 #include <string>
@@ -603,7 +604,10 @@ void ExpandMacroUses(const BrowserContext& context, FileId part, std::string_vie
     return;
   }
   const std::set<std::string> renamed = RenameSelfNamingMacros(context, part, original, text);
+  // `F()`, and any use with an empty argument (`M(h, 2, )`): glslang also trips on the
+  // empty argument once the macro's body passes it on to another macro.
   static const std::regex kEmptyUse(R"(^[A-Za-z_][A-Za-z0-9_]*[ \t]*\([ \t]*\)$)");
+  static const std::regex kEmptyArgument(R"(\([ \t]*,|,[ \t]*,|,[ \t]*\))");
   const glsl::PreprocessResult& pp = *context.preprocessed;
   struct Replacement {
     SourceRange range;
@@ -629,7 +633,10 @@ void ExpandMacroUses(const BrowserContext& context, FileId part, std::string_vie
         if (token.text == use.name) replacement.self = use.name;
       }
     }
-    if (replacement.self.empty() && !std::regex_match(spelled, kEmptyUse)) continue;
+    if (replacement.self.empty() && !std::regex_match(spelled, kEmptyUse) &&
+        !std::regex_search(spelled, kEmptyArgument)) {
+      continue;
+    }
     if (!replacement.self.empty() && !aliases.contains(use.name)) {
       aliases[use.name] = SameLengthAlias(std::string(original), use.name);
     }
@@ -661,6 +668,135 @@ void ExpandMacroUses(const BrowserContext& context, FileId part, std::string_vie
     text.replace(replacement.range.begin, replacement.range.end - replacement.range.begin,
                  expansion);
   }
+}
+
+// Lines of `text` (offsets of their starts), and which are inside a block comment.
+struct TextLines {
+  std::vector<size_t> starts;
+  std::vector<bool> in_comment;  // the line starts inside a /* */ comment
+};
+
+TextLines LinesOf(const std::string& text) {
+  TextLines lines{{0}, {false}};
+  bool block = false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    if (!block && text.compare(i, 2, "//") == 0) {
+      while (i + 1 < text.size() && text[i + 1] != '\n') ++i;
+    } else if (!block && text.compare(i, 2, "/*") == 0) {
+      block = true;
+      ++i;
+    } else if (block && text.compare(i, 2, "*/") == 0) {
+      block = false;
+      ++i;
+    } else if (text[i] == '\n') {
+      lines.starts.push_back(i + 1);
+      lines.in_comment.push_back(block);
+    }
+  }
+  return lines;
+}
+
+// `F()` in the body of a `#define`, F a one-parameter macro of this part: browsers pass
+// one empty argument, glslang counts none ("Too few args in Macro F"). Such uses become
+// `F(E)`, E a macro defined empty on a blank (or comment) line before the first of them (glslang
+// expands an argument before substituting it, so F's body gets nothing, as in
+// browsers); line numbers stay.
+void PassEmptyArgumentsInMacroBodies(const BrowserContext& context, FileId part,
+                                     std::string_view original, std::string& text) {
+  if (context.preprocessed == nullptr || context.front_end_errors ||
+      text.find("()") == std::string::npos) {
+    return;
+  }
+  static const std::regex kOneParameterDefine(
+      R"(^[ \t]*#[ \t]*define[ \t]+([A-Za-z_][A-Za-z0-9_]*)\([ \t]*[A-Za-z_][A-Za-z0-9_]*[ \t]*\)(.*)$)");
+  const TextLines lines = LinesOf(text);
+  const auto line_text = [&](size_t line) {
+    const size_t begin = lines.starts[line];
+    const size_t end = line + 1 < lines.starts.size() ? lines.starts[line + 1] - 1 : text.size();
+    return text.substr(begin, end - begin);
+  };
+  const auto continued = [&](size_t line) {
+    std::string body = line_text(line);
+    while (!body.empty() && (body.back() == '\r' || body.back() == ' ')) body.pop_back();
+    return !body.empty() && body.back() == '\\';
+  };
+  // One-parameter macros whose body pastes no tokens, and the lines of #define bodies.
+  std::set<std::string> one_parameter;
+  std::vector<bool> define_body(lines.starts.size(), false);
+  for (size_t line = 0; line < lines.starts.size(); ++line) {
+    const std::string first = line_text(line);
+    if (lines.in_comment[line] || first.find("#") == std::string::npos) continue;
+    std::smatch match;
+    const bool define = std::regex_match(first, match, kOneParameterDefine);
+    static const std::regex kDefine(R"(^[ \t]*#[ \t]*define\b.*$)");
+    if (!define && !std::regex_match(first, kDefine)) continue;
+    std::string body = define ? match[2].str() : first;
+    size_t last = line;
+    define_body[line] = true;
+    while (continued(last) && last + 1 < lines.starts.size()) {
+      ++last;
+      define_body[last] = true;
+      body += line_text(last);
+    }
+    if (define && body.find("##") == std::string::npos) one_parameter.insert(match[1].str());
+    line = last;
+  }
+  if (one_parameter.empty()) return;
+  static const std::regex kEmptyCall(R"(\b([A-Za-z_][A-Za-z0-9_]*)[ \t]*\([ \t]*\))");
+  std::vector<size_t> with_empty_calls;
+  for (size_t line = 0; line < lines.starts.size(); ++line) {
+    if (!define_body[line]) continue;
+    const std::string body = line_text(line);
+    for (auto it = std::sregex_iterator(body.begin(), body.end(), kEmptyCall);
+         it != std::sregex_iterator(); ++it) {
+      if (one_parameter.contains((*it)[1].str())) {
+        with_empty_calls.push_back(line);
+        break;
+      }
+    }
+  }
+  if (with_empty_calls.empty()) return;
+  // A blank line before them, outside comments, skipped groups and continued lines.
+  const TextLines original_lines = LinesOf(std::string(original));
+  const auto skipped = [&](size_t line) {
+    if (line >= original_lines.starts.size()) return true;
+    const size_t at = original_lines.starts[line];
+    return std::any_of(context.preprocessed->inactive_regions.begin(),
+                       context.preprocessed->inactive_regions.end(), [&](const SourceRange& r) {
+                         return r.file == part && r.begin <= at && at < r.end;
+                       });
+  };
+  // A line holding only a `//` comment does too (glslang does not need the comment).
+  std::optional<size_t> blank;
+  for (size_t line = 0; line < with_empty_calls.front(); ++line) {
+    const std::string content = line_text(line);
+    const size_t first = content.find_first_not_of(" \t\r");
+    const bool free = first == std::string::npos || content.compare(first, 2, "//") == 0;
+    if (free && !lines.in_comment[line] && (line == 0 || !continued(line - 1)) && !skipped(line) &&
+        content.find('\\') == std::string::npos) {
+      blank = line;
+    }
+  }
+  std::string empty = "SPE";
+  for (int n = 0; text.find(empty) != std::string::npos; ++n) empty = "SPE" + std::to_string(n);
+  if (!blank) return;
+  // From the last line, so that earlier line starts stay valid.
+  for (auto line = with_empty_calls.rbegin(); line != with_empty_calls.rend(); ++line) {
+    const std::string body = line_text(*line);
+    std::string rewritten;
+    size_t copied = 0;
+    for (auto it = std::sregex_iterator(body.begin(), body.end(), kEmptyCall);
+         it != std::sregex_iterator(); ++it) {
+      if (!one_parameter.contains((*it)[1].str())) continue;
+      rewritten +=
+          body.substr(copied, it->position(0) - copied) + (*it)[1].str() + "(" + empty + ")";
+      copied = it->position(0) + it->length(0);
+    }
+    rewritten += body.substr(copied);
+    text.replace(lines.starts[*line], body.size(), rewritten);
+  }
+  const std::string definition = "#define " + empty;
+  text.replace(lines.starts[*blank], line_text(*blank).size(), definition);
 }
 
 // A backslash at the end of a line continues it in browsers whatever the GLSL ES
@@ -752,6 +888,7 @@ std::string TextForGlslang(const BrowserContext& context, const SourceFile& part
   HideUnofferedExtensions(context, part.Id(), text);
   EmptyInactiveLines(context, part.Id(), text);
   ExpandMacroUses(context, part.Id(), part.Text(), text);
+  PassEmptyArgumentsInMacroBodies(context, part.Id(), part.Text(), text);
   text = RepairDefines(JoinContinuedLines(context, text));
   return text == part.Text() ? std::string() : text;
 }
