@@ -243,32 +243,6 @@ bool AlignCrash(const BrowserContext& context, Diagnostic& diagnostic) {
   return true;
 }
 
-// A `//` comment ending in a backslash continues on the next line (GLSL ES 3.00
-// section 3.2 joins lines before comments are removed), as browsers do; glslang
-// compiles the continued text as code.
-bool AlignContinuedComment(const BrowserContext& context, Diagnostic& diagnostic) {
-  if (diagnostic.rule_id != "glslang/syntax-error" || context.lexed == nullptr ||
-      context.front_end_errors) {
-    return false;
-  }
-  const std::string_view text = context.file->Text();
-  for (const glsl::Trivia& trivia : context.lexed->trivia) {
-    if (trivia.kind != glsl::TriviaKind::kLineComment) continue;
-    const std::string_view comment = text.substr(trivia.begin, trivia.end - trivia.begin);
-    const bool continued = comment.find("\\\n") != std::string_view::npos ||
-                           comment.find("\\\r") != std::string_view::npos ||
-                           (trivia.end < text.size() && text[trivia.end] == '\\');
-    if (!continued) continue;
-    Demote(diagnostic, Severity::kNote,
-           "not an error in browsers: a '//' comment on line " +
-               std::to_string(LineOf(context, trivia.begin)) +
-               " ends in a backslash, which continues the comment on the next line (GLSL ES "
-               "3.00 section 3.2); glslang compiles that next line as code");
-    return true;
-  }
-  return false;
-}
-
 // Names of GLSL ES 3.00 built-ins that browsers still let a shader declare as its own
 // function: ANGLE counts a name as a built-in only when none of its overloads needs an
 // extension the shader did not enable (OES_EGL_image_external_essl3, EXT_YUV_target and
@@ -799,6 +773,45 @@ void PassEmptyArgumentsInMacroBodies(const BrowserContext& context, FileId part,
   text.replace(lines.starts[*blank], line_text(*blank).size(), definition);
 }
 
+// A `//` comment whose line ends in a backslash continues on the next line in
+// browsers (GLSL ES 3.00 section 3.2 joins lines before comments are removed); glslang
+// ends the comment at the line break and compiles the next line as code, where it may
+// stop at a syntax error that hides the shader's real ones. The backslash and the
+// continued text become spaces, on the same lines.
+void BlankContinuedLineComments(std::string& text) {
+  bool block = false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    if (block) {
+      if (text.compare(i, 2, "*/") == 0) block = false, ++i;
+      continue;
+    }
+    if (text.compare(i, 2, "/*") == 0) {
+      block = true;
+      ++i;
+      continue;
+    }
+    if (text.compare(i, 2, "//") != 0) continue;
+    // To the end of the comment: line breaks after a backslash do not end it.
+    size_t end = i;
+    bool continued = false;
+    while (end < text.size() && text[end] != '\n') {
+      if (text[end] == '\\') {
+        size_t next = end + 1;
+        if (next < text.size() && text[next] == '\r') ++next;
+        if (next < text.size() && text[next] == '\n') {
+          continued = true;
+          text[end] = ' ';
+          end = next + 1;
+          continue;
+        }
+      }
+      if (continued) text[end] = text[end] == '\r' ? '\r' : ' ';
+      ++end;
+    }
+    i = end;
+  }
+}
+
 // A backslash at the end of a line continues it in browsers whatever the GLSL ES
 // version; glslang allows that in GLSL ES 3.00 only. In GLSL ES 1.00 code each
 // continued line is joined onto its first line and the line breaks follow it, so that
@@ -871,7 +884,6 @@ void AlignWithBrowser(const BrowserContext& context, Diagnostic& diagnostic) {
   if (diagnostic.severity != Severity::kError) return;
   if (AlignCrash(context, diagnostic)) return;
   if (!InFile(context, diagnostic) || context.tree == nullptr) return;
-  if (AlignContinuedComment(context, diagnostic)) return;
   if (AlignLenientMessages(context, diagnostic)) return;
   if (AlignNamelessArrayDeclaration(context, diagnostic)) return;
   if (context.model == nullptr) return;
@@ -886,6 +898,7 @@ std::string TextForGlslang(const BrowserContext& context, const SourceFile& part
   RenameGlslangOnlyKeywords(context, text);
   ReplaceFileMacro(text);
   HideUnofferedExtensions(context, part.Id(), text);
+  BlankContinuedLineComments(text);
   EmptyInactiveLines(context, part.Id(), text);
   ExpandMacroUses(context, part.Id(), part.Text(), text);
   PassEmptyArgumentsInMacroBodies(context, part.Id(), part.Text(), text);
