@@ -8,7 +8,10 @@ repair the finding; "fix all" equal to `shaderport fix`; errors for a malformed
 message, an unknown method and a request before initialize; a clean exit after
 shutdown and exit 1 when the client goes away.
 
-  lsp_session_test.py SHADERPORT SOURCE_DIR SCRATCH_DIR
+  lsp_session_test.py SHADERPORT SOURCE_DIR SCRATCH_DIR [SHARED_DIR]
+
+With SHARED_DIR, the same equality is proven for every pass of the shared ShaderToy
+shaders (SHARED_DIR/corpus-shadertoy/permissive.jsonl), projects as folders.
 """
 import json
 import os
@@ -17,6 +20,7 @@ import subprocess
 import sys
 
 BINARY, SOURCE, SCRATCH = (os.path.abspath(a) for a in sys.argv[1:4])
+SHARED = os.path.abspath(sys.argv[4]) if len(sys.argv) > 4 else None
 REPAIRABLE = ("void mainImage(out vec4 fragColor, in vec2 fragCoord)\n{\n"
               "    float t = iGlobalTime * 1;\n    vec3 c = 0.5;\n"
               "    fragColor = vec4(c * t, 1.0);\n}\n")
@@ -349,6 +353,65 @@ def project_navigation(client):
     print("lsp: definition, references, hover and completion across a project's tabs")
 
 
+def shared_passes(client):
+    """Every shared ShaderToy pass: the server's diagnostics equal check's (one `check
+    --format json` over all of them). A single-pass shader is a file; a project is a
+    folder with a file per tab (common.glsl beside the passes), as an editor opens it."""
+    corpus = os.path.join(SHARED or "", "corpus-shadertoy", "permissive.jsonl")
+    if not SHARED or not os.path.exists(corpus):
+        return 0
+    folder = os.path.join(SCRATCH, "shared")
+    shutil.rmtree(folder, ignore_errors=True)
+    os.makedirs(folder)
+    texts = {}
+    with open(corpus) as f:
+        records = [json.loads(line) for line in f if line.strip()]
+    for record in records:
+        passes = record["passes"]
+        for one in passes:
+            if len(passes) == 1:
+                path = os.path.join(folder, record["id"] + ".glsl")
+            else:
+                os.makedirs(os.path.join(folder, record["id"]), exist_ok=True)
+                name = (one.get("name") or one["type"]).lower().replace(" ", "-")
+                path = os.path.join(folder, record["id"], name + ".glsl")
+            with open(path, "w", newline="") as out:
+                out.write(one["code"])
+            texts[path] = one["code"]
+    done = subprocess.run([BINARY, "check", "--format", "json", "--no-cache", "-j", "2", folder],
+                          capture_output=True, text=True, cwd=SCRATCH)
+    expected = {}
+    for entry in json.loads(done.stdout)["files"]:
+        path = os.path.abspath(os.path.join(SCRATCH, entry["path"]))
+        for d in entry["diagnostics"]:
+            location = d["location"]
+            if location and os.path.abspath(os.path.join(SCRATCH, location["path"])) != path:
+                continue
+            r = location["range"] if location else None
+            rng = ((r["start"]["line"] - 1, r["start"]["column"] - 1),
+                   (r["end"]["line"] - 1, r["end"]["column"] - 1)) if r else ((0, 0), (0, 0))
+            expected.setdefault(path, []).append(
+                (d["rule"], {"error": 1, "warning": 2, "note": 3}[d["severity"]], rng))
+    for path, text in sorted(texts.items()):
+        client.send("textDocument/didOpen", {"textDocument": {
+            "uri": uri(path), "languageId": "glsl", "version": 1, "text": text}}, request=False)
+        got = published_of(client.diagnostics_for(uri(path)))
+        # Columns count UTF-16 units in the server and bytes in check: compare lines
+        # only on lines with other than ASCII text.
+        def comparable(items):
+            lines = text.split("\n")
+            out = []
+            for rule, severity, ((l0, c0), (l1, c1)) in items:
+                ascii_only = all(ord(ch) < 128 for ch in "".join(lines[l0:l1 + 1]))
+                out.append((rule, severity, ((l0, c0), (l1, c1)) if ascii_only else ((l0, -1), (l1, -1))))
+            return sorted(out)
+        if comparable(got) != comparable(expected.get(path, [])):
+            fail("%s:\nserver %r\ncheck  %r" % (path, got, sorted(expected.get(path, []))))
+        client.send("textDocument/didClose", {"textDocument": {"uri": uri(path)}}, request=False)
+        client.diagnostics_for(uri(path))
+    return len(texts)
+
+
 def main():
     shutil.rmtree(SCRATCH, ignore_errors=True)
     os.makedirs(SCRATCH)
@@ -519,6 +582,9 @@ def main():
             compared += 1
     if compared < 20:
         fail("only %d corpus files" % compared)
+    shared = shared_passes(client)
+    if SHARED and shared < 900:
+        fail("only %d shared ShaderToy passes" % shared)
 
     # Settings: shaderport.target makes every document checked for that context.
     webgl1 = os.path.join(SCRATCH, "derivative.frag")
@@ -575,8 +641,9 @@ def main():
     gone.process.stdin.close()
     if gone.process.wait(timeout=30) != 1:
         fail("a client that goes away: exit is not 1")
-    print("lsp: handshake, diagnostics equal check's on %d corpus files, quick fix, fix all, "
-          "incremental and full changes, errors, shutdown" % compared)
+    print("lsp: handshake, diagnostics equal check's on %d corpus files and %d shared ShaderToy "
+          "passes, quick fix, fix all, incremental and full changes, errors, shutdown"
+          % (compared, shared))
 
 
 main()
