@@ -67,7 +67,7 @@ void BM_GlslangValidation(benchmark::State& state) {
                                                     {}, nullptr, file);
       } else {
         request.parts.push_back({file.Name(), file.Text(), file.Id(), validate::PartKind::kUser});
-        request.stage = driver::ToValidateStage(corpus.kind.stage);
+        request.stage = corpus.kind.stage;
       }
       benchmark::DoNotOptimize(validate::ValidateWithGlslang(request));
     }

@@ -251,8 +251,7 @@ bool SameParameters(const glsl::BuiltinFunction& builtin, const glsl::Symbol& fu
 // overload with parameters no built-in of that name has (the same ones redefine it, an
 // error); in GLSL ES 3.00 a name that is no built-in in this stage or is listed above.
 bool BrowserAcceptsName(const BrowserContext& context, const glsl::Symbol& function) {
-  const glsl::ShaderStage stage =
-      context.vertex ? glsl::ShaderStage::kVertex : glsl::ShaderStage::kFragment;
+  const model::Stage stage = context.vertex ? model::Stage::kVertex : model::Stage::kFragment;
   const int version = context.version >= 300 ? 300 : 100;
   bool builtin_here = false;
   for (const glsl::BuiltinFunction* builtin : glsl::BuiltinOverloadList(function.name)) {

@@ -21,7 +21,7 @@ inline bool IsEssl100(const rule::RuleContext& context) {
   return context.Settings().source_version < 300;
 }
 inline bool IsFragment(const rule::RuleContext& context) {
-  return context.Settings().stage == rule::ShaderStage::kFragment;
+  return context.Settings().stage == model::Stage::kFragment;
 }
 
 // Reports an error of `rule_id` at `range` with an optional note.

@@ -21,8 +21,8 @@ namespace shaderport::driver {
 
 struct CheckOptions {
   std::vector<std::filesystem::path> paths;
-  std::optional<Dialect> dialect;  // --dialect: overrides detection and config
-  std::optional<Stage> stage;      // --stage
+  std::optional<Dialect> dialect;     // --dialect: overrides detection and config
+  std::optional<model::Stage> stage;  // --stage
   std::optional<Target> target;
   // --link VS FS: programs to link; when empty, vertex and fragment files with the
   // same stem in the same directory are linked.

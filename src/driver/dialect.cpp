@@ -20,18 +20,10 @@ std::string_view DialectName(Dialect dialect) {
   return "webgl1";
 }
 
-std::string_view StageName(Stage stage) { return stage == Stage::kVertex ? "vertex" : "fragment"; }
-
 std::optional<Dialect> ParseDialect(std::string_view name) {
   if (name == "shadertoy") return Dialect::kShaderToy;
   if (name == "webgl1") return Dialect::kWebGL1;
   if (name == "webgl2") return Dialect::kWebGL2;
-  return std::nullopt;
-}
-
-std::optional<Stage> ParseStage(std::string_view name) {
-  if (name == "vertex" || name == "vert") return Stage::kVertex;
-  if (name == "fragment" || name == "frag") return Stage::kFragment;
   return std::nullopt;
 }
 
@@ -47,10 +39,12 @@ std::optional<Target> ParseTarget(std::string_view name) {
 
 namespace {
 
-std::optional<Stage> StageFromExtension(const std::filesystem::path& path) {
+std::optional<model::Stage> StageFromExtension(const std::filesystem::path& path) {
   const std::string extension = path.extension().string();
-  if (extension == ".vert" || extension == ".vs" || extension == ".vsh") return Stage::kVertex;
-  if (extension == ".frag" || extension == ".fs" || extension == ".fsh") return Stage::kFragment;
+  if (extension == ".vert" || extension == ".vs" || extension == ".vsh")
+    return model::Stage::kVertex;
+  if (extension == ".frag" || extension == ".fs" || extension == ".fsh")
+    return model::Stage::kFragment;
   return std::nullopt;
 }
 
@@ -137,7 +131,7 @@ DetectedKind DetectKind(const glsl::LexedFile& lexed, const std::filesystem::pat
     kind.stage_because = "the file name's extension";
   } else if (kind.dialect != Dialect::kShaderToy &&
              (facts.writes_gl_position || facts.uses_attribute)) {
-    kind.stage = Stage::kVertex;
+    kind.stage = model::Stage::kVertex;
     kind.stage_because = facts.writes_gl_position ? "writes gl_Position" : "declares an attribute";
   } else if (kind.dialect == Dialect::kShaderToy) {
     kind.stage_because = "ShaderToy passes are fragment shaders";

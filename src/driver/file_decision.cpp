@@ -120,7 +120,7 @@ FileDecision DecideFromTokens(const glsl::LexedFile& lexed, const std::filesyste
   }
   if (given.pass) {
     decision.kind.dialect = Dialect::kShaderToy;
-    decision.kind.stage = Stage::kFragment;
+    decision.kind.stage = model::Stage::kFragment;
     decision.kind.pass = *given.pass;
     dialect_because = stage_because = "a tab of a ShaderToy project";
   }
@@ -214,7 +214,7 @@ validate::ValidationRequest ComposeForGlslang(const FileDecision& decision, cons
       request.parts.push_back({name, header.Text(), header.Id(), validate::PartKind::kGenerated});
     }
     request.parts.push_back({file.Name(), file.Text(), file.Id(), validate::PartKind::kUser});
-    request.stage = ToValidateStage(decision.kind.stage);
+    request.stage = decision.kind.stage;
     request.default_version = 100;  // no #version means GLSL ES 1.00, as in WebGL
     return request;
   }

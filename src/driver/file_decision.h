@@ -25,7 +25,7 @@ namespace shaderport::driver {
 // What the user said about a file; unset parts are decided from the code.
 struct DecisionGiven {
   std::optional<Dialect> dialect;
-  std::optional<Stage> stage;
+  std::optional<model::Stage> stage;
   std::optional<ShaderToyPass> pass;
   std::optional<Target> target;
   const rule::HarnessDialect* harness = nullptr;  // --dialect NAME|FILE.toml naming a harness

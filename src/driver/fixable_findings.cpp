@@ -50,8 +50,7 @@ bool FixOffersAnEdit(const SourceFile& file, const FrontEndResult& front,
   const PortOptions options = FixOptionsFor(decision);
   rule::PortSettings settings;
   settings.mode = rule::PortMode::kFix;
-  settings.stage = decision.kind.stage == Stage::kVertex ? rule::ShaderStage::kVertex
-                                                         : rule::ShaderStage::kFragment;
+  settings.stage = decision.kind.stage;
   settings.harness = decision.harness;
   settings.source_version = decision.kind.dialect == Dialect::kWebGL1 ? 100 : 300;
   settings.buffer_pass = decision.kind.pass == ShaderToyPass::kBuffer;

@@ -88,8 +88,7 @@ FrontEndResult RunFrontEnd(const SourceFile& file, glsl::LexedFile lexed, const 
   if (!options.analyze) return result;
   glsl::AnalyzeOptions analyze;
   analyze.version = forced_version != 0 ? forced_version : result.preprocessed.version.number;
-  analyze.stage =
-      kind.stage == Stage::kVertex ? glsl::ShaderStage::kVertex : glsl::ShaderStage::kFragment;
+  analyze.stage = kind.stage;
   if (shadertoy) {
     result.header = ShaderToyHeaderTree(options.channels, sources);
     analyze.header = &result.header->tree;

@@ -27,10 +27,6 @@ inline validate::PassType ToPassType(ShaderToyPass pass) {
   return validate::PassType::kImage;
 }
 
-inline validate::Stage ToValidateStage(Stage stage) {
-  return stage == Stage::kVertex ? validate::Stage::kVertex : validate::Stage::kFragment;
-}
-
 // "2d", "cube", "3d": as --channel and explain-file spell a channel's sampler type.
 inline std::string_view ChannelTypeName(validate::ChannelType type) {
   switch (type) {

@@ -30,7 +30,7 @@ rules::BrowserContext ToBrowserContext(const FrontEndResult& front,
   rules::BrowserContext context;
   context.webgl2 = settings.target == Target::kWebGL2;
   context.version = VersionOf(front, settings);
-  context.vertex = settings.stage == Stage::kVertex;
+  context.vertex = settings.stage == model::Stage::kVertex;
   context.file = nullptr;
   context.lexed = &front.lexed;
   context.tree = &front.parsed.tree;
@@ -51,8 +51,7 @@ DiagnosticList RunWebglChecks(const SourceFile& file, const FrontEndResult& fron
   if (!front.model) return found;
   rule::PortSettings port_settings;
   port_settings.mode = rule::PortMode::kFix;
-  port_settings.stage =
-      settings.stage == Stage::kVertex ? rule::ShaderStage::kVertex : rule::ShaderStage::kFragment;
+  port_settings.stage = settings.stage;
   port_settings.source_version = VersionOf(front, settings);
   port_settings.written_version =
       front.preprocessed.version.present ? front.preprocessed.version.number : 0;

@@ -11,6 +11,7 @@
 #include "glsl/lex/preprocessor.h"
 #include "glsl/sema/semantic_model.h"
 #include "glsl/syntax/ast.h"
+#include "model/stage.h"
 #include "rule/harness_dialect.h"
 #include "rule/macro_fixes.h"
 #include "source/source_file.h"
@@ -22,8 +23,6 @@ enum class PortMode {
   kPort,  // produce WebGL2 GLSL ES 3.00 with a real main()
 };
 
-enum class ShaderStage { kVertex, kFragment };
-
 // The WebGL context a shader will run in, apart from the GLSL ES version its
 // #version line picks: a WebGL2 context also compiles GLSL ES 1.00 code.
 enum class WebglTarget { kWebGL1, kWebGL2 };
@@ -34,7 +33,7 @@ enum class ChannelKind { kAuto, k2D, kCube, k3D };
 
 struct PortSettings {
   PortMode mode = PortMode::kPort;
-  ShaderStage stage = ShaderStage::kFragment;
+  model::Stage stage = model::Stage::kFragment;
   // The harness the code was written for: ShaderToy, glslsandbox, ..., or none
   // (plain WebGL1/WebGL2 code).
   const HarnessDialect* harness = nullptr;

@@ -160,7 +160,7 @@ ValidationRequest ComposeShaderToyRequest(SourceManager& sources, PassType type,
                                           const ChannelTypes& channels, const SourceFile* common,
                                           const SourceFile& pass) {
   ValidationRequest request;
-  request.stage = Stage::kFragment;
+  request.stage = model::Stage::kFragment;
   request.default_version = 300;
   request.link = true;
   request.entry_point = std::string(EntryPointName(type));

@@ -20,7 +20,7 @@ size_t ValidationErrors(std::string_view text, const driver::DetectedKind& kind,
     if (is_common) request.link = false;
   } else {
     request.parts.push_back({file.Name(), file.Text(), file.Id()});
-    request.stage = driver::ToValidateStage(kind.stage);
+    request.stage = kind.stage;
     request.default_version = 100;
   }
   const DiagnosticList diagnostics = validate::ValidateWithGlslang(request).diagnostics;

@@ -110,7 +110,7 @@ bool ApplyPortArguments(const PortArguments& arguments, driver::PortOptions& opt
     }
   }
   if (!arguments.stage.empty()) {
-    options.stage = driver::ParseStage(arguments.stage);
+    options.stage = model::ParseStage(arguments.stage);
     if (!options.stage) {
       PrintError(UnknownName("--stage", arguments.stage, kStageNames));
       return false;
@@ -176,7 +176,7 @@ bool ResolveKindOptions(const KindArguments& arguments, SourceManager& sources,
   if (!ResolveDialectOption(arguments.dialect, sources, options.dialect, harness)) return false;
   if (harness && !options.dialect) options.harness = &*harness;
   if (!arguments.stage.empty()) {
-    options.stage = driver::ParseStage(arguments.stage);
+    options.stage = model::ParseStage(arguments.stage);
     if (!options.stage) {
       PrintError(UnknownName("--stage", arguments.stage, kStageNames));
       return false;

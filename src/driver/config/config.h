@@ -40,7 +40,7 @@ struct RuleSetting {
 struct FileOverride {
   std::string glob;
   std::optional<Dialect> dialect;
-  std::optional<Stage> stage;
+  std::optional<model::Stage> stage;
   std::optional<Target> target;
 };
 
@@ -84,7 +84,7 @@ bool IsIncluded(const Config& config, const std::filesystem::path& file);
 
 struct FileSettings {
   std::optional<Dialect> dialect;
-  std::optional<Stage> stage;
+  std::optional<model::Stage> stage;
   std::optional<Target> target;
 };
 // Every [[files]] entry whose glob matches, later entries overriding earlier ones.

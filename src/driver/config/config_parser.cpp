@@ -201,7 +201,7 @@ class ConfigParser {
         }
         ok = ok && entry.dialect.has_value();
       } else if (name == "stage") {
-        if (text && !(entry.stage = ParseStage(*text))) {
+        if (text && !(entry.stage = model::ParseStage(*text))) {
           BadValue(value, "'" + *text + "' is not a stage; use vertex or fragment");
         }
         ok = ok && entry.stage.has_value();

@@ -33,7 +33,7 @@ RenderFileResult RenderPortResult(const PortResult& result, const RenderFileOpti
   RenderFileResult rendered;
   rendered.file = result.file;
   rendered.dialect = "webgl2";
-  rendered.stage = result.output_stage == Stage::kVertex ? "vertex" : "fragment";
+  rendered.stage = result.output_stage == model::Stage::kVertex ? "vertex" : "fragment";
   if (result.file == nullptr || result.read_failed) return rendered;
 
   RenderFileOptions local = options;
@@ -43,7 +43,7 @@ RenderFileResult RenderPortResult(const PortResult& result, const RenderFileOpti
   PreparedShader shader;
   shader.anchor = SourceRange{result.file->Id(), 0, 0};
   shader.user = result.file;
-  if (result.output_stage == Stage::kVertex) {
+  if (result.output_stage == model::Stage::kVertex) {
     shader.vertex_text = result.text;
   } else {
     shader.fragment_text = result.text;
@@ -63,10 +63,10 @@ RenderFileResult RenderPortResult(const PortResult& result, const RenderFileOpti
   };
   auto lines = std::make_shared<LineMap>(
       LineMap{SourceFile(kNoFile, "<ported>", result.text), result.map, result.file->Id()});
-  const render::ShaderStage user_stage = result.output_stage == Stage::kVertex
-                                             ? render::ShaderStage::kVertex
-                                             : render::ShaderStage::kFragment;
-  shader.map_line = [lines, user_stage](render::ShaderStage stage,
+  const model::Stage user_stage = result.output_stage == model::Stage::kVertex
+                                      ? model::Stage::kVertex
+                                      : model::Stage::kFragment;
+  shader.map_line = [lines, user_stage](model::Stage stage,
                                         uint32_t line) -> std::optional<SourceRange> {
     if (stage != user_stage) return std::nullopt;  // the generated vertex shader
     if (line == 0 || line > lines->ported.LineCount()) return std::nullopt;

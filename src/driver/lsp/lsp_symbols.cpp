@@ -36,8 +36,7 @@ Analysed Analyse(const std::filesystem::path& path, const std::string& text) {
   const DetectedKind kind = DetectKind(body, path);
   out.file = std::make_unique<SourceFile>(0, path.string(), std::move(body));
   const int version = kind.dialect == Dialect::kWebGL1 ? 100 : 300;
-  const rule::ShaderStage stage =
-      kind.stage == Stage::kVertex ? rule::ShaderStage::kVertex : rule::ShaderStage::kFragment;
+  const model::Stage stage = kind.stage;
   out.shader = rule::AnalyzePlain(*out.file, version, stage);
   return out;
 }
@@ -264,7 +263,7 @@ Json CompletionItems(const std::filesystem::path& path, const std::string& text)
   };
   const glsl::SemanticModel* model = analysed.shader.model;
   const int version = model != nullptr ? model->version : 300;
-  const glsl::ShaderStage stage = model != nullptr ? model->stage : glsl::ShaderStage::kFragment;
+  const model::Stage stage = model != nullptr ? model->stage : model::Stage::kFragment;
   if (model != nullptr) {
     for (const glsl::Symbol& symbol : model->symbols) {
       if (symbol.predeclared || symbol.declaration == glsl::kNoNode) continue;

@@ -63,8 +63,7 @@ class Porter {
     rules_ = options.rules;
     if (rules_.empty()) rules_ = rules::RulesForMode(options.mode);
     settings_.mode = options.mode;
-    settings_.stage =
-        kind_.stage == Stage::kVertex ? rule::ShaderStage::kVertex : rule::ShaderStage::kFragment;
+    settings_.stage = kind_.stage;
     settings_.harness = decision_.harness;
     settings_.source_version = kind_.dialect == Dialect::kWebGL1 ? 100 : 300;
     settings_.buffer_pass = kind_.pass == ShaderToyPass::kBuffer;
@@ -168,7 +167,7 @@ class Porter {
       request = ComposeForGlslang(decision_, current, common_, sources_);
     } else {
       request.parts.push_back({file_.Name(), current.Text(), file_.Id()});
-      request.stage = ToValidateStage(kind_.stage);
+      request.stage = kind_.stage;
       request.default_version = 100;
     }
     return validate::ValidateWithGlslang(request).diagnostics;

@@ -21,7 +21,7 @@ namespace shaderport::driver {
 struct PortOptions {
   rule::PortMode mode = rule::PortMode::kPort;
   std::optional<Dialect> dialect;  // forced; else detected from the code
-  std::optional<Stage> stage;
+  std::optional<model::Stage> stage;
   // The ShaderToy tab the code is (from a project); implies the ShaderToy dialect.
   std::optional<ShaderToyPass> pass;
   const rule::HarnessDialect* harness = nullptr;  // --dialect FILE
@@ -38,7 +38,7 @@ struct PortResult {
   SourceMap map;                     // text -> original
   DetectedKind kind;                 // how the original was read (decision.kind)
   FileDecision decision;             // what the original is (file_decision.h)
-  Stage output_stage = Stage::kFragment;
+  model::Stage output_stage = model::Stage::kFragment;
   DiagnosticList diagnostics;  // what remains, located in the original
   DiagnosticList fixed;        // findings whose fixes were applied
   int rounds = 0;

@@ -189,21 +189,18 @@ void RenderSource(const SourceFile& file, const DetectedKind& kind,
     composed->Append(validate::ShaderToyEpilogue(*pass), nullptr);
     shader.fragment_text = composed->Text();
     shader.main_sets_alpha = *pass == validate::PassType::kImage;
-    shader.map_line = [composed](render::ShaderStage, uint32_t line) {
-      return composed->MapLine(line);
-    };
+    shader.map_line = [composed](model::Stage, uint32_t line) { return composed->MapLine(line); };
   } else if (kind.dialect == Dialect::kWebGL2) {
     auto composed = std::make_shared<ComposedText>();
     composed->Append(file.Text(), &file);
-    (kind.stage == Stage::kVertex ? shader.vertex_text : shader.fragment_text) = composed->Text();
+    (kind.stage == model::Stage::kVertex ? shader.vertex_text : shader.fragment_text) =
+        composed->Text();
     // A fragment shader with inputs gets a vertex shader that writes them.
-    if (kind.stage == Stage::kFragment) {
+    if (kind.stage == model::Stage::kFragment) {
       shader.vertex_text = FeederVertexShader(file.Text());
       shader.fullscreen_vertex = true;
     }
-    shader.map_line = [composed](render::ShaderStage, uint32_t line) {
-      return composed->MapLine(line);
-    };
+    shader.map_line = [composed](model::Stage, uint32_t line) { return composed->MapLine(line); };
   } else {
     // WebGL1 code is drawn as `port` turns it into WebGL2; findings in the
     // ported text point into a synthetic "<file> (ported)" file, as that is

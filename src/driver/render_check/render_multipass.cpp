@@ -198,7 +198,7 @@ RenderFileResult RenderShaderToyJson(std::string_view name, std::string_view jso
   prepared.anchor = SourceRange{code->Id(), 0, 0};
   prepared.user = code;
   // An init-capture: clang before 16 cannot capture a structured binding by name.
-  prepared.map_line = [text = composed](render::ShaderStage, uint32_t line) {
+  prepared.map_line = [text = composed](model::Stage, uint32_t line) {
     return text->MapLine(line);
   };
   prepared.map_buffer_line = [buffer_texts](int pass, uint32_t line) -> std::optional<SourceRange> {

@@ -140,7 +140,7 @@ PortOptions OptionsFor(const Pass& pass, rule::PortMode mode) {
   PortOptions options;
   options.mode = mode;
   options.dialect = Dialect::kShaderToy;
-  options.stage = Stage::kFragment;
+  options.stage = model::Stage::kFragment;
   for (size_t i = 0; i < 4; ++i) options.channels[i] = ToChannelKind(pass.channels[i]);
   return options;
 }
@@ -150,7 +150,7 @@ std::string ValidateOutput(const std::string& text, SourceManager& sources) {
   const SourceFile& output = sources.Add("ported.frag", text);
   validate::ValidationRequest request;
   request.parts.push_back({output.Name(), output.Text(), output.Id()});
-  request.stage = validate::Stage::kFragment;
+  request.stage = model::Stage::kFragment;
   request.default_version = 100;
   request.link = true;
   const validate::ValidationResult result = validate::ValidateWithGlslang(request);

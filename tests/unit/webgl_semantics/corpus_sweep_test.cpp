@@ -39,7 +39,7 @@ TEST(BrowserSemanticsSweep, CorpusStillCompilesAfterTheTransforms) {
       const std::string text = validate::ShaderToyHeader(*type, {}) + common +
                                pass["code"].get<std::string>() + "\n" +
                                validate::ShaderToyEpilogue(*type);
-      if (!testing::CompileWithGlslang(text, ShaderStage::kFragment).ok) continue;
+      if (!testing::CompileWithGlslang(text, model::Stage::kFragment).ok) continue;
       ++compiled;
       SourceManager sources;
       const SourceFile& file = sources.Add(record["id"].get<std::string>(), text);
@@ -51,7 +51,7 @@ TEST(BrowserSemanticsSweep, CorpusStillCompilesAfterTheTransforms) {
       EXPECT_EQ(std::count(edited.begin(), edited.end(), '\n'),
                 std::count(text.begin(), text.end(), '\n'))
           << file.Name();
-      const auto again = testing::CompileWithGlslang(edited, ShaderStage::kFragment);
+      const auto again = testing::CompileWithGlslang(edited, model::Stage::kFragment);
       EXPECT_TRUE(again.ok) << file.Name() << "\n" << again.log;
     }
   }
