@@ -17,7 +17,6 @@
 #include "driver/render_check/render_file.h"
 #include "driver/render_check/render_multipass.h"
 #include "driver/suppress/suppressions.h"
-#include "driver/validate_kinds.h"
 #include "driver/webgl_checks.h"
 #include "validate/glslang_validator.h"
 #include "validate/shadertoy_contract.h"
@@ -54,7 +53,7 @@ DecisionGiven GivenFor(const FileJob& job, const CheckOptions& options) {
   for (size_t i = 0; i < given.channels.size(); ++i) {
     if (job.channels) {
       given.channels[i] = (*job.channels)[i];
-    } else if (options.channels_given[i]) {
+    } else if (options.channels[i]) {
       given.channels[i] = options.channels[i];
     }
   }
@@ -74,7 +73,7 @@ FrontEndOptions FrontEndOptionsFor(const FileDecision& decision) {
   front_options.analyze = true;
   front_options.channels = decision.channels;
   // WebGL 2 contexts allow 1024-character names in GLSL ES 1.00 code too.
-  front_options.max_identifier_length = decision.target == Target::kWebGL2 ? 1024 : 256;
+  front_options.max_identifier_length = decision.target == model::Target::kWebGL2 ? 1024 : 256;
   front_options.harness_header = decision.harness_header;
   front_options.harness_version = decision.harness_version;
   return front_options;
@@ -173,7 +172,7 @@ void RenderCheckedProject(const FileJob& image_job, const CheckOptions& options,
   if (const project::ShaderToyProject* whole = image_job.shadertoy_project) {
     // Passes are named as the check named them: "toy.json#Image" (the tab's file name).
     std::string name = image_job.path.string();
-    const project::ProjectPass* image = whole->Find(ShaderToyPass::kImage);
+    const project::ProjectPass* image = whole->Find(model::PassKind::kImage);
     if (image != nullptr && name.ends_with("#" + image->name)) {
       name.resize(name.size() - image->name.size() - 1);
     }

@@ -56,7 +56,9 @@ void LinkProgram(const FileJob& vertex_job, const FileJob& fragment_job,
   if (HasErrors(vertex.diagnostics) || HasErrors(fragment.diagnostics)) return;
   FrontEndOptions front_options;
   front_options.analyze = true;
-  front_options.channels = options.channels;
+  for (size_t i = 0; i < options.channels.size(); ++i) {
+    front_options.channels[i] = options.channels[i].value_or(model::ChannelKind::k2D);
+  }
   DetectedKind vertex_kind;
   vertex_kind.stage = model::Stage::kVertex;
   DetectedKind fragment_kind;

@@ -27,16 +27,6 @@ std::optional<Dialect> ParseDialect(std::string_view name) {
   return std::nullopt;
 }
 
-std::string_view TargetName(Target target) {
-  return target == Target::kWebGL1 ? "webgl1" : "webgl2";
-}
-
-std::optional<Target> ParseTarget(std::string_view name) {
-  if (name == "webgl1") return Target::kWebGL1;
-  if (name == "webgl2") return Target::kWebGL2;
-  return std::nullopt;
-}
-
 namespace {
 
 std::optional<model::Stage> StageFromExtension(const std::filesystem::path& path) {
@@ -112,16 +102,16 @@ DetectedKind DetectKind(const glsl::LexedFile& lexed, const std::filesystem::pat
     kind.dialect = Dialect::kShaderToy;
     kind.dialect_because = "defines mainImage() and no main()";
     if (facts.defines_main_cubemap) {
-      kind.pass = ShaderToyPass::kCubemap;
+      kind.pass = model::PassKind::kCube;
       kind.dialect_because = "defines mainCubemap() and no main()";
     }
     if (facts.defines_main_sound) {
-      kind.pass = ShaderToyPass::kSound;
+      kind.pass = model::PassKind::kSound;
       kind.dialect_because = "defines mainSound() and no main()";
     }
   } else if (!has_main && !facts.version_directive && path.filename() == "common.glsl") {
     kind.dialect = Dialect::kShaderToy;
-    kind.pass = ShaderToyPass::kCommon;
+    kind.pass = model::PassKind::kCommon;
     kind.dialect_because = "named common.glsl, with no main()";
   } else if (facts.version_directive) {
     kind.dialect_because = "#version 100";

@@ -21,6 +21,18 @@ std::optional<ChannelKind> ParseChannelKind(std::string_view name) {
   return std::nullopt;
 }
 
+std::string_view SamplerTypeName(ChannelKind kind) {
+  switch (kind) {
+    case ChannelKind::kCube:
+      return "samplerCube";
+    case ChannelKind::k3D:
+      return "sampler3D";
+    case ChannelKind::k2D:
+      break;
+  }
+  return "sampler2D";
+}
+
 ChannelKind ChannelKindFromCtype(std::string_view ctype) {
   if (ctype == "cubemap") return ChannelKind::kCube;
   if (ctype == "volume") return ChannelKind::k3D;

@@ -21,6 +21,8 @@ using GivenChannelKinds = std::array<std::optional<ChannelKind>, 4>;
 // "2d", "cube", "3d": as --channel and explain-file spell a channel's sampler type.
 std::string_view ChannelKindName(ChannelKind kind);
 std::optional<ChannelKind> ParseChannelKind(std::string_view name);
+// "sampler2D", "samplerCube", "sampler3D": the GLSL type a channel is declared with.
+std::string_view SamplerTypeName(ChannelKind kind);
 
 // From a ShaderToy input's `ctype`: "cubemap" -> kCube, "volume" -> k3D, everything
 // else (texture, buffer, keyboard, video, music...) is sampled as a sampler2D.

@@ -206,7 +206,7 @@ class ConfigParser {
         }
         ok = ok && entry.stage.has_value();
       } else if (name == "target") {
-        if (text && !(entry.target = ParseTarget(*text))) {
+        if (text && !(entry.target = model::ParseTarget(*text))) {
           BadValue(value, "'" + *text + "' is not a target; use webgl1 or webgl2");
         }
         ok = ok && entry.target.has_value();

@@ -10,15 +10,15 @@
 namespace shaderport::driver {
 namespace {}  // namespace
 
-validate::ChannelTypes ChannelTypesOf(std::string_view text, validate::ChannelTypes fallback) {
-  validate::ChannelTypes types = fallback;
+model::ChannelKinds ChannelTypesOf(std::string_view text, model::ChannelKinds fallback) {
+  model::ChannelKinds types = fallback;
   struct Kind {
     std::string_view sampler;
-    validate::ChannelType type;
+    model::ChannelKind type;
   };
-  static constexpr Kind kKinds[] = {{"sampler2D", validate::ChannelType::k2D},
-                                    {"samplerCube", validate::ChannelType::kCube},
-                                    {"sampler3D", validate::ChannelType::k3D}};
+  static constexpr Kind kKinds[] = {{"sampler2D", model::ChannelKind::k2D},
+                                    {"samplerCube", model::ChannelKind::kCube},
+                                    {"sampler3D", model::ChannelKind::k3D}};
   for (size_t channel = 0; channel < 4; ++channel) {
     const std::string name = "iChannel" + std::to_string(channel) + ";";
     for (const Kind& kind : kKinds) {
@@ -53,7 +53,7 @@ RenderFileResult RenderPortResult(const PortResult& result, const RenderFileOpti
     // The site shows an Image pass with alpha 1 whatever it writes (the port's main()
     // forces it too), so the render probe can take the alpha.
     shader.main_sets_alpha =
-        result.kind.dialect == Dialect::kShaderToy && result.kind.pass == ShaderToyPass::kImage;
+        result.kind.dialect == Dialect::kShaderToy && result.kind.pass == model::PassKind::kImage;
   }
   // Mesa's lines are lines of the ported text; its source map leads back to the user's file.
   struct LineMap {
@@ -63,9 +63,7 @@ RenderFileResult RenderPortResult(const PortResult& result, const RenderFileOpti
   };
   auto lines = std::make_shared<LineMap>(
       LineMap{SourceFile(kNoFile, "<ported>", result.text), result.map, result.file->Id()});
-  const model::Stage user_stage = result.output_stage == model::Stage::kVertex
-                                      ? model::Stage::kVertex
-                                      : model::Stage::kFragment;
+  const model::Stage user_stage = result.output_stage;
   shader.map_line = [lines, user_stage](model::Stage stage,
                                         uint32_t line) -> std::optional<SourceRange> {
     if (stage != user_stage) return std::nullopt;  // the generated vertex shader

@@ -79,7 +79,7 @@ std::string UriOfPath(const std::filesystem::path& path) {
 DocumentCheck CheckDocument(const std::filesystem::path& path, std::string_view uri,
                             const std::string& text,
                             const std::vector<std::string>& rules_with_sections,
-                            std::optional<Target> target) {
+                            std::optional<model::Target> target) {
   CheckOptions options;
   options.target = target;
   options.jobs = 1;

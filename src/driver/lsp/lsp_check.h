@@ -33,7 +33,7 @@ struct DocumentCheck {
 DocumentCheck CheckDocument(const std::filesystem::path& path, std::string_view uri,
                             const std::string& text,
                             const std::vector<std::string>& rules_with_sections,
-                            std::optional<Target> target = std::nullopt);
+                            std::optional<model::Target> target = std::nullopt);
 
 // What `shaderport fix` writes for the document ("" when it changes nothing or
 // cannot: the text is not read, or the fixes did not settle).

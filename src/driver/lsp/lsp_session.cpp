@@ -182,12 +182,12 @@ Json LspSession::Dispatch(const std::string& method, const Json& params, std::ve
   if (method == "workspace/didChangeConfiguration") {
     // {"settings": {"shaderport": {"target": "webgl1"}}}; null or "" decides per file.
     const Json& settings = Member(params, "settings");
-    std::optional<Target> target;
+    std::optional<model::Target> target;
     if (settings.is_object() && settings.contains("shaderport") &&
         settings["shaderport"].is_object()) {
       const Json& value = settings["shaderport"].value("target", Json());
       if (value.is_string() && !value.get<std::string>().empty()) {
-        target = ParseTarget(value.get<std::string>());
+        target = model::ParseTarget(value.get<std::string>());
         if (!target) {
           out.push_back({{"jsonrpc", "2.0"},
                          {"method", "window/showMessage"},

@@ -70,7 +70,7 @@ class LspSession {
   std::vector<std::string> dirty_;             // changed, not yet checked (defer_checks)
   // From workspace/didChangeConfiguration, `shaderport.target`: the WebGL context every
   // document is checked for (unset: decided per file, as check does).
-  std::optional<Target> target_;
+  std::optional<model::Target> target_;
   bool initialized_ = false;
   bool shutdown_ = false;
   bool exited_ = false;

@@ -33,8 +33,7 @@ EmittedOutput EmitPorted(PortResult& result, const toolchain::EmitOptions& optio
       return emitted;
     }
   }
-  const model::Stage stage = result.output_stage == model::Stage::kVertex ? model::Stage::kVertex
-                                                                          : model::Stage::kFragment;
+  const model::Stage stage = result.output_stage;
   // Native targets do not zero-initialise or clamp indices as browsers do: the
   // leg compiles the port with the browser's semantics written out.
   BrowserRenderTextOptions semantics;

@@ -23,10 +23,9 @@ struct PortOptions {
   std::optional<Dialect> dialect;  // forced; else detected from the code
   std::optional<model::Stage> stage;
   // The ShaderToy tab the code is (from a project); implies the ShaderToy dialect.
-  std::optional<ShaderToyPass> pass;
+  std::optional<model::PassKind> pass;
   const rule::HarnessDialect* harness = nullptr;  // --dialect FILE
-  rule::ChannelKind channels[4] = {rule::ChannelKind::kAuto, rule::ChannelKind::kAuto,
-                                   rule::ChannelKind::kAuto, rule::ChannelKind::kAuto};
+  model::GivenChannelKinds channels{};            // --channel; nullopt: decided from the code
   // Rules to run; empty: the registry's rules for `mode`.
   std::vector<const rule::Rule*> rules;
   bool validate = true;  // run glslang on the result (and narrow bad fix sets)

@@ -24,7 +24,7 @@ struct RenderFileOptions {
   render::RenderOptions render;  // backend, timeout, address-space limit, cache
   render::RenderRequest base;    // size, frames and ShaderToy inputs; sources are ignored
   std::array<std::string, 4> channel_images;  // PNG paths for iChannel0..3 ("" = procedural)
-  validate::ChannelTypes channel_types{};     // sampler kind per channel (ShaderToy)
+  model::ChannelKinds channel_types{};        // sampler kind per channel (ShaderToy)
   // Which channel_types the user gave; RenderFile decides the others from the code
   // (file_decision.h), as every command does.
   std::array<bool, 4> channel_types_given{};

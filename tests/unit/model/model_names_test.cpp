@@ -33,6 +33,7 @@ TEST(ModelNames, ChannelKindRoundTrips) {
   }
   EXPECT_EQ(ChannelKindName(ChannelKind::kCube), "cube");
   EXPECT_EQ(ParseChannelKind("auto"), std::nullopt);
+  EXPECT_EQ(SamplerTypeName(ChannelKind::k3D), "sampler3D");
   EXPECT_EQ(ChannelKindFromCtype("cubemap"), ChannelKind::kCube);
   EXPECT_EQ(ChannelKindFromCtype("volume"), ChannelKind::k3D);
   EXPECT_EQ(ChannelKindFromCtype("keyboard"), ChannelKind::k2D);

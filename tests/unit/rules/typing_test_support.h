@@ -119,8 +119,8 @@ inline validate::ValidationResult Compile(const std::string& text, Kind kind, mo
   const SourceFile& file = sources.Add("input", text);
   validate::ValidationRequest request;
   if (kind == Kind::kShaderToy) {
-    request = validate::ComposeShaderToyRequest(sources, validate::PassType::kImage,
-                                                validate::ChannelTypes{}, nullptr, file);
+    request = validate::ComposeShaderToyRequest(sources, model::PassKind::kImage,
+                                                model::ChannelKinds{}, nullptr, file);
   } else {
     request.parts.push_back({"input", file.Text(), file.Id(), validate::PartKind::kUser});
     request.stage = stage;

@@ -57,8 +57,8 @@ inline constexpr const char* kHarnessHeader =
 // `shaderport port` exists: version line, attribute/varying, texture2D, gl_FragColor.
 inline std::string PortWebGl1(const std::string& text, model::Stage stage) {
   std::string out = std::regex_replace(text, std::regex(R"(\battribute\b)"), "in");
-  out =
-      std::regex_replace(out, std::regex(R"(\bvarying\b)"), stage == Stage::kVertex ? "out" : "in");
+  out = std::regex_replace(out, std::regex(R"(\bvarying\b)"),
+                           stage == model::Stage::kVertex ? "out" : "in");
   out = std::regex_replace(out, std::regex(R"(\btexture(2D|Cube)\s*\()"), "texture(");
   out = std::regex_replace(out, std::regex(R"(\bgl_FragColor\b)"), "port_FragColor");
   std::string header = "#version 300 es\n";

@@ -32,8 +32,9 @@ TEST(BrowserSemanticsSweep, CorpusStillCompilesAfterTheTransforms) {
       if (pass["type"] == "common") common = pass["code"].get<std::string>() + "\n";
     }
     for (const auto& pass : record["passes"]) {
-      const auto type = validate::PassTypeFromName(pass["type"].get<std::string>());
-      if (!type || *type == validate::PassType::kSound || *type == validate::PassType::kCube) {
+      const auto type = model::ParsePassKind(pass["type"].get<std::string>());
+      if (!type || *type == model::PassKind::kSound || *type == model::PassKind::kCube ||
+          *type == model::PassKind::kCommon) {
         continue;
       }
       const std::string text = validate::ShaderToyHeader(*type, {}) + common +
