@@ -50,12 +50,9 @@ DecisionGiven GivenFor(const FileJob& job, const CheckOptions& options) {
   }
   given.harness = options.harness;
   given.pass = job.pass;
-  for (size_t i = 0; i < given.channels.size(); ++i) {
-    if (job.channels) {
-      given.channels[i] = (*job.channels)[i];
-    } else if (options.channels[i]) {
-      given.channels[i] = options.channels[i];
-    }
+  given.channels = options.channels;
+  if (job.channels) {
+    for (size_t i = 0; i < given.channels.size(); ++i) given.channels[i] = (*job.channels)[i];
   }
   if (job.channels) given.channels_from = "the project's inputs";
   return given;

@@ -7,18 +7,13 @@
 
 namespace shaderport::model {
 
-// Common has no pass of its own: the site compiles it inside each pass, so code
-// that composes a pass treats kCommon as an Image pass (see CompiledAs).
+// Common has no pass of its own: the site compiles it inside each pass, so code that
+// composes a pass treats kCommon as an Image pass (validate/shadertoy_contract.h).
 enum class PassKind : uint8_t { kImage, kBuffer, kCube, kSound, kCommon };
 
 // "image", "buffer", "cube", "sound", "common": the `type` of a pass in a ShaderToy
 // JSON export. ParsePassKind takes exactly these (nullopt otherwise).
 std::string_view PassKindName(PassKind kind);
 std::optional<PassKind> ParsePassKind(std::string_view name);
-
-// The pass the site composes around this code: Common is compiled as an Image pass.
-inline PassKind CompiledAs(PassKind kind) {
-  return kind == PassKind::kCommon ? PassKind::kImage : kind;
-}
 
 }  // namespace shaderport::model

@@ -44,8 +44,7 @@ enum class ChannelWrap : uint8_t { kRepeat, kClamp };
 
 // What one channel of one pass of a ShaderToy project reads. The site binds each
 // pass's own inputs, so every pass (the main one and each BufferPass) has its own.
-// Not a model::ChannelKind: this is what is bound (a buffer, the keyboard, nothing), not how it is
-// sampled.
+// Not a model::ChannelKind: what is bound (a buffer, the keyboard, nothing), not how it samples.
 enum class PassChannelKind : uint8_t {
   // Not given: the channel is bound as single-pass renders bind it, from
   // ShaderToyInputs::channels and the pass's channel_buffers.

@@ -46,8 +46,6 @@ TEST(ModelNames, PassKindRoundTrips) {
   }
   EXPECT_EQ(PassKindName(PassKind::kCube), "cube");
   EXPECT_EQ(ParsePassKind("cubemap"), std::nullopt);
-  EXPECT_EQ(CompiledAs(PassKind::kCommon), PassKind::kImage);
-  EXPECT_EQ(CompiledAs(PassKind::kSound), PassKind::kSound);
 }
 
 }  // namespace
