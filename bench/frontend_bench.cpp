@@ -12,7 +12,6 @@
 #include "driver/dialect.h"
 #include "driver/front_end.h"
 #include "driver/input_files.h"
-#include "driver/validate_kinds.h"
 #include "validate/glslang_validator.h"
 #include "validate/shadertoy_contract.h"
 
@@ -63,11 +62,10 @@ void BM_GlslangValidation(benchmark::State& state) {
       const SourceFile& file = sources.Add(corpus.name, corpus.text);
       validate::ValidationRequest request;
       if (corpus.kind.dialect == driver::Dialect::kShaderToy) {
-        request = validate::ComposeShaderToyRequest(sources, driver::ToPassType(corpus.kind.pass),
-                                                    {}, nullptr, file);
+        request = validate::ComposeShaderToyRequest(sources, corpus.kind.pass, {}, nullptr, file);
       } else {
         request.parts.push_back({file.Name(), file.Text(), file.Id(), validate::PartKind::kUser});
-        request.stage = driver::ToValidateStage(corpus.kind.stage);
+        request.stage = corpus.kind.stage;
       }
       benchmark::DoNotOptimize(validate::ValidateWithGlslang(request));
     }

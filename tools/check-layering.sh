@@ -6,15 +6,16 @@ set -euo pipefail
 root=${1:-$(dirname "$0")/..}
 declare -A allowed=(
   [base]="base"
-  [source]="base source"
-  [diag]="base source diag"
-  [glsl]="base source diag glsl"
-  [toolchain]="base source diag toolchain"
-  [validate]="base source diag glsl validate"
-  [report]="base source diag report"
-  [rule]="base source diag glsl rule"
-  [render]="base source diag render"
-  [driver]="base source diag glsl toolchain validate report rule rules render driver"
+  [model]="base model"
+  [source]="base model source"
+  [diag]="base model source diag"
+  [glsl]="base model source diag glsl"
+  [toolchain]="base model source diag toolchain"
+  [validate]="base model source diag glsl validate"
+  [report]="base model source diag report"
+  [rule]="base model source diag glsl rule"
+  [render]="base model source diag render"
+  [driver]="base model source diag glsl toolchain validate report rule rules render driver"
 )
 status=0
 for layer in "${!allowed[@]}"; do

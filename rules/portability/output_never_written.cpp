@@ -44,7 +44,7 @@ class OutputNeverWrittenRule final : public rule::Rule {
       written.insert(symbol);
     });
     if (written.contains(glsl::kNoSymbol)) return;
-    const bool vertex = context.Settings().stage == rule::ShaderStage::kVertex;
+    const bool vertex = context.Settings().stage == model::Stage::kVertex;
     for (const glsl::Node* node : root->declarations) {
       const auto* declaration = node != nullptr ? node->As<glsl::VariableDeclaration>() : nullptr;
       if (declaration == nullptr || !declaration->qualifiers.Has(glsl::QualifierKind::kOut)) {

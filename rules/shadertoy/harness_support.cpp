@@ -148,22 +148,11 @@ std::array<ChannelChoice, 4> ChooseChannels(const rule::RuleContext& context,
     choices[channel].use = uses[channel];
   for (size_t channel = 0; channel < choices.size(); ++channel) {
     ChannelChoice& choice = choices[channel];
-    switch (context.Settings().channels[channel]) {
-      case rule::ChannelKind::k2D:
-        choice.type = "sampler2D";
-        choice.told = true;
-        break;
-      case rule::ChannelKind::kCube:
-        choice.type = "samplerCube";
-        choice.told = true;
-        break;
-      case rule::ChannelKind::k3D:
-        choice.type = "sampler3D";
-        choice.told = true;
-        break;
-      case rule::ChannelKind::kAuto:
-        choice.type = choice.use.OnlyCube() ? "samplerCube" : "sampler2D";
-        break;
+    if (const std::optional<model::ChannelKind> told = context.Settings().channels[channel]) {
+      choice.type = model::SamplerTypeName(*told);
+      choice.told = true;
+    } else {
+      choice.type = choice.use.OnlyCube() ? "samplerCube" : "sampler2D";
     }
   }
   return choices;

@@ -155,7 +155,7 @@ class MainWrapperRule final : public rule::Rule {
   void Run(rule::RuleContext& context) const override {
     const rule::HarnessDialect* dialect = context.Settings().harness;
     if (dialect == nullptr || dialect->entry_points.empty()) return;
-    if (context.Settings().stage != rule::ShaderStage::kFragment) return;
+    if (context.Settings().stage != model::Stage::kFragment) return;
     const rule::CodeInterface code = rule::ReadCodeInterface(context.Tree(), context.Model());
     if (code.defined_functions.contains("main")) return;  // already has one (or ported)
     if (NestedFunctionDefinition(context.Tree()) || MainInTokens(context)) return;

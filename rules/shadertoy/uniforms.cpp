@@ -38,7 +38,7 @@ class UniformsRule final : public rule::Rule {
 
   void Run(rule::RuleContext& context) const override {
     const rule::HarnessDialect* dialect = context.Settings().harness;
-    if (dialect == nullptr || context.Settings().stage != rule::ShaderStage::kFragment) return;
+    if (dialect == nullptr || context.Settings().stage != model::Stage::kFragment) return;
     const std::optional<uint32_t> offset = harness::AfterVersionLines(context);
     if (!offset) return;  // webgl2/version adds the #version first
     const rule::CodeInterface code = rule::ReadCodeInterface(context.Tree(), context.Model());

@@ -38,7 +38,8 @@ class ExtensionSupportRule final : public rule::Rule {
         }
         continue;
       }
-      if (webgl::ContextOffersExtension(name, webgl2) || behavior == "disable") continue;
+      if (webgl::ContextOffersExtension(name, context.Settings().target) || behavior == "disable")
+        continue;
       const std::string message = "'" + name + "' is not an extension a " +
                                   (webgl2 ? "WebGL 2" : "WebGL 1") +
                                   " context offers; its functions and variables are not there";

@@ -218,14 +218,14 @@ bool AlignLenientMessages(const BrowserContext& context, Diagnostic& diagnostic)
   }
   if (const size_t at = message.find("extension not supported: "); at != std::string::npos) {
     const std::string name = message.substr(at + 25);
-    if (webgl::ContextOffersExtension(name, context.webgl2)) {
+    if (webgl::ContextOffersExtension(name, context.target)) {
       Demote(diagnostic, Severity::kNote,
              "not an error in browsers: the WebGL context offers " + name +
                  " and a page enables it for this shader; glslang does not know it");
       return true;
     }
   }
-  if (context.vertex && has("overlapping use of location")) {
+  if (context.stage == model::Stage::kVertex && has("overlapping use of location")) {
     Demote(diagnostic, Severity::kNote,
            "not an error in browsers: vertex inputs may share a location when a stage is "
            "compiled (aliasing is only checked when a program is linked)");
@@ -269,8 +269,7 @@ bool SameParameters(const glsl::BuiltinFunction& builtin, const glsl::Symbol& fu
 // in both, a name only glslang has.
 bool BrowserAcceptsName(const BrowserContext& context, const glsl::Symbol& function) {
   if (GlslangOnlyFunctionName(context, function.name)) return true;
-  const glsl::ShaderStage stage =
-      context.vertex ? glsl::ShaderStage::kVertex : glsl::ShaderStage::kFragment;
+  const model::Stage stage = context.stage;
   const int version = context.version >= 300 ? 300 : 100;
   bool builtin_here = false;
   for (const glsl::BuiltinFunction* builtin : glsl::BuiltinOverloadList(function.name)) {
@@ -422,7 +421,7 @@ void HideUnofferedExtensions(const BrowserContext& context, FileId part, std::st
   for (const glsl::ExtensionDirective& directive : context.preprocessed->extensions) {
     if (directive.name == "all" || directive.range.file != part ||
         directive.range.end > text.size() ||
-        webgl::ContextOffersExtension(directive.name, context.webgl2)) {
+        webgl::ContextOffersExtension(directive.name, context.target)) {
       continue;
     }
     for (uint32_t i = directive.range.begin; i < directive.range.end; ++i) {

@@ -10,14 +10,16 @@
 #include "glsl/lex/preprocessor.h"
 #include "glsl/sema/semantic_model.h"
 #include "glsl/syntax/ast.h"
+#include "model/stage.h"
+#include "model/target.h"
 #include "source/source_file.h"
 
 namespace shaderport::rules {
 
 struct BrowserContext {
-  bool webgl2 = true;
+  model::Target target = model::Target::kWebGL2;
   int version = 100;  // the code's GLSL ES version
-  bool vertex = false;
+  model::Stage stage = model::Stage::kFragment;
   const SourceFile* file = nullptr;  // the user's file
   const glsl::LexedFile* lexed = nullptr;
   const glsl::SyntaxTree* tree = nullptr;

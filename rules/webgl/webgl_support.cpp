@@ -25,7 +25,7 @@ const glsl::Expr* Unparenthesized(const glsl::Expr* expr) {
   return expr;
 }
 
-bool ContextOffersExtension(std::string_view name, bool webgl2) {
+bool ContextOffersExtension(std::string_view name, model::Target target) {
   struct Offered {
     std::string_view name;
     bool webgl1;
@@ -37,7 +37,8 @@ bool ContextOffersExtension(std::string_view name, bool webgl2) {
 #undef WEBGL_EXTENSION
   };
   for (const Offered& offered : kOffered) {
-    if (offered.name == name) return webgl2 ? offered.webgl2 : offered.webgl1;
+    if (offered.name == name)
+      return target == model::Target::kWebGL2 ? offered.webgl2 : offered.webgl1;
   }
   return false;
 }

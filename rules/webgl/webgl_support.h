@@ -14,14 +14,14 @@
 namespace shaderport::rules::webgl {
 
 inline bool InWebgl1(const rule::RuleContext& context) {
-  return context.Settings().target == rule::WebglTarget::kWebGL1;
+  return context.Settings().target == model::Target::kWebGL1;
 }
 inline bool InWebgl2(const rule::RuleContext& context) { return !InWebgl1(context); }
 inline bool IsEssl100(const rule::RuleContext& context) {
   return context.Settings().source_version < 300;
 }
 inline bool IsFragment(const rule::RuleContext& context) {
-  return context.Settings().stage == rule::ShaderStage::kFragment;
+  return context.Settings().stage == model::Stage::kFragment;
 }
 
 // Reports an error of `rule_id` at `range` with an optional note.
@@ -36,7 +36,7 @@ const glsl::Expr* Unparenthesized(const glsl::Expr* expr);
 
 // Whether a WebGL 1 or 2 context offers the #extension `name`
 // (rules/data/webgl_context_extensions.def).
-bool ContextOffersExtension(std::string_view name, bool webgl2);
+bool ContextOffersExtension(std::string_view name, model::Target target);
 
 // The value of `layout(location = N)` among `qualifiers`, when written as an integer.
 std::optional<int64_t> LayoutLocation(const glsl::QualifierList& qualifiers);

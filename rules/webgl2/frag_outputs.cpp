@@ -78,7 +78,7 @@ class FragOutputsRule final : public rule::Rule {
   }
 
   void Run(rule::RuleContext& context) const override {
-    if (context.Settings().stage != rule::ShaderStage::kFragment) return;
+    if (context.Settings().stage != model::Stage::kFragment) return;
     if (context.Tree().Root() == nullptr) return;
     const std::optional<uint32_t> point = DeclarationPoint(context);
     FragColor(context, point);

@@ -26,7 +26,7 @@ class InterfaceRule final : public rule::Rule {
   }
 
   void Run(rule::RuleContext& context) const override {
-    const bool vertex = context.Settings().stage == rule::ShaderStage::kVertex;
+    const bool vertex = context.Settings().stage == model::Stage::kVertex;
     glsl::VisitPreorder(context.Tree(), [&](const glsl::Node& node, uint32_t) {
       const glsl::QualifierList* qualifiers = nullptr;
       if (const auto* variable = node.As<glsl::VariableDeclaration>()) {

@@ -83,14 +83,13 @@ class PrecisionRule final : public rule::Rule {
       if (use == first_use.end() || at <= use->second) has_default.insert(type);
     }
     std::vector<std::string> missing;
-    if (context.Settings().stage == rule::ShaderStage::kFragment &&
-        !has_default.contains("float")) {
+    if (context.Settings().stage == model::Stage::kFragment && !has_default.contains("float")) {
       missing.push_back("float");
     }
     // shadertoy.com compiles every pass with `precision highp int;`: without it
     // int arithmetic would run at mediump in the port and change the picture.
     const rule::HarnessDialect* harness = context.Settings().harness;
-    if (context.Settings().stage == rule::ShaderStage::kFragment && harness != nullptr &&
+    if (context.Settings().stage == model::Stage::kFragment && harness != nullptr &&
         harness->NameMatches("shadertoy") && !has_default.contains("int")) {
       missing.push_back("int");
     }

@@ -2,8 +2,8 @@
 
 #include <string>
 
-#include "driver/validate_kinds.h"
 #include "rules/shadertoy/harness_support.h"
+#include "validate/shadertoy_contract.h"
 
 namespace shaderport::driver {
 namespace {
@@ -30,13 +30,13 @@ void ExplainChannelErrors(const FrontEndResult& front, const FileDecision& decis
   const glsl::SyntaxTree& tree = front.parsed.tree;
   for (size_t i = 0; i < names.size(); ++i) {
     if (names[i].empty()) continue;
-    const bool flat = decision.channels[i] == validate::ChannelType::k2D;
+    const bool flat = decision.channels[i] == model::ChannelKind::k2D;
     // The sampling that the channel's type does not fit.
     const uint32_t misfit = flat ? uses[i].first_cube : uses[i].first_2d;
     if (misfit == glsl::kNoNode || misfit >= tree.NodeCount()) continue;
     const SourceRange call = tree.NodeAt(misfit).range;
     const std::string note =
-        names[i] + " is a " + std::string(ChannelTypeName(decision.channels[i])) +
+        names[i] + " is a " + std::string(model::ChannelKindName(decision.channels[i])) +
         " texture here (" + Origin(decision, names[i]) + "), and this samples it with a " +
         (flat ? "3-component coordinate, as a cube map or 3D texture is"
               : "2-component coordinate, as a 2D texture is") +

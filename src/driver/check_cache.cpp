@@ -25,8 +25,10 @@ CacheKey RunKey(const CheckOptions& options) {
       .Add(Value(options.stage))
       .Add(Value(options.target));
   for (size_t i = 0; i < options.channels.size(); ++i) {
-    hasher.Add(static_cast<uint64_t>(options.channels[i]))
-        .Add(uint64_t{options.channels_given[i] ? 1u : 0u});
+    // Hashed as a kind (2D when not given) and a given flag, as before the flag and
+    // the kind were one optional: cache entries written then still match.
+    hasher.Add(static_cast<uint64_t>(options.channels[i].value_or(model::ChannelKind::k2D)))
+        .Add(uint64_t{options.channels[i].has_value() ? 1u : 0u});
   }
   // A --dialect harness: what of it decides how a file is composed.
   if (const rule::HarnessDialect* harness = options.harness) {

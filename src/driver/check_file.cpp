@@ -17,7 +17,6 @@
 #include "driver/render_check/render_file.h"
 #include "driver/render_check/render_multipass.h"
 #include "driver/suppress/suppressions.h"
-#include "driver/validate_kinds.h"
 #include "driver/webgl_checks.h"
 #include "validate/glslang_validator.h"
 #include "validate/shadertoy_contract.h"
@@ -51,12 +50,9 @@ DecisionGiven GivenFor(const FileJob& job, const CheckOptions& options) {
   }
   given.harness = options.harness;
   given.pass = job.pass;
-  for (size_t i = 0; i < given.channels.size(); ++i) {
-    if (job.channels) {
-      given.channels[i] = (*job.channels)[i];
-    } else if (options.channels_given[i]) {
-      given.channels[i] = options.channels[i];
-    }
+  given.channels = options.channels;
+  if (job.channels) {
+    for (size_t i = 0; i < given.channels.size(); ++i) given.channels[i] = (*job.channels)[i];
   }
   if (job.channels) given.channels_from = "the project's inputs";
   return given;
@@ -69,9 +65,9 @@ void RecordDecision(const FileDecision& decision, FileReport& report) {
   report.target = std::string(TargetName(decision.target));
   report.channels.clear();
   if (!decision.IsShaderToy()) return;
-  for (const validate::ChannelType channel : decision.channels) {
+  for (const model::ChannelKind channel : decision.channels) {
     if (!report.channels.empty()) report.channels += ' ';
-    report.channels += ChannelTypeName(channel);
+    report.channels += model::ChannelKindName(channel);
   }
 }
 
@@ -80,7 +76,7 @@ FrontEndOptions FrontEndOptionsFor(const FileDecision& decision) {
   front_options.analyze = true;
   front_options.channels = decision.channels;
   // WebGL 2 contexts allow 1024-character names in GLSL ES 1.00 code too.
-  front_options.max_identifier_length = decision.target == Target::kWebGL2 ? 1024 : 256;
+  front_options.max_identifier_length = decision.target == model::Target::kWebGL2 ? 1024 : 256;
   front_options.harness_header = decision.harness_header;
   front_options.harness_version = decision.harness_version;
   return front_options;
@@ -179,7 +175,7 @@ void RenderCheckedProject(const FileJob& image_job, const CheckOptions& options,
   if (const project::ShaderToyProject* whole = image_job.shadertoy_project) {
     // Passes are named as the check named them: "toy.json#Image" (the tab's file name).
     std::string name = image_job.path.string();
-    const project::ProjectPass* image = whole->Find(ShaderToyPass::kImage);
+    const project::ProjectPass* image = whole->Find(model::PassKind::kImage);
     if (image != nullptr && name.ends_with("#" + image->name)) {
       name.resize(name.size() - image->name.size() - 1);
     }

@@ -28,8 +28,8 @@ struct FileJob {
   // A pass of a ShaderToy project: its code, already registered (embedded in its
   // JSON document), the tab it is and the sampler types its inputs give.
   const SourceFile* source = nullptr;
-  std::optional<ShaderToyPass> pass;
-  std::optional<validate::ChannelTypes> channels;
+  std::optional<model::PassKind> pass;
+  std::optional<model::ChannelKinds> channels;
   // A tab of a project (a JSON project or a project folder): which project, for the
   // summary's count ("" for a shader file).
   std::string project;

@@ -10,10 +10,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::optional<Stage> StageOfPath(const fs::path& path) {
+std::optional<model::Stage> StageOfPath(const fs::path& path) {
   const std::string extension = path.extension().string();
-  if (extension == ".vert" || extension == ".vs") return Stage::kVertex;
-  if (extension == ".frag" || extension == ".fs") return Stage::kFragment;
+  if (extension == ".vert" || extension == ".vs") return model::Stage::kVertex;
+  if (extension == ".frag" || extension == ".fs") return model::Stage::kFragment;
   return std::nullopt;
 }
 
@@ -36,10 +36,10 @@ std::vector<std::pair<size_t, size_t>> FindPrograms(const std::vector<FileJob>& 
   // Same directory and stem: `blur.vert` + `blur.frag`.
   std::map<fs::path, std::pair<std::optional<size_t>, std::optional<size_t>>> by_stem;
   for (size_t i = 0; i < jobs.size(); ++i) {
-    const std::optional<Stage> stage = StageOfPath(jobs[i].path);
+    const std::optional<model::Stage> stage = StageOfPath(jobs[i].path);
     if (!stage) continue;
     auto& slot = by_stem[jobs[i].path.parent_path() / jobs[i].path.stem()];
-    (*stage == Stage::kVertex ? slot.first : slot.second) = i;
+    (*stage == model::Stage::kVertex ? slot.first : slot.second) = i;
   }
   for (const auto& [stem, pair] : by_stem) {
     if (pair.first && pair.second) programs.emplace_back(*pair.first, *pair.second);
@@ -56,11 +56,13 @@ void LinkProgram(const FileJob& vertex_job, const FileJob& fragment_job,
   if (HasErrors(vertex.diagnostics) || HasErrors(fragment.diagnostics)) return;
   FrontEndOptions front_options;
   front_options.analyze = true;
-  front_options.channels = options.channels;
+  for (size_t i = 0; i < options.channels.size(); ++i) {
+    front_options.channels[i] = options.channels[i].value_or(model::ChannelKind::k2D);
+  }
   DetectedKind vertex_kind;
-  vertex_kind.stage = Stage::kVertex;
+  vertex_kind.stage = model::Stage::kVertex;
   DetectedKind fragment_kind;
-  fragment_kind.stage = Stage::kFragment;
+  fragment_kind.stage = model::Stage::kFragment;
   const FrontEndResult vs = RunFrontEnd(*vertex.file, nullptr, vertex_kind, sources, front_options);
   const FrontEndResult fs =
       RunFrontEnd(*fragment.file, nullptr, fragment_kind, sources, front_options);

@@ -14,6 +14,7 @@
 #include "driver/dialect.h"
 #include "driver/read_input.h"
 #include "driver/shard.h"
+#include "model/channel_kind.h"
 #include "rule/harness_dialect.h"
 #include "validate/shadertoy_contract.h"
 
@@ -21,16 +22,15 @@ namespace shaderport::driver {
 
 struct CheckOptions {
   std::vector<std::filesystem::path> paths;
-  std::optional<Dialect> dialect;  // --dialect: overrides detection and config
-  std::optional<Stage> stage;      // --stage
-  std::optional<Target> target;
+  std::optional<Dialect> dialect;     // --dialect: overrides detection and config
+  std::optional<model::Stage> stage;  // --stage
+  std::optional<model::Target> target;
   // --link VS FS: programs to link; when empty, vertex and fragment files with the
   // same stem in the same directory are linked.
   std::vector<std::pair<std::filesystem::path, std::filesystem::path>>
       links;                                    // --target: the WebGL context (default: by version)
   std::optional<std::filesystem::path> common;  // --common: ShaderToy Common for every pass
-  validate::ChannelTypes channels{};            // --channel N=2d|cube|3d
-  std::array<bool, 4> channels_given{};         // which --channel were given (else inferred)
+  model::GivenChannelKinds channels{};          // --channel N=2d|cube|3d; nullopt: inferred
   // --dialect NAME|FILE.toml naming a harness dialect (rules/dialects/): the code is
   // checked as that host composes it.
   const rule::HarnessDialect* harness = nullptr;

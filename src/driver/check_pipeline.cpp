@@ -53,7 +53,7 @@ std::vector<size_t> ProjectsToDraw(const std::vector<FileJob>& jobs,
     if (HasErrors(reports[i].diagnostics)) failing.insert(jobs[i].project);
     // The Image tab, else the first tab checked (a folder's Buffer named alone).
     auto [it, added] = image_of.emplace(jobs[i].project, i);
-    if (!added && jobs[i].pass == ShaderToyPass::kImage) it->second = i;
+    if (!added && jobs[i].pass == model::PassKind::kImage) it->second = i;
   }
   std::vector<size_t> images;
   for (const auto& [project, image] : image_of) {

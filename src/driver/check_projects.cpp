@@ -10,14 +10,14 @@
 namespace shaderport::driver {
 namespace {
 
-validate::ChannelTypes ChannelTypesOf(const project::ProjectPass& pass) {
-  validate::ChannelTypes types{};
+model::ChannelKinds ChannelTypesOf(const project::ProjectPass& pass) {
+  model::ChannelKinds types{};
   for (const project::ChannelBinding& input : pass.inputs) {
-    validate::ChannelType type = validate::ChannelType::k2D;
+    model::ChannelKind type = model::ChannelKind::k2D;
     if (input.source == project::ChannelSource::kCubemap ||
         input.source == project::ChannelSource::kCubeBuffer)
-      type = validate::ChannelType::kCube;
-    if (input.source == project::ChannelSource::kVolume) type = validate::ChannelType::k3D;
+      type = model::ChannelKind::kCube;
+    if (input.source == project::ChannelSource::kVolume) type = model::ChannelKind::k3D;
     types[static_cast<size_t>(input.channel)] = type;
   }
   return types;
@@ -27,7 +27,7 @@ validate::ChannelTypes ChannelTypesOf(const project::ProjectPass& pass) {
 
 bool ApplyFolderTab(FileJob& job) {
   int buffer = -1;
-  const std::optional<ShaderToyPass> tab = project::TabOfFile(job.path, buffer);
+  const std::optional<model::PassKind> tab = project::TabOfFile(job.path, buffer);
   const std::filesystem::path directory =
       job.path.parent_path().empty() ? std::filesystem::path(".") : job.path.parent_path();
   if (!tab || !project::IsProjectFolder(directory)) return false;
@@ -75,7 +75,7 @@ void AddProjectJobs(const FileJob& base, SourceManager& sources,
       job.channels = ChannelTypesOf(*pass.pass);
       job.project = name + "#" + std::to_string(i);
       job.shadertoy_project = &document.projects[i];
-      job.common = pass.pass->kind == ShaderToyPass::kCommon ? nullptr : registered.common;
+      job.common = pass.pass->kind == model::PassKind::kCommon ? nullptr : registered.common;
       // Common is a job of its own here: its findings are reported there, once.
       job.common_checked_separately = true;
       jobs.push_back(std::move(job));

@@ -20,8 +20,6 @@ std::string_view DialectName(Dialect dialect) {
   return "webgl1";
 }
 
-std::string_view StageName(Stage stage) { return stage == Stage::kVertex ? "vertex" : "fragment"; }
-
 std::optional<Dialect> ParseDialect(std::string_view name) {
   if (name == "shadertoy") return Dialect::kShaderToy;
   if (name == "webgl1") return Dialect::kWebGL1;
@@ -29,28 +27,14 @@ std::optional<Dialect> ParseDialect(std::string_view name) {
   return std::nullopt;
 }
 
-std::optional<Stage> ParseStage(std::string_view name) {
-  if (name == "vertex" || name == "vert") return Stage::kVertex;
-  if (name == "fragment" || name == "frag") return Stage::kFragment;
-  return std::nullopt;
-}
-
-std::string_view TargetName(Target target) {
-  return target == Target::kWebGL1 ? "webgl1" : "webgl2";
-}
-
-std::optional<Target> ParseTarget(std::string_view name) {
-  if (name == "webgl1") return Target::kWebGL1;
-  if (name == "webgl2") return Target::kWebGL2;
-  return std::nullopt;
-}
-
 namespace {
 
-std::optional<Stage> StageFromExtension(const std::filesystem::path& path) {
+std::optional<model::Stage> StageFromExtension(const std::filesystem::path& path) {
   const std::string extension = path.extension().string();
-  if (extension == ".vert" || extension == ".vs" || extension == ".vsh") return Stage::kVertex;
-  if (extension == ".frag" || extension == ".fs" || extension == ".fsh") return Stage::kFragment;
+  if (extension == ".vert" || extension == ".vs" || extension == ".vsh")
+    return model::Stage::kVertex;
+  if (extension == ".frag" || extension == ".fs" || extension == ".fsh")
+    return model::Stage::kFragment;
   return std::nullopt;
 }
 
@@ -118,16 +102,16 @@ DetectedKind DetectKind(const glsl::LexedFile& lexed, const std::filesystem::pat
     kind.dialect = Dialect::kShaderToy;
     kind.dialect_because = "defines mainImage() and no main()";
     if (facts.defines_main_cubemap) {
-      kind.pass = ShaderToyPass::kCubemap;
+      kind.pass = model::PassKind::kCube;
       kind.dialect_because = "defines mainCubemap() and no main()";
     }
     if (facts.defines_main_sound) {
-      kind.pass = ShaderToyPass::kSound;
+      kind.pass = model::PassKind::kSound;
       kind.dialect_because = "defines mainSound() and no main()";
     }
   } else if (!has_main && !facts.version_directive && path.filename() == "common.glsl") {
     kind.dialect = Dialect::kShaderToy;
-    kind.pass = ShaderToyPass::kCommon;
+    kind.pass = model::PassKind::kCommon;
     kind.dialect_because = "named common.glsl, with no main()";
   } else if (facts.version_directive) {
     kind.dialect_because = "#version 100";
@@ -137,7 +121,7 @@ DetectedKind DetectKind(const glsl::LexedFile& lexed, const std::filesystem::pat
     kind.stage_because = "the file name's extension";
   } else if (kind.dialect != Dialect::kShaderToy &&
              (facts.writes_gl_position || facts.uses_attribute)) {
-    kind.stage = Stage::kVertex;
+    kind.stage = model::Stage::kVertex;
     kind.stage_because = facts.writes_gl_position ? "writes gl_Position" : "declares an attribute";
   } else if (kind.dialect == Dialect::kShaderToy) {
     kind.stage_because = "ShaderToy passes are fragment shaders";

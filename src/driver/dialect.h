@@ -5,6 +5,10 @@
 #include <optional>
 #include <string_view>
 
+#include "model/pass_kind.h"
+#include "model/stage.h"
+#include "model/target.h"
+
 namespace shaderport::glsl {
 struct LexedFile;  // glsl/lex/lexer.h
 }  // namespace shaderport::glsl
@@ -12,23 +16,14 @@ struct LexedFile;  // glsl/lex/lexer.h
 namespace shaderport::driver {
 
 enum class Dialect { kShaderToy, kWebGL1, kWebGL2 };
-enum class Stage { kVertex, kFragment };
-// The WebGL context the shader runs in (`--target`), apart from its language version.
-enum class Target { kWebGL1, kWebGL2 };
-// The ShaderToy tab a file stands for; it decides the site's generated main().
-enum class ShaderToyPass { kImage, kBuffer, kCubemap, kSound, kCommon };
 
 std::string_view DialectName(Dialect dialect);  // "shadertoy", "webgl1", "webgl2"
-std::string_view StageName(Stage stage);        // "vertex", "fragment"
 std::optional<Dialect> ParseDialect(std::string_view name);
-std::optional<Stage> ParseStage(std::string_view name);
-std::string_view TargetName(Target target);  // "webgl1", "webgl2"
-std::optional<Target> ParseTarget(std::string_view name);
 
 struct DetectedKind {
   Dialect dialect = Dialect::kWebGL1;
-  Stage stage = Stage::kFragment;
-  ShaderToyPass pass = ShaderToyPass::kImage;
+  model::Stage stage = model::Stage::kFragment;
+  model::PassKind pass = model::PassKind::kImage;
   // Why, for people (static text): "defines mainImage() and no main()".
   std::string_view dialect_because = "no #version line: GLSL ES 1.00";
   std::string_view stage_because = "the default stage";

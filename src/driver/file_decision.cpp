@@ -3,28 +3,17 @@
 #include <string_view>
 
 #include "driver/front_end.h"
-#include "driver/validate_kinds.h"
 #include "rule/harness_dialect_detect.h"
 #include "rules/shadertoy/builtin_dialects.h"
 #include "rules/shadertoy/harness_support.h"
+#include "validate/shadertoy_contract.h"
 
 namespace shaderport::driver {
 namespace {
 
-std::string_view PassName(ShaderToyPass pass) {
-  switch (pass) {
-    case ShaderToyPass::kBuffer:
-      return "buffer";
-    case ShaderToyPass::kCubemap:
-      return "cubemap";
-    case ShaderToyPass::kSound:
-      return "sound";
-    case ShaderToyPass::kCommon:
-      return "common";
-    case ShaderToyPass::kImage:
-      return "image";
-  }
-  return "image";
+// As explain-file has always named passes: the cube map pass by its entry point's word.
+std::string_view PassName(model::PassKind pass) {
+  return pass == model::PassKind::kCube ? "cubemap" : model::PassKindName(pass);
 }
 
 bool HasVersionDirective(const glsl::LexedFile& lexed) {
@@ -39,8 +28,9 @@ bool HasVersionDirective(const glsl::LexedFile& lexed) {
 }
 
 // By the code's own #version, whatever the dialect says about how it is written.
-Target TargetOfCode(const glsl::LexedFile& lexed, const std::filesystem::path& path) {
-  return DetectKind(lexed, path).dialect == Dialect::kWebGL1 ? Target::kWebGL1 : Target::kWebGL2;
+model::Target TargetOfCode(const glsl::LexedFile& lexed, const std::filesystem::path& path) {
+  return DetectKind(lexed, path).dialect == Dialect::kWebGL1 ? model::Target::kWebGL1
+                                                             : model::Target::kWebGL2;
 }
 
 void DecideTarget(FileDecision& decision, const glsl::LexedFile& lexed,
@@ -50,16 +40,17 @@ void DecideTarget(FileDecision& decision, const glsl::LexedFile& lexed,
     decision.target = *given.target;
     because = "given by " + given.target_from;
   } else if (decision.IsShaderToy()) {
-    decision.target = Target::kWebGL2;
+    decision.target = model::Target::kWebGL2;
     because = "shadertoy.com compiles every pass in a WebGL2 context";
   } else if (decision.harness_version != 0) {
-    decision.target = decision.harness_version == 300 ? Target::kWebGL2 : Target::kWebGL1;
+    decision.target =
+        decision.harness_version == 300 ? model::Target::kWebGL2 : model::Target::kWebGL1;
     because = "the " + decision.harness->name + " harness compiles it as GLSL ES " +
               (decision.harness_version == 300 ? "3.00" : "1.00");
   } else {
     decision.target = TargetOfCode(lexed, path);
-    because = decision.target == Target::kWebGL2 ? "the code's #version 300 es"
-                                                 : "GLSL ES 1.00 code runs in WebGL1";
+    because = decision.target == model::Target::kWebGL2 ? "the code's #version 300 es"
+                                                        : "GLSL ES 1.00 code runs in WebGL1";
   }
   std::erase_if(decision.reasons, [](const DecisionReason& r) { return r.part == "target"; });
   decision.reasons.push_back({"target", std::string(TargetName(decision.target)), because});
@@ -120,7 +111,7 @@ FileDecision DecideFromTokens(const glsl::LexedFile& lexed, const std::filesyste
   }
   if (given.pass) {
     decision.kind.dialect = Dialect::kShaderToy;
-    decision.kind.stage = Stage::kFragment;
+    decision.kind.stage = model::Stage::kFragment;
     decision.kind.pass = *given.pass;
     dialect_because = stage_because = "a tab of a ShaderToy project";
   }
@@ -186,13 +177,14 @@ bool DecideFromTree(FileDecision& decision, const glsl::LexedFile& lexed,
       if (name.empty()) continue;
       if (given.channels[i]) {
         if (uses[i].first_2d != glsl::kNoNode || uses[i].first_cube != glsl::kNoNode) {
-          decision.reasons.push_back({name, std::string(ChannelTypeName(decision.channels[i])),
+          decision.reasons.push_back({name,
+                                      std::string(model::ChannelKindName(decision.channels[i])),
                                       "given by " + given.channels_from});
         }
         continue;
       }
       if (uses[i].OnlyCube()) {
-        decision.channels[i] = validate::ChannelType::kCube;
+        decision.channels[i] = model::ChannelKind::kCube;
         decision.reasons.push_back({name, "cube", "sampled only with 3-component coordinates"});
         again = true;
       } else if (uses[i].first_2d != glsl::kNoNode) {
@@ -214,14 +206,13 @@ validate::ValidationRequest ComposeForGlslang(const FileDecision& decision, cons
       request.parts.push_back({name, header.Text(), header.Id(), validate::PartKind::kGenerated});
     }
     request.parts.push_back({file.Name(), file.Text(), file.Id(), validate::PartKind::kUser});
-    request.stage = ToValidateStage(decision.kind.stage);
+    request.stage = decision.kind.stage;
     request.default_version = 100;  // no #version means GLSL ES 1.00, as in WebGL
     return request;
   }
-  const bool is_common = decision.kind.pass == ShaderToyPass::kCommon;
-  validate::ValidationRequest request =
-      validate::ComposeShaderToyRequest(sources, ToPassType(decision.kind.pass), decision.channels,
-                                        is_common ? nullptr : common, file);
+  const bool is_common = decision.kind.pass == model::PassKind::kCommon;
+  validate::ValidationRequest request = validate::ComposeShaderToyRequest(
+      sources, decision.kind.pass, decision.channels, is_common ? nullptr : common, file);
   // Common code has no entry point of its own: the site only compiles it inside
   // a pass, so here it is compiled but not linked.
   if (is_common) request.link = false;

@@ -25,11 +25,11 @@ namespace shaderport::driver {
 // What the user said about a file; unset parts are decided from the code.
 struct DecisionGiven {
   std::optional<Dialect> dialect;
-  std::optional<Stage> stage;
-  std::optional<ShaderToyPass> pass;
-  std::optional<Target> target;
+  std::optional<model::Stage> stage;
+  std::optional<model::PassKind> pass;
+  std::optional<model::Target> target;
   const rule::HarnessDialect* harness = nullptr;  // --dialect NAME|FILE.toml naming a harness
-  std::array<std::optional<validate::ChannelType>, 4> channels{};
+  std::array<std::optional<model::ChannelKind>, 4> channels{};
   // Where each given part came from, for people: "--dialect", "config ./.shaderport.toml".
   std::string dialect_from = "--dialect";
   std::string stage_from = "--stage";
@@ -42,11 +42,11 @@ using DecisionReason = DecisionPart;
 
 struct FileDecision {
   DetectedKind kind;
-  Target target = Target::kWebGL2;
+  model::Target target = model::Target::kWebGL2;
   // The host that completes the code: ShaderToy's for ShaderToy code, a detected or
   // given harness dialect (rules/dialects/) for code that uses its names, else none.
   const rule::HarnessDialect* harness = nullptr;
-  validate::ChannelTypes channels{};  // iChannel0..3 (ShaderToy code)
+  model::ChannelKinds channels{};  // iChannel0..3 (ShaderToy code)
   // A harness other than ShaderToy: the lines it puts before this code (its
   // prelude, defines and the declarations of what the code uses); "" when none.
   std::string harness_header;

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <vector>
 
-#include "driver/validate_kinds.h"
 #include "rule/rule_context.h"
 #include "rules/registry.h"
+#include "validate/shadertoy_contract.h"
 
 namespace shaderport::driver {
 namespace {
@@ -38,9 +38,7 @@ PortOptions FixOptionsFor(const FileDecision& decision) {
   options.stage = decision.kind.stage;
   if (decision.IsShaderToy()) options.pass = decision.kind.pass;
   if (!decision.IsShaderToy()) options.harness = decision.harness;
-  for (size_t i = 0; i < decision.channels.size(); ++i) {
-    options.channels[i] = ToChannelKind(decision.channels[i]);
-  }
+  for (size_t i = 0; i < decision.channels.size(); ++i) options.channels[i] = decision.channels[i];
   return options;
 }
 
@@ -50,11 +48,10 @@ bool FixOffersAnEdit(const SourceFile& file, const FrontEndResult& front,
   const PortOptions options = FixOptionsFor(decision);
   rule::PortSettings settings;
   settings.mode = rule::PortMode::kFix;
-  settings.stage = decision.kind.stage == Stage::kVertex ? rule::ShaderStage::kVertex
-                                                         : rule::ShaderStage::kFragment;
+  settings.stage = decision.kind.stage;
   settings.harness = decision.harness;
   settings.source_version = decision.kind.dialect == Dialect::kWebGL1 ? 100 : 300;
-  settings.buffer_pass = decision.kind.pass == ShaderToyPass::kBuffer;
+  settings.buffer_pass = decision.kind.pass == model::PassKind::kBuffer;
   for (size_t i = 0; i < 4; ++i) settings.channels[i] = options.channels[i];
   for (const rule::Rule* r : rules::RulesForMode(rule::PortMode::kFix)) {
     rule::RuleContext context(file, front.lexed, front.preprocessed, front.parsed.tree,

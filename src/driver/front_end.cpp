@@ -27,9 +27,9 @@ glsl::ParseResult ParseUnit(const std::vector<const SourceFile*>& files, int for
 // about a tenth of the front end's work on a short pass. Only its declarations are
 // read (as predeclared symbols, without nodes or ranges), so sharing one tree and
 // one generated file between files changes nothing they report.
-std::shared_ptr<const glsl::ParseResult> ShaderToyHeaderTree(const validate::ChannelTypes& channels,
+std::shared_ptr<const glsl::ParseResult> ShaderToyHeaderTree(const model::ChannelKinds& channels,
                                                              SourceManager& sources) {
-  std::string text = validate::ShaderToyHeader(validate::PassType::kImage, channels);
+  std::string text = validate::ShaderToyHeader(model::PassKind::kImage, channels);
   std::string key = "front-end:shadertoy-header:" + text;
   return std::static_pointer_cast<const glsl::ParseResult>(sources.Memo(key, [&] {
     const SourceFile& header = sources.Add("<shadertoy-header>", std::move(text), true);
@@ -88,8 +88,7 @@ FrontEndResult RunFrontEnd(const SourceFile& file, glsl::LexedFile lexed, const 
   if (!options.analyze) return result;
   glsl::AnalyzeOptions analyze;
   analyze.version = forced_version != 0 ? forced_version : result.preprocessed.version.number;
-  analyze.stage =
-      kind.stage == Stage::kVertex ? glsl::ShaderStage::kVertex : glsl::ShaderStage::kFragment;
+  analyze.stage = kind.stage;
   if (shadertoy) {
     result.header = ShaderToyHeaderTree(options.channels, sources);
     analyze.header = &result.header->tree;

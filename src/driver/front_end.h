@@ -31,7 +31,7 @@ struct FrontEndResult {
 
 struct FrontEndOptions {
   bool analyze = false;
-  validate::ChannelTypes channels{};
+  model::ChannelKinds channels{};
   // Longest identifier; 0 picks the limit from the #version (see PreprocessOptions).
   uint32_t max_identifier_length = 0;
   // A harness other than ShaderToy (FileDecision::harness_header): the code sees its

@@ -35,7 +35,7 @@ struct InputFile {
   // What the file's .shaderport.toml [[files]] entries say about it (fix, port: the
   // same overrides `check` applies; SelectInputFiles fills them in).
   std::optional<Dialect> dialect{};
-  std::optional<Stage> stage{};
+  std::optional<model::Stage> stage{};
 };
 
 struct InputSet {

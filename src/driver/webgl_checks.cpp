@@ -28,9 +28,9 @@ int VersionOf(const FrontEndResult& front, const WebglCheckSettings& settings) {
 rules::BrowserContext ToBrowserContext(const FrontEndResult& front,
                                        const WebglCheckSettings& settings) {
   rules::BrowserContext context;
-  context.webgl2 = settings.target == Target::kWebGL2;
+  context.target = settings.target;
   context.version = VersionOf(front, settings);
-  context.vertex = settings.stage == Stage::kVertex;
+  context.stage = settings.stage;
   context.file = nullptr;
   context.lexed = &front.lexed;
   context.tree = &front.parsed.tree;
@@ -51,13 +51,11 @@ DiagnosticList RunWebglChecks(const SourceFile& file, const FrontEndResult& fron
   if (!front.model) return found;
   rule::PortSettings port_settings;
   port_settings.mode = rule::PortMode::kFix;
-  port_settings.stage =
-      settings.stage == Stage::kVertex ? rule::ShaderStage::kVertex : rule::ShaderStage::kFragment;
+  port_settings.stage = settings.stage;
   port_settings.source_version = VersionOf(front, settings);
   port_settings.written_version =
       front.preprocessed.version.present ? front.preprocessed.version.number : 0;
-  port_settings.target =
-      settings.target == Target::kWebGL1 ? rule::WebglTarget::kWebGL1 : rule::WebglTarget::kWebGL2;
+  port_settings.target = settings.target;
   port_settings.behind_site_header = settings.behind_header;
   for (const rule::Rule* check : rules::CheckRules()) {
     rule::RuleContext context(file, front.lexed, front.preprocessed, front.parsed.tree,

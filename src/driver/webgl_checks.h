@@ -12,8 +12,8 @@
 namespace shaderport::driver {
 
 struct WebglCheckSettings {
-  Target target = Target::kWebGL2;
-  Stage stage = Stage::kFragment;
+  model::Target target = model::Target::kWebGL2;
+  model::Stage stage = model::Stage::kFragment;
   bool shadertoy = false;
   // The version a host forces on the code (FileDecision::ForcedVersion), 0: its own.
   int forced_version = 0;

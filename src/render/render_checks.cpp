@@ -14,11 +14,11 @@ namespace {
 // never assigned by mainImage.
 constexpr float kSiteInitialValue = 1e19f;
 
-void AddCompileDiagnostics(const std::string& log, ShaderStage stage, int pass,
+void AddCompileDiagnostics(const std::string& log, model::Stage stage, int pass,
                            const CheckContext& context, DiagnosticList& out) {
   const std::string stage_name = pass >= 0
                                      ? "buffer pass " + std::to_string(pass) + " fragment"
-                                     : (stage == ShaderStage::kVertex ? "vertex" : "fragment");
+                                     : (stage == model::Stage::kVertex ? "vertex" : "fragment");
   bool any = false;
   for (const MesaLogEntry& entry : ParseMesaLog(log)) {
     if (!entry.is_error) continue;
@@ -184,11 +184,11 @@ DiagnosticList CheckOutcome(const RenderOutcome& outcome, const CheckContext& co
   switch (outcome.status) {
     case RenderStatus::kCompileFailed:
       if (outcome.vertex_log.find("error") != std::string::npos) {
-        AddCompileDiagnostics(outcome.vertex_log, ShaderStage::kVertex, outcome.failed_pass,
+        AddCompileDiagnostics(outcome.vertex_log, model::Stage::kVertex, outcome.failed_pass,
                               context, out);
       }
       if (outcome.fragment_log.find("error") != std::string::npos || out.empty()) {
-        AddCompileDiagnostics(outcome.fragment_log, ShaderStage::kFragment, outcome.failed_pass,
+        AddCompileDiagnostics(outcome.fragment_log, model::Stage::kFragment, outcome.failed_pass,
                               context, out);
       }
       return out;

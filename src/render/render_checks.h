@@ -8,18 +8,17 @@
 #include <string_view>
 
 #include "diag/diagnostic.h"
+#include "model/stage.h"
 #include "render/render_request.h"
 
 namespace shaderport::render {
-
-enum class ShaderStage : uint8_t { kVertex, kFragment };
 
 struct CheckContext {
   // Where diagnostics without a line point: normally the whole user file.
   SourceRange anchor;
   // Maps a 1-based line of the text given to Mesa to the user's source; nullopt
   // when the line is generated (a header or wrapper). Unset: everything at anchor.
-  std::function<std::optional<SourceRange>(ShaderStage stage, uint32_t line)> map_line;
+  std::function<std::optional<SourceRange>(model::Stage stage, uint32_t line)> map_line;
   // The same for the text of buffer pass `pass` (RenderRequest::buffer_passes).
   std::function<std::optional<SourceRange>(int pass, uint32_t line)> map_buffer_line;
   // False for a vertex shader drawn on the generated mesh, which covers only part

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "model/channel_kind.h"
 #include "render/gl_backend.h"
 
 namespace shaderport::render {
@@ -19,10 +20,8 @@ struct ImageRgba8 {
   std::vector<uint8_t> pixels;  // width * height * 4
 };
 
-enum class ChannelKind : uint8_t { k2D, kCube, k3D };
-
 struct ChannelInput {
-  ChannelKind kind = ChannelKind::k2D;
+  model::ChannelKind kind = model::ChannelKind::k2D;
   ImageRgba8 image;  // used for k2D when non-empty, else a procedural texture
   // The site feeds nothing to this channel: no texture is bound, so sampling gives
   // (0, 0, 0, 1) and iChannelResolution is 0, as in the browser.
@@ -45,6 +44,7 @@ enum class ChannelWrap : uint8_t { kRepeat, kClamp };
 
 // What one channel of one pass of a ShaderToy project reads. The site binds each
 // pass's own inputs, so every pass (the main one and each BufferPass) has its own.
+// Not a model::ChannelKind: what is bound (a buffer, the keyboard, nothing), not how it samples.
 enum class PassChannelKind : uint8_t {
   // Not given: the channel is bound as single-pass renders bind it, from
   // ShaderToyInputs::channels and the pass's channel_buffers.

@@ -53,14 +53,14 @@ void PutChannel(std::string& out, const ChannelInput& channel) {
 bool GetChannel(Reader& in, ChannelInput& channel) {
   uint8_t kind = 0;
   uint64_t count = 0;
-  if (!in.Get(kind) || kind > static_cast<uint8_t>(ChannelKind::k3D) ||
+  if (!in.Get(kind) || kind > static_cast<uint8_t>(model::ChannelKind::k3D) ||
       !in.GetBool(channel.unbound) || !in.Get(channel.image.width) ||
       !in.Get(channel.image.height) || !in.Get(count) ||
       count != uint64_t{channel.image.width} * channel.image.height * 4 ||
       in.bytes.size() - in.at < count) {
     return false;
   }
-  channel.kind = static_cast<ChannelKind>(kind);
+  channel.kind = static_cast<model::ChannelKind>(kind);
   channel.image.pixels.assign(in.bytes.begin() + static_cast<std::ptrdiff_t>(in.at),
                               in.bytes.begin() + static_cast<std::ptrdiff_t>(in.at + count));
   in.at += count;

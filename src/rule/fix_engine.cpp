@@ -104,7 +104,7 @@ void StopAtLimit(const AnalyzedShader& analysis, FileId id,
 
 }  // namespace
 
-AnalyzedShader AnalyzePlain(const SourceFile& file, int version, ShaderStage stage,
+AnalyzedShader AnalyzePlain(const SourceFile& file, int version, model::Stage stage,
                             std::vector<std::string> predefined) {
   auto analysis = std::make_shared<PlainAnalysis>();
   analysis->lexed = glsl::Lex(file);
@@ -117,8 +117,7 @@ AnalyzedShader AnalyzePlain(const SourceFile& file, int version, ShaderStage sta
   analysis->parsed = glsl::Parse(analysis->preprocessed, parse_options);
   glsl::AnalyzeOptions analyze_options;
   analyze_options.version = parse_options.version;
-  analyze_options.stage =
-      stage == ShaderStage::kVertex ? glsl::ShaderStage::kVertex : glsl::ShaderStage::kFragment;
+  analyze_options.stage = stage;
   analysis->model = glsl::Analyze(analysis->parsed.tree, analyze_options);
 
   AnalyzedShader shader;

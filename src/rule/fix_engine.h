@@ -40,7 +40,7 @@ using Analyzer = std::function<AnalyzedShader(const SourceFile& file)>;
 // Lex, preprocess, parse and analyse `file` alone as GLSL ES `version` (0: its
 // own #version) for `stage`, with `predefined` macros. Enough for plain WebGL code and tests.
 AnalyzedShader AnalyzePlain(const SourceFile& file, int version = 0,
-                            ShaderStage stage = ShaderStage::kFragment,
+                            model::Stage stage = model::Stage::kFragment,
                             std::vector<std::string> predefined = {});
 
 struct FixEngineOptions {

@@ -11,6 +11,9 @@
 #include "glsl/lex/preprocessor.h"
 #include "glsl/sema/semantic_model.h"
 #include "glsl/syntax/ast.h"
+#include "model/channel_kind.h"
+#include "model/stage.h"
+#include "model/target.h"
 #include "rule/harness_dialect.h"
 #include "rule/macro_fixes.h"
 #include "source/source_file.h"
@@ -22,26 +25,17 @@ enum class PortMode {
   kPort,  // produce WebGL2 GLSL ES 3.00 with a real main()
 };
 
-enum class ShaderStage { kVertex, kFragment };
-
-// The WebGL context a shader will run in, apart from the GLSL ES version its
-// #version line picks: a WebGL2 context also compiles GLSL ES 1.00 code.
-enum class WebglTarget { kWebGL1, kWebGL2 };
-
-// Sampler kind chosen for a ShaderToy channel; kAuto lets the ShaderToy rule
-// infer it from how the code samples the channel.
-enum class ChannelKind { kAuto, k2D, kCube, k3D };
-
 struct PortSettings {
   PortMode mode = PortMode::kPort;
-  ShaderStage stage = ShaderStage::kFragment;
+  model::Stage stage = model::Stage::kFragment;
   // The harness the code was written for: ShaderToy, glslsandbox, ..., or none
   // (plain WebGL1/WebGL2 code).
   const HarnessDialect* harness = nullptr;
   int source_version = 100;  // the code's own GLSL ES version: 100 or 300
-  ChannelKind channels[4] = {ChannelKind::kAuto, ChannelKind::kAuto, ChannelKind::kAuto,
-                             ChannelKind::kAuto};
-  WebglTarget target = WebglTarget::kWebGL2;
+  // Sampler kind chosen for each ShaderToy channel; nullopt lets the ShaderToy rule
+  // infer it from how the code samples the channel.
+  model::GivenChannelKinds channels{};
+  model::Target target = model::Target::kWebGL2;
   // The #version line as written (0 when absent), for rules about the line itself.
   int written_version = 0;
   // The code is one of the harness's off-screen buffer passes (a ShaderToy Buffer tab).

@@ -68,7 +68,7 @@ uint64_t CrossCompileLimit(EmitKind kind) {
   return UINT64_MAX;
 }
 
-void EmitFromModule(const SourceFile& file, const EmitOptions& options, Stage stage,
+void EmitFromModule(const SourceFile& file, const EmitOptions& options, model::Stage stage,
                     const SpirvWords& module, const SpirvWords& unoptimized, EmitResult& result) {
   CrossOptions cross;
   cross.hlsl_shader_model = options.hlsl_shader_model;
@@ -144,7 +144,7 @@ bool WithinInliningLimits(const SourceFile& file, const SpirvWords& words, EmitK
   return true;
 }
 
-void EmitSpirvKinds(const SourceFile& file, Stage stage, const EmitOptions& options,
+void EmitSpirvKinds(const SourceFile& file, model::Stage stage, const EmitOptions& options,
                     EmitResult& result) {
   SpirvCompilation compiled = CompileToSpirv(file, stage);
   result.diagnostics = std::move(compiled.diagnostics);
@@ -194,11 +194,11 @@ const char* EmitKindName(EmitKind kind) {
   return "essl";
 }
 
-std::string EmitExtension(EmitKind kind, Stage stage) {
+std::string EmitExtension(EmitKind kind, model::Stage stage) {
   switch (kind) {
     case EmitKind::kEssl:
     case EmitKind::kEsslRoundtrip:
-      return stage == Stage::kVertex ? ".vert" : ".frag";
+      return stage == model::Stage::kVertex ? ".vert" : ".frag";
     case EmitKind::kSpirv:
       return ".spv";
     case EmitKind::kSpvasm:
@@ -213,7 +213,7 @@ std::string EmitExtension(EmitKind kind, Stage stage) {
   return "";
 }
 
-EmitResult Emit(const SourceFile& file, Stage stage, const EmitOptions& options) {
+EmitResult Emit(const SourceFile& file, model::Stage stage, const EmitOptions& options) {
   EmitResult result;
   if (!CheckOptions(file, options, result)) return result;
   if (options.kind == EmitKind::kEssl) {

@@ -9,11 +9,10 @@
 #include <string_view>
 
 #include "diag/diagnostic.h"
+#include "model/stage.h"
 #include "source/source_file.h"
 
 namespace shaderport::toolchain {
-
-enum class Stage { kVertex, kFragment };
 
 enum class EmitKind { kEssl, kSpirv, kSpvasm, kHlsl, kMsl, kEsslRoundtrip, kReflect };
 
@@ -22,7 +21,7 @@ std::optional<EmitKind> EmitKindFromName(std::string_view name);
 const char* EmitKindName(EmitKind kind);
 // File name extension (with the dot) for one output of this kind: ".frag"/".vert" for the ESSL
 // kinds, ".spv", ".spvasm", ".hlsl", ".metal", ".json".
-std::string EmitExtension(EmitKind kind, Stage stage);
+std::string EmitExtension(EmitKind kind, model::Stage stage);
 
 struct EmitOptions {
   EmitKind kind = EmitKind::kEssl;
@@ -44,6 +43,6 @@ struct EmitResult {
 // text unchanged. Every other kind compiles it to SPIR-V as 310 es (OpenGL client semantics,
 // automatic locations and bindings) and validates the module with SPIRV-Tools. Thread-safe:
 // independent calls may run in parallel.
-EmitResult Emit(const SourceFile& file, Stage stage, const EmitOptions& options);
+EmitResult Emit(const SourceFile& file, model::Stage stage, const EmitOptions& options);
 
 }  // namespace shaderport::toolchain

@@ -258,7 +258,7 @@ ordered_json ShaderToy(const ordered_json& uniforms, const ordered_json& sampler
   return {{"channels", std::move(channels)}, {"uniformsUsed", std::move(used)}};
 }
 
-ordered_json BuildJson(const SpirvWords& words, Stage stage, bool shadertoy) {
+ordered_json BuildJson(const SpirvWords& words, model::Stage stage, bool shadertoy) {
   ReflectCompiler compiler(words);
   const auto active = compiler.get_active_interface_variables();
   Context context{compiler, {active.begin(), active.end()}};
@@ -267,7 +267,7 @@ ordered_json BuildJson(const SpirvWords& words, Stage stage, bool shadertoy) {
 
   ordered_json json;
   json["version"] = 1;
-  json["stage"] = stage == Stage::kVertex ? "vertex" : "fragment";
+  json["stage"] = stage == model::Stage::kVertex ? "vertex" : "fragment";
   const auto entry_points = compiler.get_entry_points_and_stages();
   json["entryPoint"] = entry_points.empty() ? "main" : entry_points.front().name;
   ordered_json uniforms = ordered_json::array();
@@ -290,7 +290,7 @@ ordered_json BuildJson(const SpirvWords& words, Stage stage, bool shadertoy) {
 
 }  // namespace
 
-ReflectOutcome Reflect(const SpirvWords& words, Stage stage, bool shadertoy) {
+ReflectOutcome Reflect(const SpirvWords& words, model::Stage stage, bool shadertoy) {
   ReflectOutcome outcome;
   try {
     outcome.json = BuildJson(words, stage, shadertoy).dump(2) + "\n";

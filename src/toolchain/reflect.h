@@ -16,6 +16,6 @@ struct ReflectOutcome {
 
 // `words` should be the unoptimised module, which keeps every declaration and its name.
 // With `shadertoy`, also reports how iChannel0..3 and the site's uniforms are used.
-ReflectOutcome Reflect(const SpirvWords& words, Stage stage, bool shadertoy);
+ReflectOutcome Reflect(const SpirvWords& words, model::Stage stage, bool shadertoy);
 
 }  // namespace shaderport::toolchain

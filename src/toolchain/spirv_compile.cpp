@@ -20,8 +20,8 @@ void InitializeGlslangOnce() {
   std::call_once(once, [] { glslang::InitializeProcess(); });
 }
 
-EShLanguage Language(Stage stage) {
-  return stage == Stage::kVertex ? EShLangVertex : EShLangFragment;
+EShLanguage Language(model::Stage stage) {
+  return stage == model::Stage::kVertex ? EShLangVertex : EShLangFragment;
 }
 
 void SetSource(glslang::TShader& shader, const SourceFile& file, const char*& text, int& length) {
@@ -32,7 +32,7 @@ void SetSource(glslang::TShader& shader, const SourceFile& file, const char*& te
 
 // The authoritative question: is the text valid GLSL ES 3.00 (pure validation, as `check`)?
 // Returns glslang's log when it is not, "" when it is.
-std::string EsslErrors(const SourceFile& file, Stage stage) {
+std::string EsslErrors(const SourceFile& file, model::Stage stage) {
   glslang::TShader shader(Language(stage));
   const char* text = nullptr;
   int length = 0;
@@ -50,7 +50,7 @@ std::string EsslErrors(const SourceFile& file, Stage stage) {
 }
 
 // The leg failed: decide whose fault it is, and say so.
-void ReportFailure(const std::string& leg_log, const SourceFile& file, Stage stage,
+void ReportFailure(const std::string& leg_log, const SourceFile& file, model::Stage stage,
                    DiagnosticList& out) {
   const std::string essl_log = EsslErrors(file, stage);
   if (!essl_log.empty()) {
@@ -63,7 +63,7 @@ void ReportFailure(const std::string& leg_log, const SourceFile& file, Stage sta
 
 }  // namespace
 
-SpirvCompilation CompileToSpirv(const SourceFile& file, Stage stage) {
+SpirvCompilation CompileToSpirv(const SourceFile& file, model::Stage stage) {
   InitializeGlslangOnce();
   SpirvCompilation result;
   const EShLanguage language = Language(stage);

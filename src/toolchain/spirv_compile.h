@@ -20,6 +20,6 @@ struct SpirvCompilation {
 // automatic locations and bindings: plain uniforms keep their names (toolchain-facts.md §1).
 // A failure there is `spirv/leg-limitation` when the text is valid ESSL 3.00 (310 es reserves
 // more words) and `spirv/invalid-input` when it is not.
-SpirvCompilation CompileToSpirv(const SourceFile& file, Stage stage);
+SpirvCompilation CompileToSpirv(const SourceFile& file, model::Stage stage);
 
 }  // namespace shaderport::toolchain

@@ -30,9 +30,9 @@ namespace {
 constexpr size_t kIsolatedStackBytes = size_t{32} << 20;
 
 // Must run on the thread that owns the TShader: glslang's pool allocator is per thread.
-void RunOnThisThread(std::span<const GlslangPart> parts, Stage stage, int default_version,
+void RunOnThisThread(std::span<const GlslangPart> parts, model::Stage stage, int default_version,
                      bool link, GlslangRun& run) {
-  const EShLanguage language = stage == Stage::kVertex ? EShLangVertex : EShLangFragment;
+  const EShLanguage language = stage == model::Stage::kVertex ? EShLangVertex : EShLangFragment;
   std::vector<const char*> texts, names;
   std::vector<int> lengths;
   std::vector<std::string_view> views;
@@ -65,7 +65,7 @@ void RunOnThisThread(std::span<const GlslangPart> parts, Stage stage, int defaul
   run.ran = true;
 }
 
-GlslangRun RunWithStack(std::span<const GlslangPart> parts, Stage stage, int default_version,
+GlslangRun RunWithStack(std::span<const GlslangPart> parts, model::Stage stage, int default_version,
                         bool link, size_t stack_bytes) {
   InitializeGlslangOnce();
   GlslangRun run;
@@ -76,8 +76,8 @@ GlslangRun RunWithStack(std::span<const GlslangPart> parts, Stage stage, int def
 // The same on the calling thread's long-lived large-stack thread: `check` runs
 // glslang once a file, and a fresh 256 MiB-stack thread each time costs system
 // time (mapping and unmapping the stack, faulting its pages in again).
-GlslangRun RunOnLongLivedStack(std::span<const GlslangPart> parts, Stage stage, int default_version,
-                               bool link) {
+GlslangRun RunOnLongLivedStack(std::span<const GlslangPart> parts, model::Stage stage,
+                               int default_version, bool link) {
   InitializeGlslangOnce();
   GlslangRun run;
   RunOnLongLivedLargeStack([&] { RunOnThisThread(parts, stage, default_version, link, run); });
@@ -144,13 +144,13 @@ bool ReadUntilClosed(int fd, std::string& out, int timeout_ms) {
 
 }  // namespace
 
-GlslangRun RunGlslang(std::span<const GlslangPart> parts, Stage stage, int default_version,
+GlslangRun RunGlslang(std::span<const GlslangPart> parts, model::Stage stage, int default_version,
                       bool link) {
   return RunOnLongLivedStack(parts, stage, default_version, link);
 }
 
-GlslangRun RunGlslangIsolated(std::span<const GlslangPart> parts, Stage stage, int default_version,
-                              bool link, int timeout_ms) {
+GlslangRun RunGlslangIsolated(std::span<const GlslangPart> parts, model::Stage stage,
+                              int default_version, bool link, int timeout_ms) {
   GlslangRun failed;
   int fds[2];
   // CLOEXEC: no program started later inherits it (forked render workers close

@@ -6,9 +6,9 @@
 #include <string>
 #include <string_view>
 
-namespace shaderport::validate {
+#include "model/stage.h"
 
-enum class Stage { kVertex, kFragment };
+namespace shaderport::validate {
 
 // glslang's process-wide set-up, done once whichever thread asks first.
 void InitializeGlslangOnce();
@@ -30,12 +30,12 @@ struct GlslangRun {
 // Parses (EShMsgCascadingErrors: every error, not only the first) and links when
 // `link` is set, on a thread with a large stack. `default_version` applies when the
 // text has no #version (100 for WebGL1 input).
-GlslangRun RunGlslang(std::span<const GlslangPart> parts, Stage stage, int default_version,
+GlslangRun RunGlslang(std::span<const GlslangPart> parts, model::Stage stage, int default_version,
                       bool link);
 
 // The same in a forked child process, for input known to make glslang recurse
 // without bound: a crash or a hang (over `timeout_ms`) is reported, not suffered.
-GlslangRun RunGlslangIsolated(std::span<const GlslangPart> parts, Stage stage, int default_version,
-                              bool link, int timeout_ms = 10000);
+GlslangRun RunGlslangIsolated(std::span<const GlslangPart> parts, model::Stage stage,
+                              int default_version, bool link, int timeout_ms = 10000);
 
 }  // namespace shaderport::validate

@@ -30,7 +30,7 @@ struct ShaderPart {
 
 struct ValidationRequest {
   std::vector<ShaderPart> parts;
-  Stage stage = Stage::kFragment;
+  model::Stage stage = model::Stage::kFragment;
   int default_version = 100;  // used when no #version: 100 = GLSL ES 1.00 (WebGL1)
   bool link = false;          // link checks that the entry point is defined
   // A ShaderToy entry point ("mainImage") that generated code declares and calls.

@@ -28,64 +28,24 @@ constexpr std::string_view kUniforms =
     "uniform float iTimeDelta;\n"
     "uniform float iFrameRate;\n";
 
-const char* SamplerName(ChannelType type) {
-  switch (type) {
-    case ChannelType::kCube:
-      return "samplerCube";
-    case ChannelType::k3D:
-      return "sampler3D";
-    case ChannelType::k2D:
-      break;
-  }
-  return "sampler2D";
-}
-
 }  // namespace
 
-std::optional<PassType> PassTypeFromName(std::string_view name) {
-  if (name == "image") return PassType::kImage;
-  if (name == "buffer") return PassType::kBuffer;
-  if (name == "cube") return PassType::kCube;
-  if (name == "sound") return PassType::kSound;
-  return std::nullopt;
-}
-
-const char* PassTypeName(PassType type) {
-  switch (type) {
-    case PassType::kBuffer:
-      return "buffer";
-    case PassType::kCube:
-      return "cube";
-    case PassType::kSound:
-      return "sound";
-    case PassType::kImage:
-      break;
-  }
-  return "image";
-}
-
-ChannelType ChannelTypeFromCtype(std::string_view ctype) {
-  if (ctype == "cubemap") return ChannelType::kCube;
-  if (ctype == "volume") return ChannelType::k3D;
-  return ChannelType::k2D;
-}
-
-std::string_view EntryPointName(PassType type) {
-  if (type == PassType::kCube) return "mainCubemap";
-  if (type == PassType::kSound) return "mainSound";
+std::string_view EntryPointName(model::PassKind type) {
+  if (type == model::PassKind::kCube) return "mainCubemap";
+  if (type == model::PassKind::kSound) return "mainSound";
   return "mainImage";
 }
 
-std::string_view EntryPointSignature(PassType type) {
-  if (type == PassType::kCube) {
+std::string_view EntryPointSignature(model::PassKind type) {
+  if (type == model::PassKind::kCube) {
     return "void mainCubemap(out vec4 fragColor, in vec2 fragCoord, in vec3 rayOri, in vec3 "
            "rayDir)";
   }
-  if (type == PassType::kSound) return "vec2 mainSound(int samp, float time)";
+  if (type == model::PassKind::kSound) return "vec2 mainSound(int samp, float time)";
   return "void mainImage(out vec4 fragColor, in vec2 fragCoord)";
 }
 
-std::string ShaderToyHeader(PassType type, const ChannelTypes& channels) {
+std::string ShaderToyHeader(model::PassKind type, const model::ChannelKinds& channels) {
   std::string header =
       "#version 300 es\n"
       "#ifdef GL_ES\n"
@@ -95,20 +55,21 @@ std::string ShaderToyHeader(PassType type, const ChannelTypes& channels) {
       "#endif\n";
   header += kUniforms;
   for (size_t i = 0; i < channels.size(); ++i) {
-    header += "uniform " + std::string(SamplerName(channels[i])) + " iChannel" + std::to_string(i) +
-              ";\n";
+    header += "uniform " + std::string(model::SamplerTypeName(channels[i])) + " iChannel" +
+              std::to_string(i) + ";\n";
   }
-  if (type == PassType::kCube) header += "uniform vec4 unViewport;\nuniform vec3 unCorners[5];\n";
-  if (type == PassType::kSound)
+  if (type == model::PassKind::kCube)
+    header += "uniform vec4 unViewport;\nuniform vec3 unCorners[5];\n";
+  if (type == model::PassKind::kSound)
     header += "uniform float iTimeOffset;\nuniform int iSampleOffset;\n";
   header += "out vec4 shadertoy_out_color;\n";
   header += "#define HW_PERFORMANCE 1\n";
   return header;
 }
 
-std::string ShaderToyEpilogue(PassType type) {
+std::string ShaderToyEpilogue(model::PassKind type) {
   switch (type) {
-    case PassType::kSound:
+    case model::PassKind::kSound:
       return "#ifndef mainSound\n"
              "vec2 mainSound(int, float);\n"
              "#endif\n"
@@ -124,7 +85,7 @@ std::string ShaderToyEpilogue(PassType type) {
              "  shadertoy_out_color = vec4(shadertoy_vl.x, shadertoy_vh.x, shadertoy_vl.y, "
              "shadertoy_vh.y);\n"
              "}\n";
-    case PassType::kCube:
+    case model::PassKind::kCube:
       return "#ifndef mainCubemap\n"
              "void mainCubemap(out vec4, in vec2, in vec3, in vec3);\n"
              "#endif\n"
@@ -138,8 +99,9 @@ std::string ShaderToyEpilogue(PassType type) {
              "shadertoy_rd);\n"
              "  shadertoy_out_color = shadertoy_color;\n"
              "}\n";
-    case PassType::kImage:
-    case PassType::kBuffer:
+    case model::PassKind::kImage:
+    case model::PassKind::kBuffer:
+    case model::PassKind::kCommon:
       break;
   }
   std::string epilogue =
@@ -149,18 +111,19 @@ std::string ShaderToyEpilogue(PassType type) {
       "void main() {\n"
       "  vec4 shadertoy_color = vec4(1e20);\n"
       "  mainImage(shadertoy_color, gl_FragCoord.xy);\n";
-  // Image forces alpha to 1; buffers keep what the shader wrote.
-  epilogue += type == PassType::kImage ? "  shadertoy_out_color = vec4(shadertoy_color.xyz, 1.0);\n"
-                                       : "  shadertoy_out_color = shadertoy_color;\n";
+  // Image (and Common, composed as Image) forces alpha to 1; buffers keep what the shader wrote.
+  epilogue += type != model::PassKind::kBuffer
+                  ? "  shadertoy_out_color = vec4(shadertoy_color.xyz, 1.0);\n"
+                  : "  shadertoy_out_color = shadertoy_color;\n";
   epilogue += "}\n";
   return epilogue;
 }
 
-ValidationRequest ComposeShaderToyRequest(SourceManager& sources, PassType type,
-                                          const ChannelTypes& channels, const SourceFile* common,
-                                          const SourceFile& pass) {
+ValidationRequest ComposeShaderToyRequest(SourceManager& sources, model::PassKind type,
+                                          const model::ChannelKinds& channels,
+                                          const SourceFile* common, const SourceFile& pass) {
   ValidationRequest request;
-  request.stage = Stage::kFragment;
+  request.stage = model::Stage::kFragment;
   request.default_version = 300;
   request.link = true;
   request.entry_point = std::string(EntryPointName(type));

@@ -17,7 +17,7 @@
 
 namespace {
 
-using shaderport::driver::ShaderToyPass;
+namespace model = shaderport::model;
 using namespace shaderport::driver::project;
 namespace validate = shaderport::validate;
 
@@ -135,29 +135,25 @@ int main(int argc, char** argv) {
     if (type == "common") continue;
     PagePass page;
     page.tab_name = pass.value("name", "");
-    validate::PassType site = validate::PassType::kImage;
     if (type == "buffer") {
-      page.kind = ShaderToyPass::kBuffer;
-      site = validate::PassType::kBuffer;
+      page.kind = model::PassKind::kBuffer;
       page.output_buffer = page.tab_name.size() == 8 ? page.tab_name[7] - 'A' : -1;
     } else if (type == "cubemap" || type == "cube") {
-      page.kind = ShaderToyPass::kCubemap;
-      site = validate::PassType::kCube;
+      page.kind = model::PassKind::kCube;
     } else if (type == "sound") {
-      page.kind = ShaderToyPass::kSound;
-      site = validate::PassType::kSound;
+      page.kind = model::PassKind::kSound;
     }
-    validate::ChannelTypes channels{};
+    model::ChannelKinds channels{};
     for (const auto& input : pass.value("inputs", nlohmann::json::array())) {
       page.inputs.push_back(ReadInput(input));
       const int c = page.inputs.back().channel;
       if (c >= 0 && c < 4)
-        channels[static_cast<size_t>(c)] = validate::ChannelTypeFromCtype(input.value("ctype", ""));
+        channels[static_cast<size_t>(c)] = model::ChannelKindFromCtype(input.value("ctype", ""));
     }
-    const std::string header = validate::ShaderToyHeader(site, channels);
+    const std::string header = validate::ShaderToyHeader(page.kind, channels);
     const std::string code = pass.value("code", "");
     page.fragment_shader = header + (common.empty() ? "" : WithNewline(common)) +
-                           WithNewline(code) + validate::ShaderToyEpilogue(site);
+                           WithNewline(code) + validate::ShaderToyEpilogue(page.kind);
     page.lines = ComposedLineRuns(Lines(header), Lines(common), Lines(code), page.tab_name);
     project.passes.push_back(std::move(page));
   }

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <string>
 
-#include "driver/validate_kinds.h"
 #include "validate/glslang_validator.h"
 #include "validate/shadertoy_contract.h"
 
@@ -14,13 +13,12 @@ size_t ValidationErrors(std::string_view text, const driver::DetectedKind& kind,
   const SourceFile& file = sources.Add("fuzz-validate.glsl", std::string(text));
   validate::ValidationRequest request;
   if (!as_output && kind.dialect == driver::Dialect::kShaderToy) {
-    const bool is_common = kind.pass == driver::ShaderToyPass::kCommon;
-    request = validate::ComposeShaderToyRequest(sources, driver::ToPassType(kind.pass), {}, nullptr,
-                                                file);
+    const bool is_common = kind.pass == model::PassKind::kCommon;
+    request = validate::ComposeShaderToyRequest(sources, kind.pass, {}, nullptr, file);
     if (is_common) request.link = false;
   } else {
     request.parts.push_back({file.Name(), file.Text(), file.Id()});
-    request.stage = driver::ToValidateStage(kind.stage);
+    request.stage = kind.stage;
     request.default_version = 100;
   }
   const DiagnosticList diagnostics = validate::ValidateWithGlslang(request).diagnostics;

@@ -13,7 +13,7 @@ from shadertoy_reference import _UNIFORMS
 # ChannelTypeFromCtype: everything that is not a cube map or a volume is a sampler2D.
 _SAMPLER_BY_CTYPE = {"cubemap": "samplerCube", "volume": "sampler3D"}
 
-# Corpus-record pass type -> PassType name of the C++ ("common" is no pass of its own).
+# Corpus-record pass type -> model::PassKind name of the C++ (Common is no pass of its own).
 PASS_KIND = {"image": "image", "buffer": "buffer", "cube": "cube", "cubemap": "cube",
              "sound": "sound"}
 

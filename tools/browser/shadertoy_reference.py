@@ -61,13 +61,13 @@ _SAMPLER_BY_CTYPE = {"cubemap": "samplerCube", "volume": "sampler3D"}
 
 
 def shadertoy_header(channel_samplers=("sampler2D",) * 4):
-    """ShaderToyHeader(PassType::kImage, channels): shadertoy_compose.header, which
+    """ShaderToyHeader(PassKind::kImage, channels): shadertoy_compose.header, which
     mirrors every pass kind (imported here, since it reads this module's uniforms)."""
     import shadertoy_compose
     return shadertoy_compose.header("image", channel_samplers)
 
 
-# ShaderToyEpilogue(PassType::kImage)
+# ShaderToyEpilogue(PassKind::kImage)
 IMAGE_EPILOGUE = ("#ifndef mainImage\n"
                   "void mainImage(out vec4, in vec2);\n"
                   "#endif\n"

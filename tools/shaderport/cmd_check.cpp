@@ -79,15 +79,6 @@ std::optional<Baseline> ReadBaselineFile(const std::string& path, std::string& e
   return ParseBaseline(*read.bytes, error);
 }
 
-bool ParseChannel(const std::string& spec, validate::ChannelTypes& channels,
-                  std::array<bool, 4>& given) {
-  const std::optional<ChannelSpec> parsed = ParseChannelSpec(spec);
-  if (!parsed) return false;
-  channels[parsed->index] = parsed->type;
-  given[parsed->index] = true;
-  return true;
-}
-
 bool UseColor(const std::string& mode) {
   if (mode == "always") return true;
   if (mode == "never") return false;
@@ -122,7 +113,7 @@ int RunCheckCommand(const CheckArgs& args) {
     if (!options.fail_on) return UsageError(UnknownName("--fail-on", args.fail_on, kSeverityNames));
   }
   for (const std::string& spec : args.channels) {
-    if (!ParseChannel(spec, options.channels, options.channels_given)) {
+    if (!ParseChannel(spec, options.channels)) {
       return UsageError("bad --channel '" + spec + "' (expected N=2d|cube|3d, N from 0 to 3)");
     }
   }

@@ -86,10 +86,9 @@ int RunExplainFile(const ExplainArgs& args) {
     return kExitUsage;
   }
   for (const std::string& spec : args.channels) {
-    const std::optional<ChannelSpec> parsed = ParseChannelSpec(spec);
-    if (!parsed) return UsageError("bad --channel '" + spec + "' (expected N=2d|cube|3d)");
-    options.channels[parsed->index] = parsed->type;
-    options.channels_given[parsed->index] = true;
+    if (!ParseChannel(spec, options.channels)) {
+      return UsageError("bad --channel '" + spec + "' (expected N=2d|cube|3d)");
+    }
   }
   if (!args.common.empty()) options.common = args.common;
   if (!args.config.empty()) options.config = args.config;

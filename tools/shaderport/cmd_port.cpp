@@ -144,7 +144,7 @@ int RunPort(const PortArgs& args) {
       unwritten.push_back((*inputs)[i].path);
       continue;
     }
-    std::string extension = result.output_stage == driver::Stage::kVertex ? ".vert" : ".frag";
+    std::string extension = result.output_stage == model::Stage::kVertex ? ".vert" : ".frag";
     if (*emit_kind == toolchain::EmitKind::kEssl) {
       outputs[i] = result.text;
     } else {

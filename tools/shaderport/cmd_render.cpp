@@ -98,7 +98,7 @@ int RunRender(const RenderArgs& args) {
     const std::optional<ChannelSpec> parsed = ParseChannelSpec(spec);
     if (!parsed) return UsageError("--channel-type takes N=2d|cube|3d");
     options.channel_types_given[parsed->index] = true;
-    options.channel_types[parsed->index] = parsed->type;
+    options.channel_types[parsed->index] = parsed->kind;
   }
   options.base.frames = args.frames;
   options.base.inputs.time = args.time;

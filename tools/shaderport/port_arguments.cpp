@@ -19,36 +19,19 @@ namespace shaderport::cli {
 
 std::optional<ChannelSpec> ParseChannelSpec(std::string_view spec) {
   if (spec.size() < 3 || spec[1] != '=' || spec[0] < '0' || spec[0] > '3') return std::nullopt;
-  const std::string_view type = spec.substr(2);
-  ChannelSpec parsed{static_cast<size_t>(spec[0] - '0'), validate::ChannelType::k2D};
-  if (type == "cube") {
-    parsed.type = validate::ChannelType::kCube;
-  } else if (type == "3d") {
-    parsed.type = validate::ChannelType::k3D;
-  } else if (type != "2d") {
-    return std::nullopt;
-  }
-  return parsed;
+  const std::optional<model::ChannelKind> kind = model::ParseChannelKind(spec.substr(2));
+  if (!kind) return std::nullopt;
+  return ChannelSpec{static_cast<size_t>(spec[0] - '0'), *kind};
+}
+
+bool ParseChannel(std::string_view spec, model::GivenChannelKinds& channels) {
+  const std::optional<ChannelSpec> parsed = ParseChannelSpec(spec);
+  if (!parsed) return false;
+  channels[parsed->index] = parsed->kind;
+  return true;
 }
 
 namespace {
-
-bool ParseChannel(const std::string& spec, driver::PortOptions& options) {
-  const std::optional<ChannelSpec> parsed = ParseChannelSpec(spec);
-  if (!parsed) return false;
-  switch (parsed->type) {
-    case validate::ChannelType::k2D:
-      options.channels[parsed->index] = rule::ChannelKind::k2D;
-      break;
-    case validate::ChannelType::kCube:
-      options.channels[parsed->index] = rule::ChannelKind::kCube;
-      break;
-    case validate::ChannelType::k3D:
-      options.channels[parsed->index] = rule::ChannelKind::k3D;
-      break;
-  }
-  return true;
-}
 
 // Every name --dialect takes: the three dialects and the shipped harness dialects.
 std::vector<std::string> DialectNames() {
@@ -104,13 +87,13 @@ bool ApplyPortArguments(const PortArguments& arguments, driver::PortOptions& opt
   if (!ResolveDialectOption(arguments.dialect, sources, options.dialect, harness)) return false;
   if (harness) options.harness = &*harness;
   for (const std::string& spec : arguments.channels) {
-    if (!ParseChannel(spec, options)) {
+    if (!ParseChannel(spec, options.channels)) {
       PrintError("bad --channel '" + spec + "' (expected N=2d|cube|3d, N from 0 to 3)");
       return false;
     }
   }
   if (!arguments.stage.empty()) {
-    options.stage = driver::ParseStage(arguments.stage);
+    options.stage = model::ParseStage(arguments.stage);
     if (!options.stage) {
       PrintError(UnknownName("--stage", arguments.stage, kStageNames));
       return false;
@@ -176,14 +159,14 @@ bool ResolveKindOptions(const KindArguments& arguments, SourceManager& sources,
   if (!ResolveDialectOption(arguments.dialect, sources, options.dialect, harness)) return false;
   if (harness && !options.dialect) options.harness = &*harness;
   if (!arguments.stage.empty()) {
-    options.stage = driver::ParseStage(arguments.stage);
+    options.stage = model::ParseStage(arguments.stage);
     if (!options.stage) {
       PrintError(UnknownName("--stage", arguments.stage, kStageNames));
       return false;
     }
   }
   if (!arguments.target.empty()) {
-    options.target = driver::ParseTarget(arguments.target);
+    options.target = model::ParseTarget(arguments.target);
     if (!options.target) {
       PrintError(UnknownName("--target", arguments.target, kTargetNames));
       return false;

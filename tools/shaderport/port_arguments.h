@@ -12,6 +12,7 @@
 #include "driver/check_options.h"
 #include "driver/input_files.h"
 #include "driver/port/port_file.h"
+#include "model/channel_kind.h"
 #include "rule/harness_dialect.h"
 #include "source/source_manager.h"
 #include "validate/shadertoy_contract.h"
@@ -24,12 +25,15 @@ struct PortArguments {
   std::string stage;                  // vertex | fragment
 };
 
-// `--channel N=2d|cube|3d` (and render's --channel-type): which channel, which type.
+// `--channel N=2d|cube|3d` (and render's --channel-type): which channel, which kind.
 struct ChannelSpec {
   size_t index = 0;
-  validate::ChannelType type = validate::ChannelType::k2D;
+  model::ChannelKind kind = model::ChannelKind::k2D;
 };
 std::optional<ChannelSpec> ParseChannelSpec(std::string_view spec);
+// check's, explain-file's, fix's and port's --channel: sets that channel in `channels`;
+// false on a bad spec.
+bool ParseChannel(std::string_view spec, model::GivenChannelKinds& channels);
 
 // --dialect: shadertoy, webgl1 or webgl2 sets `dialect`; a harness dialect's name or
 // TOML file is loaded into `harness` (ShaderToy's also sets `dialect`). Prints why and

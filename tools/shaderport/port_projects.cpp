@@ -23,7 +23,7 @@ namespace {
 struct ProgramInput {
   driver::InputFile input;
   driver::PortResult result;
-  bool vertex() const { return result.output_stage == driver::Stage::kVertex; }
+  bool vertex() const { return result.output_stage == model::Stage::kVertex; }
 };
 
 // Pages of shaders that are not ShaderToy passes: a vertex and a fragment shader

@@ -40,8 +40,8 @@ struct RuleSetting {
 struct FileOverride {
   std::string glob;
   std::optional<Dialect> dialect;
-  std::optional<Stage> stage;
-  std::optional<Target> target;
+  std::optional<model::Stage> stage;
+  std::optional<model::Target> target;
 };
 
 struct Config {
@@ -84,8 +84,8 @@ bool IsIncluded(const Config& config, const std::filesystem::path& file);
 
 struct FileSettings {
   std::optional<Dialect> dialect;
-  std::optional<Stage> stage;
-  std::optional<Target> target;
+  std::optional<model::Stage> stage;
+  std::optional<model::Target> target;
 };
 // Every [[files]] entry whose glob matches, later entries overriding earlier ones.
 FileSettings SettingsFor(const Config& config, const std::filesystem::path& file);

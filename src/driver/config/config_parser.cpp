@@ -201,12 +201,12 @@ class ConfigParser {
         }
         ok = ok && entry.dialect.has_value();
       } else if (name == "stage") {
-        if (text && !(entry.stage = ParseStage(*text))) {
+        if (text && !(entry.stage = model::ParseStage(*text))) {
           BadValue(value, "'" + *text + "' is not a stage; use vertex or fragment");
         }
         ok = ok && entry.stage.has_value();
       } else if (name == "target") {
-        if (text && !(entry.target = ParseTarget(*text))) {
+        if (text && !(entry.target = model::ParseTarget(*text))) {
           BadValue(value, "'" + *text + "' is not a target; use webgl1 or webgl2");
         }
         ok = ok && entry.target.has_value();

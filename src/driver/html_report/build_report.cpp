@@ -59,7 +59,7 @@ PortResult PortEntry(const Job& job, SourceManager& sources, ReportEntry& entry)
   // The port reads the file as the check did (one decision per file, file_decision.h).
   PortOptions port_options;
   port_options.dialect = ParseDialect(job.checked->dialect);
-  port_options.stage = ParseStage(job.checked->stage);
+  port_options.stage = model::ParseStage(job.checked->stage);
   if (!job.checked->harness.empty() && job.checked->harness != "shadertoy") {
     port_options.harness = rules::FindBuiltinDialect(job.checked->harness);
   }

@@ -10,15 +10,15 @@
 namespace shaderport::driver {
 namespace {}  // namespace
 
-validate::ChannelTypes ChannelTypesOf(std::string_view text, validate::ChannelTypes fallback) {
-  validate::ChannelTypes types = fallback;
+model::ChannelKinds ChannelTypesOf(std::string_view text, model::ChannelKinds fallback) {
+  model::ChannelKinds types = fallback;
   struct Kind {
     std::string_view sampler;
-    validate::ChannelType type;
+    model::ChannelKind type;
   };
-  static constexpr Kind kKinds[] = {{"sampler2D", validate::ChannelType::k2D},
-                                    {"samplerCube", validate::ChannelType::kCube},
-                                    {"sampler3D", validate::ChannelType::k3D}};
+  static constexpr Kind kKinds[] = {{"sampler2D", model::ChannelKind::k2D},
+                                    {"samplerCube", model::ChannelKind::kCube},
+                                    {"sampler3D", model::ChannelKind::k3D}};
   for (size_t channel = 0; channel < 4; ++channel) {
     const std::string name = "iChannel" + std::to_string(channel) + ";";
     for (const Kind& kind : kKinds) {
@@ -33,7 +33,7 @@ RenderFileResult RenderPortResult(const PortResult& result, const RenderFileOpti
   RenderFileResult rendered;
   rendered.file = result.file;
   rendered.dialect = "webgl2";
-  rendered.stage = result.output_stage == Stage::kVertex ? "vertex" : "fragment";
+  rendered.stage = result.output_stage == model::Stage::kVertex ? "vertex" : "fragment";
   if (result.file == nullptr || result.read_failed) return rendered;
 
   RenderFileOptions local = options;
@@ -43,7 +43,7 @@ RenderFileResult RenderPortResult(const PortResult& result, const RenderFileOpti
   PreparedShader shader;
   shader.anchor = SourceRange{result.file->Id(), 0, 0};
   shader.user = result.file;
-  if (result.output_stage == Stage::kVertex) {
+  if (result.output_stage == model::Stage::kVertex) {
     shader.vertex_text = result.text;
   } else {
     shader.fragment_text = result.text;
@@ -53,7 +53,7 @@ RenderFileResult RenderPortResult(const PortResult& result, const RenderFileOpti
     // The site shows an Image pass with alpha 1 whatever it writes (the port's main()
     // forces it too), so the render probe can take the alpha.
     shader.main_sets_alpha =
-        result.kind.dialect == Dialect::kShaderToy && result.kind.pass == ShaderToyPass::kImage;
+        result.kind.dialect == Dialect::kShaderToy && result.kind.pass == model::PassKind::kImage;
   }
   // Mesa's lines are lines of the ported text; its source map leads back to the user's file.
   struct LineMap {
@@ -63,10 +63,8 @@ RenderFileResult RenderPortResult(const PortResult& result, const RenderFileOpti
   };
   auto lines = std::make_shared<LineMap>(
       LineMap{SourceFile(kNoFile, "<ported>", result.text), result.map, result.file->Id()});
-  const render::ShaderStage user_stage = result.output_stage == Stage::kVertex
-                                             ? render::ShaderStage::kVertex
-                                             : render::ShaderStage::kFragment;
-  shader.map_line = [lines, user_stage](render::ShaderStage stage,
+  const model::Stage user_stage = result.output_stage;
+  shader.map_line = [lines, user_stage](model::Stage stage,
                                         uint32_t line) -> std::optional<SourceRange> {
     if (stage != user_stage) return std::nullopt;  // the generated vertex shader
     if (line == 0 || line > lines->ported.LineCount()) return std::nullopt;

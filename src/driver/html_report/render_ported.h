@@ -13,7 +13,7 @@ namespace shaderport::driver {
 // The sampler kind of each `iChannelN` the text declares (`uniform samplerCube
 // iChannel1;`), so that the renderer binds a texture of the same kind; channels the
 // text does not declare keep `fallback`'s kind.
-validate::ChannelTypes ChannelTypesOf(std::string_view text, validate::ChannelTypes fallback = {});
+model::ChannelKinds ChannelTypesOf(std::string_view text, model::ChannelKinds fallback = {});
 
 // `result` must hold ported text (not read_failed). Channel kinds come from the
 // ported text's declarations; `options` gives everything else.

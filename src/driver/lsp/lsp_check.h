@@ -35,9 +35,9 @@ struct DocumentCheck {
 
 // What a check should do besides check, from the client's settings.
 struct DocumentCheckSettings {
-  std::optional<Target> target;     // the WebGL context (else decided per file)
-  std::optional<Severity> fail_on;  // else the file's .shaderport.toml, else error
-  bool render = false;              // smoke-render and check the picture (check --render)
+  std::optional<model::Target> target;  // the WebGL context (else decided per file)
+  std::optional<Severity> fail_on;      // else the file's .shaderport.toml, else error
+  bool render = false;                  // smoke-render and check the picture (check --render)
 };
 
 // `uri` names the document in related information; `rules_with_sections` (sorted)

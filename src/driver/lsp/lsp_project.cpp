@@ -45,9 +45,7 @@ CodeUnit PlainUnit(const fs::path& path, std::string uri, std::shared_ptr<const 
   unit.common = path.filename() == "common.glsl";
   unit.in_document = in_document;
   const int version = kind.dialect == Dialect::kWebGL1 ? 100 : 300;
-  const rule::ShaderStage stage =
-      kind.stage == Stage::kVertex ? rule::ShaderStage::kVertex : rule::ShaderStage::kFragment;
-  unit.shader = rule::AnalyzePlain(*unit.file, version, stage);
+  unit.shader = rule::AnalyzePlain(*unit.file, version, kind.stage);
   return unit;
 }
 
@@ -66,9 +64,9 @@ void AddJsonPasses(const fs::path& path, const std::string& uri,
       unit.shown_offsets = pass.origin.document_offsets;
       unit.file = std::make_unique<SourceFile>(0, path.string() + "#" + pass.name, pass.code);
       unit.project = static_cast<int>(p);
-      unit.common = pass.kind == ShaderToyPass::kCommon;
+      unit.common = pass.kind == model::PassKind::kCommon;
       unit.in_document = true;
-      unit.shader = rule::AnalyzePlain(*unit.file, 300, rule::ShaderStage::kFragment);
+      unit.shader = rule::AnalyzePlain(*unit.file, 300, model::Stage::kFragment);
       code.units.push_back(std::move(unit));
     }
   }

@@ -258,9 +258,9 @@ void LspSession::Configure(const Json& settings, std::vector<Json>& out) {
                    {"method", "window/showMessage"},
                    {"params", {{"type", 1}, {"message", message}}}});
   };
-  std::optional<Target> target;
+  std::optional<model::Target> target;
   if (const std::string name = text("target"); !name.empty()) {
-    target = ParseTarget(name);
+    target = model::ParseTarget(name);
     if (!target) return complain("shaderport.target must be webgl1 or webgl2, not '" + name + "'");
   }
   std::optional<Severity> fail_on;

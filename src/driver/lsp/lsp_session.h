@@ -126,7 +126,7 @@ class LspSession {
   // From workspace/didChangeConfiguration (`shaderport.*`): the WebGL context every
   // document is checked for (unset: decided per file, as check does), the severity
   // that fails (unset: the file's .shaderport.toml, else error) and render-on-save.
-  std::optional<Target> target_;
+  std::optional<model::Target> target_;
   std::optional<Severity> fail_on_;
   bool render_on_save_ = false;
   bool initialized_ = false;

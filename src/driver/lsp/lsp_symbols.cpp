@@ -466,7 +466,7 @@ Json CompletionItems(const ProjectCode& code, uint32_t offset) {
     }
   }
   const int version = model != nullptr ? model->version : 300;
-  const glsl::ShaderStage stage = model != nullptr ? model->stage : glsl::ShaderStage::kFragment;
+  const model::Stage stage = model != nullptr ? model->stage : model::Stage::kFragment;
   const bool shadertoy =
       unit != nullptr &&
       (!unit->shown_offsets.empty() ||

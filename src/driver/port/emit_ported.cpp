@@ -33,13 +33,11 @@ EmittedOutput EmitPorted(PortResult& result, const toolchain::EmitOptions& optio
       return emitted;
     }
   }
-  const toolchain::Stage stage = result.output_stage == Stage::kVertex
-                                     ? toolchain::Stage::kVertex
-                                     : toolchain::Stage::kFragment;
+  const model::Stage stage = result.output_stage;
   // Native targets do not zero-initialise or clamp indices as browsers do: the
   // leg compiles the port with the browser's semantics written out.
   BrowserRenderTextOptions semantics;
-  semantics.vertex_stage = stage == toolchain::Stage::kVertex;
+  semantics.vertex_stage = stage == model::Stage::kVertex;
   EditResult with_semantics = BrowserRenderTextWithMap(result.text, semantics);
   const SourceMap map = SourceMap::Compose(result.map, with_semantics.map);
   const SourceFile& ported =

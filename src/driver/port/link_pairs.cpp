@@ -18,7 +18,7 @@ size_t LinkPortedPairs(std::vector<PortResult>& results) {
     if (result.read_failed || result.file == nullptr || !result.validated) continue;
     const std::filesystem::path path(result.file->Name());
     Pair& pair = pairs[(path.parent_path() / path.stem()).string()];
-    (result.output_stage == Stage::kVertex ? pair.vertex : pair.fragment) = &result;
+    (result.output_stage == model::Stage::kVertex ? pair.vertex : pair.fragment) = &result;
   }
   size_t linked = 0;
   for (auto& [stem, pair] : pairs) {

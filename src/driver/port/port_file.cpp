@@ -8,7 +8,6 @@
 #include "driver/file_decision.h"
 #include "driver/front_end.h"
 #include "driver/read_input.h"
-#include "driver/validate_kinds.h"
 #include "rule/fix_engine.h"
 #include "rule/harness_dialect_detect.h"
 #include "rules/registry.h"
@@ -29,21 +28,7 @@ DecisionGiven GivenFor(const PortOptions& options) {
   given.stage = options.stage;
   given.pass = options.pass;
   given.harness = options.harness;
-  for (size_t i = 0; i < given.channels.size(); ++i) {
-    switch (options.channels[i]) {
-      case rule::ChannelKind::k2D:
-        given.channels[i] = validate::ChannelType::k2D;
-        break;
-      case rule::ChannelKind::kCube:
-        given.channels[i] = validate::ChannelType::kCube;
-        break;
-      case rule::ChannelKind::k3D:
-        given.channels[i] = validate::ChannelType::k3D;
-        break;
-      case rule::ChannelKind::kAuto:
-        break;
-    }
-  }
+  given.channels = options.channels;
   return given;
 }
 
@@ -63,11 +48,10 @@ class Porter {
     rules_ = options.rules;
     if (rules_.empty()) rules_ = rules::RulesForMode(options.mode);
     settings_.mode = options.mode;
-    settings_.stage =
-        kind_.stage == Stage::kVertex ? rule::ShaderStage::kVertex : rule::ShaderStage::kFragment;
+    settings_.stage = kind_.stage;
     settings_.harness = decision_.harness;
     settings_.source_version = kind_.dialect == Dialect::kWebGL1 ? 100 : 300;
-    settings_.buffer_pass = kind_.pass == ShaderToyPass::kBuffer;
+    settings_.buffer_pass = kind_.pass == model::PassKind::kBuffer;
     for (int i = 0; i < 4; ++i) settings_.channels[i] = options.channels[i];
   }
 
@@ -168,7 +152,7 @@ class Porter {
       request = ComposeForGlslang(decision_, current, common_, sources_);
     } else {
       request.parts.push_back({file_.Name(), current.Text(), file_.Id()});
-      request.stage = ToValidateStage(kind_.stage);
+      request.stage = kind_.stage;
       request.default_version = 100;
     }
     return validate::ValidateWithGlslang(request).diagnostics;

@@ -21,12 +21,11 @@ namespace shaderport::driver {
 struct PortOptions {
   rule::PortMode mode = rule::PortMode::kPort;
   std::optional<Dialect> dialect;  // forced; else detected from the code
-  std::optional<Stage> stage;
+  std::optional<model::Stage> stage;
   // The ShaderToy tab the code is (from a project); implies the ShaderToy dialect.
-  std::optional<ShaderToyPass> pass;
+  std::optional<model::PassKind> pass;
   const rule::HarnessDialect* harness = nullptr;  // --dialect FILE
-  rule::ChannelKind channels[4] = {rule::ChannelKind::kAuto, rule::ChannelKind::kAuto,
-                                   rule::ChannelKind::kAuto, rule::ChannelKind::kAuto};
+  model::GivenChannelKinds channels{};            // --channel; nullopt: decided from the code
   // Rules to run; empty: the registry's rules for `mode`.
   std::vector<const rule::Rule*> rules;
   bool validate = true;  // run glslang on the result (and narrow bad fix sets)
@@ -38,7 +37,7 @@ struct PortResult {
   SourceMap map;                     // text -> original
   DetectedKind kind;                 // how the original was read (decision.kind)
   FileDecision decision;             // what the original is (file_decision.h)
-  Stage output_stage = Stage::kFragment;
+  model::Stage output_stage = model::Stage::kFragment;
   DiagnosticList diagnostics;  // what remains, located in the original
   DiagnosticList fixed;        // findings whose fixes were applied
   int rounds = 0;

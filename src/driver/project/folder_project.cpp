@@ -14,19 +14,19 @@ namespace fs = std::filesystem;
 
 struct TabFile {
   const char* stem;
-  ShaderToyPass kind;
+  model::PassKind kind;
   int buffer;
 };
 
 constexpr std::array<TabFile, 8> kTabs = {{
-    {"common", ShaderToyPass::kCommon, -1},
-    {"buffer-a", ShaderToyPass::kBuffer, 0},
-    {"buffer-b", ShaderToyPass::kBuffer, 1},
-    {"buffer-c", ShaderToyPass::kBuffer, 2},
-    {"buffer-d", ShaderToyPass::kBuffer, 3},
-    {"cube-a", ShaderToyPass::kCubemap, -1},
-    {"sound", ShaderToyPass::kSound, -1},
-    {"image", ShaderToyPass::kImage, -1},
+    {"common", model::PassKind::kCommon, -1},
+    {"buffer-a", model::PassKind::kBuffer, 0},
+    {"buffer-b", model::PassKind::kBuffer, 1},
+    {"buffer-c", model::PassKind::kBuffer, 2},
+    {"buffer-d", model::PassKind::kBuffer, 3},
+    {"cube-a", model::PassKind::kCube, -1},
+    {"sound", model::PassKind::kSound, -1},
+    {"image", model::PassKind::kImage, -1},
 }};
 
 const TabFile* FindTab(std::string_view stem) {
@@ -37,7 +37,7 @@ const TabFile* FindTab(std::string_view stem) {
 
 // "buffer-a" (a tab's output) or an input kind, as the site's ctype.
 bool BindingFromName(std::string_view name, ChannelBinding& binding) {
-  if (const TabFile* tab = FindTab(name); tab != nullptr && tab->kind == ShaderToyPass::kBuffer) {
+  if (const TabFile* tab = FindTab(name); tab != nullptr && tab->kind == model::PassKind::kBuffer) {
     binding.source = ChannelSource::kBuffer;
     binding.buffer = tab->buffer;
     binding.ctype = "buffer";
@@ -153,7 +153,7 @@ bool IsProjectFolder(const fs::path& directory) {
   return fs::is_regular_file(directory / kManifestName, error);
 }
 
-std::optional<ShaderToyPass> TabOfFile(const fs::path& file, int& buffer) {
+std::optional<model::PassKind> TabOfFile(const fs::path& file, int& buffer) {
   if (file.extension() != ".glsl") return std::nullopt;
   const TabFile* tab = FindTab(file.stem().string());
   if (tab == nullptr) return std::nullopt;
@@ -209,7 +209,7 @@ ProjectDocument ReadFolderProject(const fs::path& directory) {
       pass.inputs = ReadChannels(*table, tab.stem, out.problems);
     project.passes.push_back(std::move(pass));
   }
-  if (project.Find(ShaderToyPass::kImage) == nullptr)
+  if (project.Find(model::PassKind::kImage) == nullptr)
     out.problems.push_back(
         {0, (directory / "image.glsl").string() + ": a project folder needs an Image tab"});
   out.projects.push_back(std::move(project));

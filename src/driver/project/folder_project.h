@@ -28,7 +28,7 @@ inline constexpr std::string_view kManifestName = "shadertoy.toml";
 bool IsProjectFolder(const std::filesystem::path& directory);
 
 // The tab a file of a project folder stands for ("buffer-c.glsl" -> Buffer C).
-std::optional<ShaderToyPass> TabOfFile(const std::filesystem::path& file, int& buffer);
+std::optional<model::PassKind> TabOfFile(const std::filesystem::path& file, int& buffer);
 
 // The project folder `file` is a tab file of ("" when none): its directory holds
 // shadertoy.toml.

@@ -8,22 +8,6 @@
 namespace shaderport::driver::project {
 namespace {
 
-std::string_view KindName(ShaderToyPass kind) {
-  switch (kind) {
-    case ShaderToyPass::kImage:
-      return "image";
-    case ShaderToyPass::kBuffer:
-      return "buffer";
-    case ShaderToyPass::kCubemap:
-      return "cube";
-    case ShaderToyPass::kSound:
-      return "sound";
-    case ShaderToyPass::kCommon:
-      return "common";
-  }
-  return "image";
-}
-
 std::string_view InputKindName(PageInputKind kind) {
   switch (kind) {
     case PageInputKind::kNone:
@@ -155,7 +139,7 @@ PageProject PageFromPorted(const PortedProject& ported) {
     page.author = ported.project->author;
   }
   for (const PortedPass& pass : ported.passes) {
-    if (pass.pass == nullptr || pass.pass->kind == ShaderToyPass::kCommon) continue;
+    if (pass.pass == nullptr || pass.pass->kind == model::PassKind::kCommon) continue;
     PagePass out;
     out.tab_name = pass.pass->name;
     out.kind = pass.pass->kind;
@@ -209,7 +193,7 @@ std::string PageProjectJson(const PageProject& project, const PageOptions& optio
     }
     nlohmann::json lines = RunsJson(pass.lines);
     passes.push_back({{"name", pass.tab_name},
-                      {"kind", KindName(pass.kind)},
+                      {"kind", model::PassKindName(pass.kind)},
                       {"output", pass.output_buffer},
                       {"inputs", std::move(inputs)},
                       {"code", pass.fragment_shader},

@@ -49,7 +49,7 @@ struct PageLineRun {
 
 struct PagePass {
   std::string tab_name;  // "Image", "Buffer A", "Cube A", "Sound"
-  ShaderToyPass kind = ShaderToyPass::kImage;
+  model::PassKind kind = model::PassKind::kImage;
   int output_buffer = -1;  // Buffer passes: 0..3
   std::vector<PageInput> inputs;
   // The complete WebGL2 fragment shader (#version 300 es, uniforms, main()); empty

@@ -38,13 +38,9 @@ bool IsCubeBufferId(const json& id) {
          (id.is_string() && id.get<std::string>() == "4dX3Rr");
 }
 
-std::optional<ShaderToyPass> PassKindFromType(std::string_view type) {
-  if (type == "image") return ShaderToyPass::kImage;
-  if (type == "buffer") return ShaderToyPass::kBuffer;
-  if (type == "common") return ShaderToyPass::kCommon;
-  if (type == "cubemap" || type == "cube") return ShaderToyPass::kCubemap;
-  if (type == "sound") return ShaderToyPass::kSound;
-  return std::nullopt;
+// Exports spell a cube map pass either way.
+std::optional<model::PassKind> PassKindFromType(std::string_view type) {
+  return type == "cubemap" ? model::PassKind::kCube : model::ParsePassKind(type);
 }
 
 // One member of "inputs"; nullopt (with the problem reported) when it names no
@@ -184,7 +180,7 @@ class Reader {
       ReadPass((*passes)[i], passes_pointer + "/" + std::to_string(i), project);
     CheckTabs(project);
     // The site always has an Image tab: it is what the page shows.
-    if (project.Find(ShaderToyPass::kImage) == nullptr) {
+    if (project.Find(model::PassKind::kImage) == nullptr) {
       Problem("the project has no Image pass" +
               (pointer.empty() ? std::string() : " (at " + pointer + ")"));
     }
@@ -221,7 +217,7 @@ class Reader {
     }
     const std::optional<std::string> type = members.String("type", Presence::kRequired);
     if (!type) return;
-    const std::optional<ShaderToyPass> kind = PassKindFromType(*type);
+    const std::optional<model::PassKind> kind = PassKindFromType(*type);
     if (!kind) {
       Problem("unknown pass type \"" + *type + "\" at " + pointer +
                   " (the site has image, buffer, common, cubemap, sound)",
@@ -260,7 +256,7 @@ class Reader {
           [](const ChannelBinding& a, const ChannelBinding& b) { return a.channel < b.channel; });
     }
     const json* outputs = members.Array("outputs");
-    if (read.kind == ShaderToyPass::kBuffer) {
+    if (read.kind == model::PassKind::kBuffer) {
       if (outputs != nullptr && !outputs->empty()) {
         const std::string first = members.PointerOf("outputs") + "/0";
         if (!(*outputs)[0].is_object()) {
@@ -285,8 +281,8 @@ class Reader {
       for (size_t j = 0; j < i; ++j) {
         const ProjectPass& a = project.passes[j];
         const ProjectPass& b = project.passes[i];
-        const bool same = a.kind == b.kind &&
-                          (a.kind != ShaderToyPass::kBuffer || a.output_buffer == b.output_buffer);
+        const bool same = a.kind == b.kind && (a.kind != model::PassKind::kBuffer ||
+                                               a.output_buffer == b.output_buffer);
         if (same) {
           Problem("a second \"" + b.name + "\" pass: the site has one of each",
                   b.origin.literal_begin - base_);

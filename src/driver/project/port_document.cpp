@@ -123,7 +123,7 @@ PortedDocument PortSinglePass(const std::filesystem::path& path, InputText input
   ShaderToyProject& project = out.read->projects.emplace_back();
   project.name = path.stem().string();
   ProjectPass& pass = project.passes.emplace_back();
-  pass.kind = ShaderToyPass::kImage;
+  pass.kind = model::PassKind::kImage;
   pass.name = "Image";
   pass.code = std::move(*input.text);
   pass.file = path.string();
@@ -198,7 +198,7 @@ DocumentOutput ProgramPage(const PortResult* vertex, const PortResult* fragment)
   pass.tab_name = StemOf(fragment != nullptr ? fragment : vertex);
   page.name = vertex != nullptr && fragment != nullptr ? StemOf(vertex) + " + " + StemOf(fragment)
                                                        : pass.tab_name;
-  pass.kind = ShaderToyPass::kImage;
+  pass.kind = model::PassKind::kImage;
   std::string errors;
   pass.fragment_shader =
       fragment != nullptr ? StageText(*fragment, errors) : std::string(render::kFlatFragmentShader);

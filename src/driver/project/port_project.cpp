@@ -72,11 +72,11 @@ bool SameFinding(const Diagnostic& a, const Diagnostic& b) {
 
 void SetChannelKinds(const ProjectPass& pass, PortOptions& options) {
   for (int channel = 0; channel < 4; ++channel) {
-    rule::ChannelKind kind = rule::ChannelKind::k2D;
+    model::ChannelKind kind = model::ChannelKind::k2D;
     if (const ChannelBinding* input = pass.Input(channel)) {
       if (input->source == ChannelSource::kCubemap || input->source == ChannelSource::kCubeBuffer)
-        kind = rule::ChannelKind::kCube;
-      if (input->source == ChannelSource::kVolume) kind = rule::ChannelKind::k3D;
+        kind = model::ChannelKind::kCube;
+      if (input->source == ChannelSource::kVolume) kind = model::ChannelKind::k3D;
     }
     options.channels[channel] = kind;
   }
@@ -88,7 +88,7 @@ PortedProject PortProject(const ProjectSources& project, const PortOptions& opti
   out.project = project.project;
   out.sources = project;
   for (const PassSource& source : project.passes) {
-    if (source.pass->kind == ShaderToyPass::kCommon) continue;
+    if (source.pass->kind == model::PassKind::kCommon) continue;
     PortOptions pass_options = options;
     pass_options.pass = source.pass->kind;
     pass_options.dialect = Dialect::kShaderToy;
@@ -127,7 +127,7 @@ std::vector<PortResult> FixProject(const ProjectSources& project, const PortOpti
     pass_options.pass = source.pass->kind;
     pass_options.dialect = Dialect::kShaderToy;
     SetChannelKinds(*source.pass, pass_options);
-    const bool is_common = source.pass->kind == ShaderToyPass::kCommon;
+    const bool is_common = source.pass->kind == model::PassKind::kCommon;
     results.push_back(
         PortSource(*source.file, is_common ? nullptr : project.common, pass_options, sources));
   }

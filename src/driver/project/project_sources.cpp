@@ -32,7 +32,7 @@ ProjectSources AddProjectSources(const std::string& document,
       file = &sources.AddEmbedded(std::move(name), pass.code, std::move(embedding));
     }
     out.passes.push_back({&pass, file});
-    if (pass.kind == ShaderToyPass::kCommon && out.common == nullptr) out.common = file;
+    if (pass.kind == model::PassKind::kCommon && out.common == nullptr) out.common = file;
   }
   return out;
 }

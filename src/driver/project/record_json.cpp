@@ -3,25 +3,6 @@
 #include <nlohmann/json.hpp>
 
 namespace shaderport::driver::project {
-namespace {
-
-const char* TypeName(ShaderToyPass kind) {
-  switch (kind) {
-    case ShaderToyPass::kImage:
-      return "image";
-    case ShaderToyPass::kBuffer:
-      return "buffer";
-    case ShaderToyPass::kCommon:
-      return "common";
-    case ShaderToyPass::kCubemap:
-      return "cube";
-    case ShaderToyPass::kSound:
-      return "sound";
-  }
-  return "image";
-}
-
-}  // namespace
 
 std::string ToRecordJson(const ShaderToyProject& project) {
   nlohmann::ordered_json record = {{"id", project.id},
@@ -46,9 +27,9 @@ std::string ToRecordJson(const ShaderToyProject& project) {
                           {"vflip", input.sampler.vflip ? "true" : "false"}}}});
     }
     std::string name = pass.name;
-    if (pass.kind == ShaderToyPass::kBuffer && pass.output_buffer >= 0)
+    if (pass.kind == model::PassKind::kBuffer && pass.output_buffer >= 0)
       name = BufferTabName(pass.output_buffer);  // render finds buffers by tab name
-    passes.push_back({{"type", TypeName(pass.kind)},
+    passes.push_back({{"type", model::PassKindName(pass.kind)},
                       {"name", name},
                       {"code", pass.code},
                       {"inputs", std::move(inputs)}});

@@ -10,7 +10,7 @@ const ChannelBinding* ProjectPass::Input(int channel) const {
   return nullptr;
 }
 
-const ProjectPass* ShaderToyProject::Find(ShaderToyPass kind) const {
+const ProjectPass* ShaderToyProject::Find(model::PassKind kind) const {
   for (const ProjectPass& pass : passes)
     if (pass.kind == kind) return &pass;
   return nullptr;
@@ -19,7 +19,7 @@ const ProjectPass* ShaderToyProject::Find(ShaderToyPass kind) const {
 std::vector<const ProjectPass*> ShaderToyProject::BuffersInOrder() const {
   std::vector<const ProjectPass*> buffers;
   for (const ProjectPass& pass : passes)
-    if (pass.kind == ShaderToyPass::kBuffer && pass.output_buffer >= 0) buffers.push_back(&pass);
+    if (pass.kind == model::PassKind::kBuffer && pass.output_buffer >= 0) buffers.push_back(&pass);
   std::stable_sort(buffers.begin(), buffers.end(), [](const ProjectPass* a, const ProjectPass* b) {
     return a->output_buffer < b->output_buffer;
   });
@@ -45,17 +45,17 @@ std::string BufferTabName(int index) {
   return std::string("Buffer ") + static_cast<char>('A' + index);
 }
 
-std::string TabName(ShaderToyPass kind, int buffer) {
+std::string TabName(model::PassKind kind, int buffer) {
   switch (kind) {
-    case ShaderToyPass::kImage:
+    case model::PassKind::kImage:
       return "Image";
-    case ShaderToyPass::kBuffer:
+    case model::PassKind::kBuffer:
       return BufferTabName(buffer >= 0 && buffer < 4 ? buffer : 0);
-    case ShaderToyPass::kCommon:
+    case model::PassKind::kCommon:
       return "Common";
-    case ShaderToyPass::kCubemap:
+    case model::PassKind::kCube:
       return "Cube A";
-    case ShaderToyPass::kSound:
+    case model::PassKind::kSound:
       return "Sound";
   }
   return "Image";
@@ -63,15 +63,15 @@ std::string TabName(ShaderToyPass kind, int buffer) {
 
 std::string FolderFileName(const ProjectPass& pass) {
   switch (pass.kind) {
-    case ShaderToyPass::kCommon:
+    case model::PassKind::kCommon:
       return "common.glsl";
-    case ShaderToyPass::kCubemap:
+    case model::PassKind::kCube:
       return "cube-a.glsl";
-    case ShaderToyPass::kSound:
+    case model::PassKind::kSound:
       return "sound.glsl";
-    case ShaderToyPass::kImage:
+    case model::PassKind::kImage:
       return "image.glsl";
-    case ShaderToyPass::kBuffer:
+    case model::PassKind::kBuffer:
       return std::string("buffer-") + static_cast<char>('a' + std::max(pass.output_buffer, 0)) +
              ".glsl";
   }

@@ -62,7 +62,7 @@ struct CodeOrigin {
 };
 
 struct ProjectPass {
-  ShaderToyPass kind = ShaderToyPass::kImage;
+  model::PassKind kind = model::PassKind::kImage;
   std::string name;  // the site's tab name: "Image", "Buffer A", "Common", "Cube A", "Sound"
   std::string code;
   std::vector<ChannelBinding> inputs;  // sorted by channel, at most one per channel
@@ -82,8 +82,8 @@ struct ShaderToyProject {
   std::string description;
   std::vector<ProjectPass> passes;  // in the document's order
 
-  const ProjectPass* Find(ShaderToyPass kind) const;  // the first of that kind
-  const ProjectPass* Common() const { return Find(ShaderToyPass::kCommon); }
+  const ProjectPass* Find(model::PassKind kind) const;  // the first of that kind
+  const ProjectPass* Common() const { return Find(model::PassKind::kCommon); }
   // Buffer passes in the site's drawing order (A, B, C, D), then nothing else.
   std::vector<const ProjectPass*> BuffersInOrder() const;
 };
@@ -92,8 +92,8 @@ struct ShaderToyProject {
 std::optional<int> BufferIndexFromName(std::string_view tab_name);  // "Buffer C" -> 2
 // "/media/previz/buffer02.png" (how the site names a buffer input) -> 2.
 std::optional<int> BufferIndexFromSource(std::string_view src);
-std::string BufferTabName(int index);                     // 2 -> "Buffer C"
-std::string TabName(ShaderToyPass kind, int buffer = 0);  // the site's tab name of a kind
-std::string FolderFileName(const ProjectPass& pass);      // "buffer-c.glsl", "image.glsl", ...
+std::string BufferTabName(int index);                       // 2 -> "Buffer C"
+std::string TabName(model::PassKind kind, int buffer = 0);  // the site's tab name of a kind
+std::string FolderFileName(const ProjectPass& pass);        // "buffer-c.glsl", "image.glsl", ...
 
 }  // namespace shaderport::driver::project

@@ -20,8 +20,7 @@ std::optional<std::string> OptimizeAsBrowser(std::string_view text) {
   RunOnLongLivedLargeStack([&] {
     SourceManager local;
     const SourceFile& file = local.Add("<render>", std::string(text), true);
-    toolchain::SpirvCompilation compiled =
-        toolchain::CompileToSpirv(file, toolchain::Stage::kFragment);
+    toolchain::SpirvCompilation compiled = toolchain::CompileToSpirv(file, model::Stage::kFragment);
     if (HasErrors(compiled.diagnostics) || compiled.words.empty()) return;
     // spirv-opt inlines every call first; past the limit that alone takes seconds.
     if (toolchain::InlinedInstructionCount(compiled.words) > limits::kMaxInlinedInstructions) {

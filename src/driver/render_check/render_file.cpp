@@ -18,28 +18,6 @@
 namespace shaderport::driver {
 namespace {
 
-std::optional<validate::PassType> RenderablePass(ShaderToyPass pass) {
-  switch (pass) {
-    case ShaderToyPass::kImage:
-      return validate::PassType::kImage;
-    case ShaderToyPass::kBuffer:
-      return validate::PassType::kBuffer;
-    case ShaderToyPass::kCubemap:
-      return validate::PassType::kCube;
-    case ShaderToyPass::kSound:
-      return validate::PassType::kSound;
-    case ShaderToyPass::kCommon:
-      break;
-  }
-  return std::nullopt;
-}
-
-render::ChannelKind KindOf(validate::ChannelType type) {
-  if (type == validate::ChannelType::kCube) return render::ChannelKind::kCube;
-  if (type == validate::ChannelType::k3D) return render::ChannelKind::k3D;
-  return render::ChannelKind::k2D;
-}
-
 // On request, Mesa draws the text after the optimiser Chromium runs
 // (browser_optimizer.h); when that text cannot be made or Mesa rejects it, the text as
 // the browser semantics wrote it, whose diagnostics point at the user's lines.
@@ -99,7 +77,7 @@ void RenderPrepared(const PreparedShader& shader, const RenderFileOptions& optio
   request.probe_in_alpha = fragment.probe_in_alpha;
   if (!request.probe_in_alpha) request.probe_output = std::string(glsl::kRenderProbeOutput);
   for (size_t i = 0; i < 4; ++i) {
-    request.inputs.channels[i].kind = KindOf(options.channel_types[i]);
+    request.inputs.channels[i].kind = options.channel_types[i];
     if (options.channel_images[i].empty()) continue;
     std::string error;
     if (!render::ReadPng(options.channel_images[i], request.inputs.channels[i].image, error)) {
@@ -175,35 +153,32 @@ void RenderSource(const SourceFile& file, const DetectedKind& kind,
   shader.anchor = anchor;
   shader.user = &file;
   if (kind.dialect == Dialect::kShaderToy) {
-    const std::optional<validate::PassType> pass = RenderablePass(kind.pass);
-    if (!pass) {
+    const model::PassKind pass = kind.pass;
+    if (pass == model::PassKind::kCommon) {
       result.diagnostics.push_back(
           MakeDiagnostic(Severity::kNote, "render/not-rendered", anchor,
                          "a Common file is rendered with the passes using it"));
       return;
     }
     auto composed = std::make_shared<ComposedText>();
-    composed->Append(validate::ShaderToyHeader(*pass, options.channel_types), nullptr);
+    composed->Append(validate::ShaderToyHeader(pass, options.channel_types), nullptr);
     if (options.common != nullptr) composed->Append(options.common->Text(), options.common);
     composed->Append(file.Text(), &file);
-    composed->Append(validate::ShaderToyEpilogue(*pass), nullptr);
+    composed->Append(validate::ShaderToyEpilogue(pass), nullptr);
     shader.fragment_text = composed->Text();
-    shader.main_sets_alpha = *pass == validate::PassType::kImage;
-    shader.map_line = [composed](render::ShaderStage, uint32_t line) {
-      return composed->MapLine(line);
-    };
+    shader.main_sets_alpha = pass == model::PassKind::kImage;
+    shader.map_line = [composed](model::Stage, uint32_t line) { return composed->MapLine(line); };
   } else if (kind.dialect == Dialect::kWebGL2) {
     auto composed = std::make_shared<ComposedText>();
     composed->Append(file.Text(), &file);
-    (kind.stage == Stage::kVertex ? shader.vertex_text : shader.fragment_text) = composed->Text();
+    (kind.stage == model::Stage::kVertex ? shader.vertex_text : shader.fragment_text) =
+        composed->Text();
     // A fragment shader with inputs gets a vertex shader that writes them.
-    if (kind.stage == Stage::kFragment) {
+    if (kind.stage == model::Stage::kFragment) {
       shader.vertex_text = FeederVertexShader(file.Text());
       shader.fullscreen_vertex = true;
     }
-    shader.map_line = [composed](render::ShaderStage, uint32_t line) {
-      return composed->MapLine(line);
-    };
+    shader.map_line = [composed](model::Stage, uint32_t line) { return composed->MapLine(line); };
   } else {
     // WebGL1 code is drawn as `port` turns it into WebGL2; findings in the
     // ported text point into a synthetic "<file> (ported)" file, as that is

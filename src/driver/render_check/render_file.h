@@ -24,7 +24,7 @@ struct RenderFileOptions {
   render::RenderOptions render;  // backend, timeout, address-space limit, cache
   render::RenderRequest base;    // size, frames and ShaderToy inputs; sources are ignored
   std::array<std::string, 4> channel_images;  // PNG paths for iChannel0..3 ("" = procedural)
-  validate::ChannelTypes channel_types{};     // sampler kind per channel (ShaderToy)
+  model::ChannelKinds channel_types{};        // sampler kind per channel (ShaderToy)
   // Which channel_types the user gave; RenderFile decides the others from the code
   // (file_decision.h), as every command does.
   std::array<bool, 4> channel_types_given{};
@@ -71,7 +71,7 @@ struct PreparedShader {
   std::string vertex_text;         // empty: built-in full-screen triangle
   std::string fragment_text;       // empty: built-in flat shader (vertex drawn on a mesh)
   bool fullscreen_vertex = false;  // vertex_text draws the full-screen triangle
-  std::function<std::optional<SourceRange>(render::ShaderStage, uint32_t)> map_line;
+  std::function<std::optional<SourceRange>(model::Stage, uint32_t)> map_line;
   // Lines of RenderFileOptions::base.buffer_passes[pass] (ShaderToy multipass).
   std::function<std::optional<SourceRange>(int pass, uint32_t)> map_buffer_line;
   SourceRange anchor;                // where picture-level findings point

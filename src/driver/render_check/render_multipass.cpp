@@ -21,7 +21,7 @@ Diagnostic Note(SourceRange range, std::string message, Severity severity = Seve
 }
 
 struct PassInputs {
-  validate::ChannelTypes types{};
+  model::ChannelKinds types{};
   std::array<int, 4> buffers = {-1, -1, -1, -1};
   std::array<bool, 4> fed{};  // the record names an input for the channel
   // What each channel of this pass reads, sampled how: the site binds every pass's
@@ -89,7 +89,7 @@ PassInputs InputsOf(const nlohmann::json& pass) {
       continue;
     const auto c = channel->get<size_t>();
     const std::string ctype = StringOr(input, "ctype", "");
-    inputs.types[c] = validate::ChannelTypeFromCtype(ctype);
+    inputs.types[c] = model::ChannelKindFromCtype(ctype);
     inputs.fed[c] = true;
     if (ctype == "buffer")
       inputs.buffers[c] = project::BufferIndexFromSource(StringOr(input, "src", "")).value_or(-1);
@@ -150,8 +150,7 @@ RenderFileResult RenderShaderToyJson(std::string_view name, std::string_view jso
   }
   // Compose one pass: header, Common, code, epilogue, remembering the line map.
   DiagnosticList breaches;  // a pass past a resource limit: nothing is drawn
-  auto compose = [&](const nlohmann::json& pass, validate::PassType type,
-                     const PassInputs& inputs) {
+  auto compose = [&](const nlohmann::json& pass, model::PassKind type, const PassInputs& inputs) {
     const SourceFile& code = sources.Add(std::string(name) + "#" + StringOr(pass, "name", "pass"),
                                          pass["code"].get<std::string>());
     DetectedKind kind;
@@ -171,7 +170,7 @@ RenderFileResult RenderShaderToyJson(std::string_view name, std::string_view jso
     const int index = project::BufferIndexFromName(StringOr(*pass, "name", "")).value_or(-1);
     if (index < 0) continue;
     const PassInputs inputs = InputsOf(*pass);
-    auto [composed, code] = compose(*pass, validate::PassType::kBuffer, inputs);
+    auto [composed, code] = compose(*pass, model::PassKind::kBuffer, inputs);
     render::BufferPass buffer;
     buffer.buffer = index;
     buffer.fragment_source = composed->Text();
@@ -187,7 +186,7 @@ RenderFileResult RenderShaderToyJson(std::string_view name, std::string_view jso
   for (size_t c = 0; c < 4; ++c)
     pass_options.base.inputs.channels[c].unbound = !image_inputs.fed[c];
   pass_options.channel_types = image_inputs.types;
-  auto [composed, code] = compose(*image, validate::PassType::kImage, image_inputs);
+  auto [composed, code] = compose(*image, model::PassKind::kImage, image_inputs);
   if (!breaches.empty()) {
     for (Diagnostic& d : breaches) result.diagnostics.push_back(std::move(d));
     return result;
@@ -198,7 +197,7 @@ RenderFileResult RenderShaderToyJson(std::string_view name, std::string_view jso
   prepared.anchor = SourceRange{code->Id(), 0, 0};
   prepared.user = code;
   // An init-capture: clang before 16 cannot capture a structured binding by name.
-  prepared.map_line = [text = composed](render::ShaderStage, uint32_t line) {
+  prepared.map_line = [text = composed](model::Stage, uint32_t line) {
     return text->MapLine(line);
   };
   prepared.map_buffer_line = [buffer_texts](int pass, uint32_t line) -> std::optional<SourceRange> {

@@ -242,7 +242,7 @@ std::span<const BuiltinFunction* const> BuiltinOverloadList(std::string_view nam
   return it->second;
 }
 
-const BuiltinVariable* FindBuiltinVariable(std::string_view name, int version, ShaderStage stage) {
+const BuiltinVariable* FindBuiltinVariable(std::string_view name, int version, model::Stage stage) {
   for (const BuiltinVariable& v : GetTables().variables) {
     if (v.name == name && v.AvailableIn(version, stage)) return &v;
   }

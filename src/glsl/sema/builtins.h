@@ -31,7 +31,7 @@ struct BuiltinFunction {
   std::string_view extension;       // ESSL 1.00 #extension enabling it; empty for core
   uint32_t row = 0;                 // the .def row it came from (0-based)
 
-  bool AvailableIn(int version, ShaderStage stage) const {
+  bool AvailableIn(int version, model::Stage stage) const {
     return (versions & VersionBit(version)) != 0 && (stages & StageBit(stage)) != 0;
   }
 };
@@ -47,7 +47,7 @@ struct BuiltinVariable {
   std::string_view extension;
   int value = 0;  // kConst: the minimum value the spec guarantees
 
-  bool AvailableIn(int version, ShaderStage stage) const {
+  bool AvailableIn(int version, model::Stage stage) const {
     return (versions & VersionBit(version)) != 0 && (stages & StageBit(stage)) != 0;
   }
 };
@@ -62,7 +62,7 @@ std::vector<const BuiltinFunction*> BuiltinOverloads(std::string_view name);
 std::span<const BuiltinFunction* const> BuiltinOverloadList(std::string_view name);
 // The variable named `name` available in (version, stage), else nullptr. Extension rows count
 // as available: whether the extension is enabled is for a rule to check.
-const BuiltinVariable* FindBuiltinVariable(std::string_view name, int version, ShaderStage stage);
+const BuiltinVariable* FindBuiltinVariable(std::string_view name, int version, model::Stage stage);
 // Whether some built-in function is called `name` in any version or stage.
 bool IsBuiltinFunctionName(std::string_view name);
 

@@ -3,9 +3,9 @@
 
 #include <cstdint>
 
-namespace shaderport::glsl {
+#include "model/stage.h"
 
-enum class ShaderStage : uint8_t { kVertex, kFragment };
+namespace shaderport::glsl {
 
 // GLSL ES versions the model knows. Anything at or above 300 is treated as 3.00.
 inline constexpr int kEssl100 = 100;
@@ -16,8 +16,8 @@ enum VersionBits : uint8_t { kVersion100 = 1, kVersion300 = 2, kAllVersions = 3 
 enum StageBits : uint8_t { kVertexStage = 1, kFragmentStage = 2, kAllStages = 3 };
 
 inline uint8_t VersionBit(int version) { return version >= kEssl300 ? kVersion300 : kVersion100; }
-inline uint8_t StageBit(ShaderStage stage) {
-  return stage == ShaderStage::kVertex ? kVertexStage : kFragmentStage;
+inline uint8_t StageBit(model::Stage stage) {
+  return stage == model::Stage::kVertex ? kVertexStage : kFragmentStage;
 }
 
 }  // namespace shaderport::glsl

@@ -25,7 +25,7 @@ ArgumentMatch Match(std::span<const Param> parameters, std::span<const Type> arg
 // `available_only`); nullopt when none matches.
 std::optional<BuiltinCallMatch> ResolveAmong(std::span<const BuiltinFunction* const> candidates,
                                              std::span<const Type> arguments, bool available_only,
-                                             int version, ShaderStage stage) {
+                                             int version, model::Stage stage) {
   const BuiltinFunction* uncertain = nullptr;
   bool uncertain_types_agree = true;
   for (const BuiltinFunction* f : candidates) {
@@ -57,13 +57,13 @@ ArgumentMatch MatchArguments(std::span<const BuiltinParam> parameters,
 }
 
 BuiltinCallMatch ResolveBuiltinCall(std::string_view name, std::span<const Type> arguments,
-                                    int version, ShaderStage stage) {
+                                    int version, model::Stage stage) {
   return ResolveBuiltinCall(BuiltinOverloadList(name), arguments, version, stage);
 }
 
 BuiltinCallMatch ResolveBuiltinCall(std::span<const BuiltinFunction* const> all,
                                     std::span<const Type> arguments, int version,
-                                    ShaderStage stage) {
+                                    model::Stage stage) {
   // Runs for every built-in call (and again per promotion tried): no copies of the list.
   if (std::optional<BuiltinCallMatch> m = ResolveAmong(all, arguments, true, version, stage)) {
     return *m;

@@ -31,10 +31,10 @@ struct BuiltinCallMatch {
 // gets a type, marked unavailable). Several uncertain candidates give no match unless they
 // all return the same type, in which case the first is returned.
 BuiltinCallMatch ResolveBuiltinCall(std::string_view name, std::span<const Type> arguments,
-                                    int version, ShaderStage stage);
+                                    int version, model::Stage stage);
 // The same over `overloads`, the BuiltinOverloadList of the name (for a caller that has it).
 BuiltinCallMatch ResolveBuiltinCall(std::span<const BuiltinFunction* const> overloads,
                                     std::span<const Type> arguments, int version,
-                                    ShaderStage stage);
+                                    model::Stage stage);
 
 }  // namespace shaderport::glsl

@@ -75,7 +75,7 @@ struct TypeMismatch {
 
 struct AnalyzeOptions {
   int version = kEssl300;  // 100 or 300
-  ShaderStage stage = ShaderStage::kFragment;
+  model::Stage stage = model::Stage::kFragment;
   // Declarations visible before the shader, e.g. ShaderToy's uniforms: a parsed header
   // (its declarations are added to the global scope; its nodes get no types) ...
   const SyntaxTree* header = nullptr;
@@ -85,7 +85,7 @@ struct AnalyzeOptions {
 
 struct SemanticModel {
   int version = kEssl300;
-  ShaderStage stage = ShaderStage::kFragment;
+  model::Stage stage = model::Stage::kFragment;
   StructTable structs;
   std::vector<Scope> scopes;
   std::vector<Symbol> symbols;

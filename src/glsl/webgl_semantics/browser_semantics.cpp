@@ -94,7 +94,7 @@ BrowserSemanticsResult ApplyBrowserSemantics(std::span<const SourceFile* const> 
   if (HasErrors(parsed.diagnostics)) return result;
   AnalyzeOptions analyze;
   analyze.version = preprocessed.version.number;
-  analyze.stage = options.vertex_stage ? ShaderStage::kVertex : ShaderStage::kFragment;
+  analyze.stage = options.vertex_stage ? model::Stage::kVertex : model::Stage::kFragment;
   const SemanticModel model = Analyze(parsed.tree, analyze);
 
   EditCollector edits(preprocessed);

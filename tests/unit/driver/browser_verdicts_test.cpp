@@ -25,7 +25,7 @@ bool IsLinkRule(const std::string& id) {
 }
 
 // First error of each file, "" when check accepts it; by path relative to kDir.
-std::map<std::string, std::string> FirstErrors(const std::string& context, Target target) {
+std::map<std::string, std::string> FirstErrors(const std::string& context, model::Target target) {
   CheckOptions options;
   options.paths = {kDir / context};
   options.target = target;
@@ -48,8 +48,8 @@ TEST(BrowserVerdicts, CheckGivesChromiumsVerdict) {
   std::ifstream in(kDir / "verdicts.json");
   ASSERT_TRUE(in) << "missing " << (kDir / "verdicts.json");
   const nlohmann::json verdicts = nlohmann::json::parse(in);
-  std::map<std::string, std::string> errors = FirstErrors("webgl1", Target::kWebGL1);
-  errors.merge(FirstErrors("webgl2", Target::kWebGL2));
+  std::map<std::string, std::string> errors = FirstErrors("webgl1", model::Target::kWebGL1);
+  errors.merge(FirstErrors("webgl2", model::Target::kWebGL2));
   ASSERT_EQ(errors.size(), verdicts.size()) << "every shader needs a recorded verdict";
   size_t cases = 0;
   for (const auto& [file, verdict] : verdicts.items()) {

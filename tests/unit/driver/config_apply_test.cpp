@@ -58,8 +58,9 @@ TEST(ConfigApply, IncludeExcludeAndOverridesAreRelativeToTheConfig) {
   config.directory = "/proj";
   config.include = {"shaders/**"};
   config.exclude = {"shaders/third_party/**", "**/*.gen.glsl"};
-  config.files = {{"shaders/toy/**", Dialect::kShaderToy, std::nullopt, std::nullopt},
-                  {"shaders/toy/*.vert", std::nullopt, Stage::kVertex, Target::kWebGL2}};
+  config.files = {
+      {"shaders/toy/**", Dialect::kShaderToy, std::nullopt, std::nullopt},
+      {"shaders/toy/*.vert", std::nullopt, model::Stage::kVertex, model::Target::kWebGL2}};
   EXPECT_TRUE(IsIncluded(config, "/proj/shaders/a.frag"));
   EXPECT_TRUE(IsIncluded(config, "/proj/shaders/./sub/../a.frag"));
   EXPECT_FALSE(IsIncluded(config, "/proj/other/a.frag"));
@@ -71,8 +72,8 @@ TEST(ConfigApply, IncludeExcludeAndOverridesAreRelativeToTheConfig) {
 
   const FileSettings vert = SettingsFor(config, "/proj/shaders/toy/q.vert");
   EXPECT_EQ(vert.dialect, Dialect::kShaderToy);
-  EXPECT_EQ(vert.stage, Stage::kVertex);
-  EXPECT_EQ(vert.target, Target::kWebGL2);  // a later [[files]] entry adds the target
+  EXPECT_EQ(vert.stage, model::Stage::kVertex);
+  EXPECT_EQ(vert.target, model::Target::kWebGL2);  // a later [[files]] entry adds the target
   const FileSettings frag = SettingsFor(config, "/proj/shaders/toy/q.frag");
   EXPECT_FALSE(frag.stage.has_value());
   EXPECT_FALSE(frag.target.has_value());

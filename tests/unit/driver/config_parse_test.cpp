@@ -50,7 +50,7 @@ dialect = "webgl1"
   EXPECT_EQ(config.exclude.size(), 2u);
   ASSERT_EQ(config.files.size(), 2u);
   EXPECT_EQ(config.files[0].dialect, Dialect::kShaderToy);
-  EXPECT_EQ(config.files[0].stage, Stage::kFragment);
+  EXPECT_EQ(config.files[0].stage, model::Stage::kFragment);
   EXPECT_EQ(config.files[1].dialect, Dialect::kWebGL1);
   EXPECT_FALSE(config.files[1].stage.has_value());
 }

@@ -212,7 +212,7 @@ TEST(FileDecision, RaymarchCodeIsCheckedBehindItsHarness) {
   const FileDecision decision = DecideFile(file, nullptr, {}, sources);
   ASSERT_NE(decision.harness, nullptr);
   EXPECT_EQ(decision.harness->name, "raymarch-blog");
-  EXPECT_EQ(decision.target, Target::kWebGL2);
+  EXPECT_EQ(decision.target, model::Target::kWebGL2);
   EXPECT_NE(decision.harness_header.find("#version 300 es"), std::string::npos);
   EXPECT_NE(decision.harness_header.find("in highp vec2 uv;"), std::string::npos);
   // A forced dialect says the code stands alone: no harness is looked for.
@@ -228,11 +228,11 @@ TEST(FileDecision, ChannelSampledAsCubeIsInferred) {
                   "void mainImage(out vec4 c, in vec2 f) {\n"
                   "  c = texture(iChannel1, vec3(f, 1.0)) + texture(iChannel0, f / 2.0);\n}\n");
   const FileDecision decision = DecideFile(file, nullptr, {}, sources);
-  EXPECT_EQ(decision.channels[0], validate::ChannelType::k2D);
-  EXPECT_EQ(decision.channels[1], validate::ChannelType::kCube);
+  EXPECT_EQ(decision.channels[0], model::ChannelKind::k2D);
+  EXPECT_EQ(decision.channels[1], model::ChannelKind::kCube);
   DecisionGiven given;
-  given.channels[1] = validate::ChannelType::k3D;
-  EXPECT_EQ(DecideFile(file, nullptr, given, sources).channels[1], validate::ChannelType::k3D);
+  given.channels[1] = model::ChannelKind::k3D;
+  EXPECT_EQ(DecideFile(file, nullptr, given, sources).channels[1], model::ChannelKind::k3D);
 }
 
 }  // namespace

@@ -87,7 +87,7 @@ TEST(HtmlPage, PassesAndInputsAreDescribed) {
   project.name = "p";
   PagePass buffer;
   buffer.tab_name = "Buffer B";
-  buffer.kind = ShaderToyPass::kBuffer;
+  buffer.kind = model::PassKind::kBuffer;
   buffer.output_buffer = 1;
   buffer.inputs.push_back({0, PageInputKind::kBuffer, 1, "linear", "clamp", true});
   buffer.inputs.push_back({2, PageInputKind::kKeyboard, -1, "nearest", "clamp", false});
@@ -154,7 +154,7 @@ TEST(HtmlPage, PageFromPortedKeepsTabsInputsAndUserLines) {
   ASSERT_EQ(page.passes.size(), 2u);  // Common is inlined, not a pass
   const PagePass& buffer = page.passes[0];
   EXPECT_EQ(buffer.tab_name, "Buffer A");
-  EXPECT_EQ(buffer.kind, ShaderToyPass::kBuffer);
+  EXPECT_EQ(buffer.kind, model::PassKind::kBuffer);
   EXPECT_EQ(buffer.output_buffer, 0);
   EXPECT_NE(buffer.fragment_shader.find("#version 300 es"), std::string::npos);
   // The ported line holding `undefined_name` maps to Buffer A line 3.
@@ -173,7 +173,7 @@ TEST(HtmlPage, PageFromPortedKeepsTabsInputsAndUserLines) {
   EXPECT_TRUE(std::any_of(buffer.lines.begin(), buffer.lines.end(),
                           [](const PageLineRun& run) { return run.origin == "Common"; }));
   const PagePass& image = page.passes[1];
-  EXPECT_EQ(image.kind, ShaderToyPass::kImage);
+  EXPECT_EQ(image.kind, model::PassKind::kImage);
   ASSERT_EQ(image.inputs.size(), 1u);
   EXPECT_EQ(image.inputs[0].kind, PageInputKind::kBuffer);
   EXPECT_EQ(image.inputs[0].buffer, 0);

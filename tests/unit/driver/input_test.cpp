@@ -87,15 +87,15 @@ TEST(DetectKindTest, VersionMainImageAndExtensionDecide) {
             Dialect::kWebGL1);
   const DetectedKind toy = DetectKind("void mainImage(out vec4 c, in vec2 p){}", "a.glsl");
   EXPECT_EQ(toy.dialect, Dialect::kShaderToy);
-  EXPECT_EQ(toy.pass, ShaderToyPass::kImage);
-  EXPECT_EQ(toy.stage, Stage::kFragment);
+  EXPECT_EQ(toy.pass, model::PassKind::kImage);
+  EXPECT_EQ(toy.stage, model::Stage::kFragment);
   EXPECT_EQ(
       DetectKind("void mainCubemap(out vec4 c, in vec2 p, in vec3 o, in vec3 d){}", "c.glsl").pass,
-      ShaderToyPass::kCubemap);
+      model::PassKind::kCube);
   EXPECT_EQ(
       DetectKind("attribute vec3 p; void main(){ gl_Position = vec4(p,1.); }", "a.glsl").stage,
-      Stage::kVertex);
-  EXPECT_EQ(DetectKind("void main(){}", "a.vs").stage, Stage::kVertex);
+      model::Stage::kVertex);
+  EXPECT_EQ(DetectKind("void main(){}", "a.vs").stage, model::Stage::kVertex);
 }
 
 TEST(DetectKindTest, WordsInCommentsDoNotCount) {

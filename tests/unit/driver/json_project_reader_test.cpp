@@ -34,7 +34,7 @@ TEST(JsonProjectReader, ReadsTheSiteExportWithItsTabsOutputsAndChannels) {
   EXPECT_EQ(project.author, "someone");
   ASSERT_EQ(project.passes.size(), 3u);
   const ProjectPass& buffer = project.passes[1];
-  EXPECT_EQ(buffer.kind, ShaderToyPass::kBuffer);
+  EXPECT_EQ(buffer.kind, model::PassKind::kBuffer);
   EXPECT_EQ(buffer.output_buffer, 0);  // from the output id, whatever the tab is called
   ASSERT_EQ(buffer.inputs.size(), 3u);
   EXPECT_EQ(buffer.inputs[0].source, ChannelSource::kBuffer);
@@ -63,7 +63,7 @@ TEST(JsonProjectReader, ReadsListsBareExportsAndCorpusRecordsAndJsonLines) {
   EXPECT_EQ(one.projects[0].format, ProjectFormat::kCorpusRecord);
   EXPECT_EQ(one.projects[0].license, "mit");
   EXPECT_EQ(one.projects[0].passes[1].output_buffer, 2);
-  EXPECT_EQ(one.projects[0].passes[2].kind, ShaderToyPass::kCubemap);
+  EXPECT_EQ(one.projects[0].passes[2].kind, model::PassKind::kCube);
   const std::string lines = record + "\n\n" + record + "\n";
   const ProjectDocument many = ReadShaderToyJsonLines(lines);
   ASSERT_EQ(many.projects.size(), 2u);

@@ -69,12 +69,12 @@ std::vector<GoldenCase> Cases() {
   return cases;
 }
 
-validate::ValidationResult CompileAsEssl300(const std::string& text, Stage stage,
+validate::ValidationResult CompileAsEssl300(const std::string& text, model::Stage stage,
                                             SourceManager& sources) {
   const SourceFile& file = sources.Add("golden", text, /*synthetic=*/true);
   validate::ValidationRequest request;
   request.parts.push_back({file.Name(), file.Text(), file.Id()});
-  request.stage = stage == Stage::kVertex ? validate::Stage::kVertex : validate::Stage::kFragment;
+  request.stage = stage;
   request.default_version = 100;  // the output must carry `#version 300 es` itself
   request.link = true;
   return validate::ValidateWithGlslang(request);
@@ -95,7 +95,8 @@ TEST_P(PortGolden, OutputMatchesGoldenCompilesAndIsStable) {
   ASSERT_FALSE(result.read_failed) << Errors(result.diagnostics);
   EXPECT_TRUE(result.validated) << Errors(result.diagnostics);
 
-  const std::string extension = result.output_stage == Stage::kVertex ? ".out.vert" : ".out.frag";
+  const std::string extension =
+      result.output_stage == model::Stage::kVertex ? ".out.vert" : ".out.frag";
   fs::path golden = c.golden;
   golden += extension;
   EXPECT_TRUE(testing::MatchesGolden(result.text, golden));

@@ -34,7 +34,7 @@ struct Pass {
   std::string name;   // the tab's name on the site
   std::string code;
   const std::string* common = nullptr;  // the shader's Common tab, if any
-  validate::ChannelTypes channels{};
+  model::ChannelKinds channels{};
 };
 
 struct Shader {
@@ -92,7 +92,8 @@ Corpus LoadCorpus(const fs::path& path) {
       Pass p;
       p.shader = corpus.shaders.size() - 1;
       p.type = pass.value("type", "");
-      if (!validate::PassTypeFromName(p.type)) continue;
+      const std::optional<model::PassKind> kind = model::ParsePassKind(p.type);
+      if (!kind || *kind == model::PassKind::kCommon) continue;
       p.name = pass.value("name", "");
       p.code = pass.value("code", "");
       p.common = common;
@@ -100,25 +101,13 @@ Corpus LoadCorpus(const fs::path& path) {
         const int channel = input.value("channel", -1);
         if (channel >= 0 && channel < 4) {
           p.channels[static_cast<size_t>(channel)] =
-              validate::ChannelTypeFromCtype(input.value("ctype", ""));
+              model::ChannelKindFromCtype(input.value("ctype", ""));
         }
       }
       corpus.passes.push_back(std::move(p));
     }
   }
   return corpus;
-}
-
-rule::ChannelKind ToChannelKind(validate::ChannelType type) {
-  switch (type) {
-    case validate::ChannelType::kCube:
-      return rule::ChannelKind::kCube;
-    case validate::ChannelType::k3D:
-      return rule::ChannelKind::k3D;
-    case validate::ChannelType::k2D:
-      return rule::ChannelKind::k2D;
-  }
-  return rule::ChannelKind::k2D;
 }
 
 std::string FirstError(const validate::ValidationResult& result) {
@@ -133,15 +122,15 @@ std::string FirstError(const validate::ValidationResult& result) {
 validate::ValidationResult CompileOnSite(SourceManager& sources, const Pass& pass,
                                          const SourceFile* common, const SourceFile& code) {
   return validate::ValidateWithGlslang(validate::ComposeShaderToyRequest(
-      sources, *validate::PassTypeFromName(pass.type), pass.channels, common, code));
+      sources, *model::ParsePassKind(pass.type), pass.channels, common, code));
 }
 
 PortOptions OptionsFor(const Pass& pass, rule::PortMode mode) {
   PortOptions options;
   options.mode = mode;
   options.dialect = Dialect::kShaderToy;
-  options.stage = Stage::kFragment;
-  for (size_t i = 0; i < 4; ++i) options.channels[i] = ToChannelKind(pass.channels[i]);
+  options.stage = model::Stage::kFragment;
+  for (size_t i = 0; i < 4; ++i) options.channels[i] = pass.channels[i];
   return options;
 }
 
@@ -150,7 +139,7 @@ std::string ValidateOutput(const std::string& text, SourceManager& sources) {
   const SourceFile& output = sources.Add("ported.frag", text);
   validate::ValidationRequest request;
   request.parts.push_back({output.Name(), output.Text(), output.Id()});
-  request.stage = validate::Stage::kFragment;
+  request.stage = model::Stage::kFragment;
   request.default_version = 100;
   request.link = true;
   const validate::ValidationResult result = validate::ValidateWithGlslang(request);

@@ -79,7 +79,7 @@ void ExpectSamePictures(const fs::path& path) {
   toolchain::EmitOptions emit;
   emit.kind = toolchain::EmitKind::kEsslRoundtrip;
   const toolchain::EmitResult roundtrip =
-      toolchain::Emit(ported_file, toolchain::Stage::kFragment, emit);
+      toolchain::Emit(ported_file, model::Stage::kFragment, emit);
   ASSERT_FALSE(HasErrors(roundtrip.diagnostics)) << "the round trip failed";
   PreparedShader shader;
   shader.fragment_text = roundtrip.output;

@@ -62,7 +62,7 @@ struct Verdict {
 };
 
 // Runs check over `dir` for `target`; verdicts by absolute path.
-std::map<fs::path, Verdict> CheckDirectory(const fs::path& dir, Target target) {
+std::map<fs::path, Verdict> CheckDirectory(const fs::path& dir, model::Target target) {
   CheckOptions options;
   options.paths = {dir};
   options.target = target;
@@ -105,7 +105,7 @@ TEST(WebglConformance, CheckAgreesWithTheBrowser) {
   std::map<fs::path, Verdict> stage_verdicts;
   std::map<fs::path, Verdict> program_verdicts;
   for (const auto& [name, target] :
-       {std::pair{"webgl1", Target::kWebGL1}, std::pair{"webgl2", Target::kWebGL2}}) {
+       {std::pair{"webgl1", model::Target::kWebGL1}, std::pair{"webgl2", model::Target::kWebGL2}}) {
     stage_verdicts.merge(CheckDirectory(root / "stage" / name, target));
     program_verdicts.merge(CheckDirectory(root / "program" / name, target));
   }

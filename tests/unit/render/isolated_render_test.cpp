@@ -136,8 +136,8 @@ TEST(IsolatedRender, CompileErrorsAreMappedThroughTheCallersLineMap) {
   CheckContext context;
   context.anchor = {7, 0, 1};
   uint32_t mapped_line = 0;
-  context.map_line = [&](ShaderStage stage, uint32_t line) -> std::optional<SourceRange> {
-    EXPECT_EQ(stage, ShaderStage::kFragment);
+  context.map_line = [&](model::Stage stage, uint32_t line) -> std::optional<SourceRange> {
+    EXPECT_EQ(stage, model::Stage::kFragment);
     mapped_line = line;
     return SourceRange{7, line, line};
   };

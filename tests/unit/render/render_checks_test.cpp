@@ -107,7 +107,7 @@ TEST(RenderChecks, GeneratedLinesStayAtTheAnchorAndSayWhere) {
   outcome.fragment_log = "0:3(10): error: `foo' undeclared\n0:9(1): error: bad\n";
   CheckContext context;
   context.anchor = {2, 0, 0};
-  context.map_line = [](ShaderStage, uint32_t line) -> std::optional<SourceRange> {
+  context.map_line = [](model::Stage, uint32_t line) -> std::optional<SourceRange> {
     if (line == 9) return SourceRange{2, 40, 45};
     return std::nullopt;
   };

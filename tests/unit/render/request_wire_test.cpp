@@ -20,7 +20,7 @@ RenderRequest EveryFieldSet() {
   request.inputs.frame_rate = 30.0f;
   request.inputs.mouse = {1, 2, 3, 4};
   request.inputs.date = {2024, 5, 6, 7};
-  request.inputs.channels[1].kind = ChannelKind::kCube;
+  request.inputs.channels[1].kind = model::ChannelKind::kCube;
   request.inputs.channels[2].unbound = true;
   request.inputs.channels[3].image = {2, 1, {1, 2, 3, 4, 5, 6, 7, 8}};
   request.buffer_passes.push_back({2, "buffer text", {0, -1, 2, 3}});

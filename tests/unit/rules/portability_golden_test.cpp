@@ -46,7 +46,7 @@ using Case = testing::GoldenCase;
 std::vector<Case> AllCases() { return testing::GoldenCases("portability"); }
 
 // `shaderport fix` with the portability rules only.
-rule::FixEngineResult FixPortability(const std::string& text, Kind kind, rule::ShaderStage stage) {
+rule::FixEngineResult FixPortability(const std::string& text, Kind kind, model::Stage stage) {
   const SourceFile file(0, "input", text);
   rule::FixEngineOptions options;
   options.settings = typing_test::FixSettings(kind, stage);
@@ -78,8 +78,7 @@ TEST(PortabilityGolden, Cases) {
     ASSERT_NE(r, nullptr) << c.rule_id;
     const std::string ext = c.input.extension().string();
     const Kind kind = ext == ".glsl" ? Kind::kShaderToy : Kind::kWebGL;
-    const rule::ShaderStage stage =
-        ext == ".vert" ? rule::ShaderStage::kVertex : rule::ShaderStage::kFragment;
+    const model::Stage stage = ext == ".vert" ? model::Stage::kVertex : model::Stage::kFragment;
     const std::string text = ReadWholeFile(c.input);
     const std::string stem = c.input.stem().string();
 
@@ -158,9 +157,9 @@ TEST(PortabilityRules, FixModeWritesTheBrowsersZeros) {
       "}\n";
   const SourceFile file(0, "input", text);
   rule::FixEngineOptions options;
-  options.settings = typing_test::FixSettings(Kind::kShaderToy, rule::ShaderStage::kFragment);
+  options.settings = typing_test::FixSettings(Kind::kShaderToy, model::Stage::kFragment);
   options.rules = rules::RulesForMode(rule::PortMode::kFix);
-  options.analyze = typing_test::AnalyzerFor(Kind::kShaderToy, rule::ShaderStage::kFragment);
+  options.analyze = typing_test::AnalyzerFor(Kind::kShaderToy, model::Stage::kFragment);
   const rule::FixEngineResult fixed = rule::RunFixEngine(file, options);
   EXPECT_EQ(fixed.text,
             "void mainImage(out vec4 O, in vec2 U) {\n"
@@ -170,7 +169,7 @@ TEST(PortabilityRules, FixModeWritesTheBrowsersZeros) {
             "  O += col2;\n"
             "}\n");
   bool accepted = false;
-  typing_test::Compile(fixed.text, Kind::kShaderToy, rule::ShaderStage::kFragment, &accepted);
+  typing_test::Compile(fixed.text, Kind::kShaderToy, model::Stage::kFragment, &accepted);
   EXPECT_TRUE(accepted);
 }
 
@@ -182,7 +181,7 @@ TEST(PortabilityRules, LongExpressionChainsDoNotOverflow) {
       "void mainImage(out vec4 O, in vec2 U) {\n  float x = 1.0;\n  O = vec4(" + sum + ");\n}\n";
   for (const rule::Rule* r : PortabilityRules()) {
     const DiagnosticList found =
-        typing_test::RunOneRule(*r, text, Kind::kShaderToy, rule::ShaderStage::kFragment);
+        typing_test::RunOneRule(*r, text, Kind::kShaderToy, model::Stage::kFragment);
     EXPECT_TRUE(found.empty()) << FormatFindings(text, found);
   }
 }
@@ -196,10 +195,9 @@ TEST(PortabilityRules, MissingReturnLeavesABodyThatIsNotClosed) {
       "  fragColor = vec4(f(fragCoord.x));\n}\n";
   const rule::Rule* r = rules::FindRule(kMissingReturn);
   ASSERT_NE(r, nullptr);
-  EXPECT_TRUE(
-      typing_test::RunOneRule(*r, text, Kind::kShaderToy, rule::ShaderStage::kFragment).empty());
+  EXPECT_TRUE(typing_test::RunOneRule(*r, text, Kind::kShaderToy, model::Stage::kFragment).empty());
   const rule::FixEngineResult fixed =
-      FixPortability(text, Kind::kShaderToy, rule::ShaderStage::kFragment);
+      FixPortability(text, Kind::kShaderToy, model::Stage::kFragment);
   EXPECT_TRUE(fixed.converged);
   EXPECT_EQ(fixed.text, text);
 }

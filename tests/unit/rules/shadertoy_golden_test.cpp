@@ -49,9 +49,9 @@ rule::PortSettings CaseSettings(const std::string& text) {
   rule::PortSettings settings = HarnessSettings(rules::FindBuiltinDialect(dialect));
   if (std::regex_search(text, match, std::regex("// channel: ([0-3])=(2d|cube|3d)"))) {
     const std::string kind = match[2];
-    settings.channels[std::stoi(match[1])] = kind == "2d"     ? rule::ChannelKind::k2D
-                                             : kind == "cube" ? rule::ChannelKind::kCube
-                                                              : rule::ChannelKind::k3D;
+    settings.channels[std::stoi(match[1])] = kind == "2d"     ? model::ChannelKind::k2D
+                                             : kind == "cube" ? model::ChannelKind::kCube
+                                                              : model::ChannelKind::k3D;
   }
   return settings;
 }

@@ -29,18 +29,18 @@ namespace shaderport::shadertoy_test {
 // the analysis must see until the port defines it itself.
 // Hosts whose users write main() (glslsandbox...) take WebGL1 code: its own #version.
 inline rule::AnalyzedShader AnalyzeHarnessCode(const SourceFile& file, bool shadertoy = true) {
-  if (!shadertoy) return rule::AnalyzePlain(file, 0, rule::ShaderStage::kFragment);
+  if (!shadertoy) return rule::AnalyzePlain(file, 0, model::Stage::kFragment);
   std::vector<std::string> predefined;
   if (file.Text().find("#define HW_PERFORMANCE") == std::string_view::npos) {
     predefined.push_back("HW_PERFORMANCE=1");
   }
-  return rule::AnalyzePlain(file, 300, rule::ShaderStage::kFragment, predefined);
+  return rule::AnalyzePlain(file, 300, model::Stage::kFragment, predefined);
 }
 
 inline rule::PortSettings HarnessSettings(const rule::HarnessDialect* dialect) {
   rule::PortSettings settings;
   settings.mode = rule::PortMode::kPort;
-  settings.stage = rule::ShaderStage::kFragment;
+  settings.stage = model::Stage::kFragment;
   settings.harness = dialect;
   settings.source_version = 300;
   return settings;
@@ -71,7 +71,7 @@ inline rule::FixEngineResult Port(const std::string& text, const rule::PortSetti
 inline validate::ValidationResult CompileEssl300(const std::string& text) {
   validate::ValidationRequest request;
   request.parts.push_back({"output", text, 0, validate::PartKind::kUser});
-  request.stage = validate::Stage::kFragment;
+  request.stage = model::Stage::kFragment;
   request.default_version = 300;
   request.link = true;
   return validate::ValidateWithGlslang(request);

@@ -30,8 +30,8 @@ TEST(TypingCorpus, StrictTypingCasesAreFixed) {
     for (std::string field; std::getline(row, field, '\t');) fields.push_back(field);
     ASSERT_GE(fields.size(), 5u) << line;
     const Kind kind = fields[2] == "shadertoy" ? Kind::kShaderToy : Kind::kWebGL;
-    const rule::ShaderStage stage =
-        fields[3] == "vertex" ? rule::ShaderStage::kVertex : rule::ShaderStage::kFragment;
+    const model::Stage stage =
+        fields[3] == "vertex" ? model::Stage::kVertex : model::Stage::kFragment;
     const std::string text = shaderport::testing::ReadWholeFile(root / fields[0]);
     SCOPED_TRACE(fields[0]);
     bool accepted = false;
@@ -66,8 +66,7 @@ TEST(TypingCorpus, ConformanceImplicitCasesAreFixed) {
     const bool vertex_fails = !expected.value("vShaderSuccess", true);
     const bool fragment_fails = !expected.value("fShaderSuccess", true);
     if (!vertex_fails && !fragment_fails) continue;
-    const rule::ShaderStage stage =
-        vertex_fails ? rule::ShaderStage::kVertex : rule::ShaderStage::kFragment;
+    const model::Stage stage = vertex_fails ? model::Stage::kVertex : model::Stage::kFragment;
     const std::string text = j[vertex_fails ? "vertex" : "fragment"].get<std::string>();
     SCOPED_TRACE(j["id"].get<std::string>());
     ++cases;

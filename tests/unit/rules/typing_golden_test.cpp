@@ -50,8 +50,7 @@ TEST(TypingGolden, Cases) {
     ASSERT_NE(r, nullptr) << c.rule_id;
     const std::string ext = c.input.extension().string();
     const Kind kind = ext == ".glsl" ? Kind::kShaderToy : Kind::kWebGL;
-    const rule::ShaderStage stage =
-        ext == ".vert" ? rule::ShaderStage::kVertex : rule::ShaderStage::kFragment;
+    const model::Stage stage = ext == ".vert" ? model::Stage::kVertex : model::Stage::kFragment;
     const std::string text = ReadWholeFile(c.input);
     const std::string stem = c.input.stem().string();
 

@@ -55,7 +55,7 @@ inline rule::AnalyzedShader AnalyzeShaderToy(const SourceFile& file) {
   return shader;
 }
 
-inline rule::Analyzer AnalyzerFor(Kind kind, rule::ShaderStage stage) {
+inline rule::Analyzer AnalyzerFor(Kind kind, model::Stage stage) {
   if (kind == Kind::kShaderToy) return AnalyzeShaderToy;
   return [stage](const SourceFile& f) { return rule::AnalyzePlain(f, 0, stage); };
 }
@@ -72,7 +72,7 @@ inline const rule::HarnessDialect* ShaderToyHarness() {
   return &harness;
 }
 
-inline rule::PortSettings FixSettings(Kind kind, rule::ShaderStage stage) {
+inline rule::PortSettings FixSettings(Kind kind, model::Stage stage) {
   rule::PortSettings settings;
   settings.mode = rule::PortMode::kFix;
   settings.stage = stage;
@@ -91,7 +91,7 @@ inline std::vector<const rule::Rule*> TypingRules() {
 
 // What `rule_id` alone reports on `text`.
 inline DiagnosticList RunOneRule(const rule::Rule& r, const std::string& text, Kind kind,
-                                 rule::ShaderStage stage) {
+                                 model::Stage stage) {
   const SourceFile file(0, "input", text);
   const rule::AnalyzedShader analyzed = AnalyzerFor(kind, stage)(file);
   const rule::PortSettings settings = FixSettings(kind, stage);
@@ -102,8 +102,7 @@ inline DiagnosticList RunOneRule(const rule::Rule& r, const std::string& text, K
 }
 
 // `shaderport fix` with the typing rules only.
-inline rule::FixEngineResult FixTyping(const std::string& text, Kind kind,
-                                       rule::ShaderStage stage) {
+inline rule::FixEngineResult FixTyping(const std::string& text, Kind kind, model::Stage stage) {
   const SourceFile file(0, "input", text);
   rule::FixEngineOptions options;
   options.settings = FixSettings(kind, stage);
@@ -114,18 +113,17 @@ inline rule::FixEngineResult FixTyping(const std::string& text, Kind kind,
 
 // glslang's verdict on the text in its dialect: ShaderToy code under the site's
 // contract (Image pass), WebGL code as written (ESSL 1.00 without #version).
-inline validate::ValidationResult Compile(const std::string& text, Kind kind,
-                                          rule::ShaderStage stage, bool* accepted) {
+inline validate::ValidationResult Compile(const std::string& text, Kind kind, model::Stage stage,
+                                          bool* accepted) {
   SourceManager sources;
   const SourceFile& file = sources.Add("input", text);
   validate::ValidationRequest request;
   if (kind == Kind::kShaderToy) {
-    request = validate::ComposeShaderToyRequest(sources, validate::PassType::kImage,
-                                                validate::ChannelTypes{}, nullptr, file);
+    request = validate::ComposeShaderToyRequest(sources, model::PassKind::kImage,
+                                                model::ChannelKinds{}, nullptr, file);
   } else {
     request.parts.push_back({"input", file.Text(), file.Id(), validate::PartKind::kUser});
-    request.stage =
-        stage == rule::ShaderStage::kVertex ? validate::Stage::kVertex : validate::Stage::kFragment;
+    request.stage = stage;
     request.default_version = 100;
   }
   validate::ValidationResult result = validate::ValidateWithGlslang(request);

@@ -52,7 +52,7 @@ TEST(Webgl2Golden, Cases) {
     const std::string text = ReadWholeFile(c.input);
     const std::string stem = c.input.stem().string();
     const std::string ext = c.input.extension().string();
-    const auto stage = ext == ".vert" ? rule::ShaderStage::kVertex : rule::ShaderStage::kFragment;
+    const auto stage = ext == ".vert" ? model::Stage::kVertex : model::Stage::kFragment;
     const int version = text.find("#version 300 es") == std::string::npos ? 100 : 300;
 
     const RuleRun run = RunOneRule(*r, text, stage, rule::PortMode::kPort, version);

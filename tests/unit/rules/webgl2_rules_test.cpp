@@ -13,8 +13,8 @@
 namespace shaderport::webgl2_test {
 namespace {
 
+using model::Stage;
 using rule::PortMode;
-using rule::ShaderStage;
 
 const rule::Rule& Rule(std::string_view id) {
   const rule::Rule* r = rules::FindRule(id);
@@ -36,7 +36,7 @@ TEST(Webgl2Rules, RegisteredWithScopes) {
 TEST(Webgl2Rules, ReservedNamesLeaveOneHundredCodeAloneInFixMode) {
   const std::string text = "precision mediump float;\nuniform float sample;\nvoid main() {}\n";
   EXPECT_TRUE(
-      RunOneRule(Rule("webgl2/reserved-names"), text, ShaderStage::kFragment, PortMode::kFix, 100)
+      RunOneRule(Rule("webgl2/reserved-names"), text, model::Stage::kFragment, PortMode::kFix, 100)
           .diagnostics.empty());
 }
 
@@ -45,26 +45,26 @@ TEST(Webgl2Rules, ReservedNamesFixThreeHundredCode) {
       "#version 300 es\nprecision mediump float;\nuniform float sample;\nout vec4 c;\n"
       "void main() { c = vec4(sample); }\n";
   const RuleRun run =
-      RunOneRule(Rule("webgl2/reserved-names"), text, ShaderStage::kFragment, PortMode::kFix, 300);
+      RunOneRule(Rule("webgl2/reserved-names"), text, model::Stage::kFragment, PortMode::kFix, 300);
   ASSERT_EQ(run.diagnostics.size(), 1u)
       << shaderport::testing::FormatFindings(text, run.diagnostics);
   EXPECT_EQ(run.diagnostics[0].severity, Severity::kError);
   EXPECT_EQ(run.fixed,
             "#version 300 es\nprecision mediump float;\nuniform float sample_;\nout vec4 c;\n"
             "void main() { c = vec4(sample_); }\n");
-  EXPECT_TRUE(Compile(run.fixed, ShaderStage::kFragment).Accepted(false));
+  EXPECT_TRUE(Compile(run.fixed, model::Stage::kFragment).Accepted(false));
   // A variable named like a new built-in is fine in 3.00 code: fix mode keeps it.
   const std::string keep =
       "#version 300 es\nprecision mediump float;\nuniform float round;\nout vec4 c;\n"
       "void main() { c = vec4(round); }\n";
   EXPECT_TRUE(
-      RunOneRule(Rule("webgl2/reserved-names"), keep, ShaderStage::kFragment, PortMode::kFix, 300)
+      RunOneRule(Rule("webgl2/reserved-names"), keep, model::Stage::kFragment, PortMode::kFix, 300)
           .diagnostics.empty());
 }
 
 TEST(Webgl2Rules, InterfaceUniformRenameNotesTheHost) {
   const std::string text = "attribute vec4 sample;\nvoid main() { gl_Position = sample; }\n";
-  const RuleRun run = RunOneRule(Rule("webgl2/reserved-names"), text, ShaderStage::kVertex);
+  const RuleRun run = RunOneRule(Rule("webgl2/reserved-names"), text, model::Stage::kVertex);
   ASSERT_EQ(run.diagnostics.size(), 1u);
   ASSERT_EQ(run.diagnostics[0].notes.size(), 1u);
   EXPECT_NE(run.diagnostics[0].notes[0].message.find("host application"), std::string::npos);
@@ -73,7 +73,7 @@ TEST(Webgl2Rules, InterfaceUniformRenameNotesTheHost) {
 TEST(Webgl2Rules, DynamicFragDataIndexHasNoFix) {
   const std::string text =
       "precision mediump float;\nuniform int i;\nvoid main() { gl_FragData[i] = vec4(1.0); }\n";
-  const RuleRun run = RunOneRule(Rule("webgl2/frag-outputs"), text, ShaderStage::kFragment);
+  const RuleRun run = RunOneRule(Rule("webgl2/frag-outputs"), text, model::Stage::kFragment);
   ASSERT_EQ(run.diagnostics.size(), 1u);
   EXPECT_EQ(run.diagnostics[0].severity, Severity::kError);
   EXPECT_TRUE(run.diagnostics[0].fixes.empty());
@@ -83,13 +83,14 @@ TEST(Webgl2Rules, FragColorNameAvoidsEveryTakenName) {
   const std::string text =
       "precision mediump float;\nuniform vec4 fragColor;\n#define fragColor_1 fragColor\n"
       "void main() { gl_FragColor = fragColor_1; }\n";
-  const RuleRun run = RunOneRule(Rule("webgl2/frag-outputs"), text, ShaderStage::kFragment);
+  const RuleRun run = RunOneRule(Rule("webgl2/frag-outputs"), text, model::Stage::kFragment);
   EXPECT_NE(run.fixed.find("out highp vec4 fragColor_2;"), std::string::npos) << run.fixed;
 }
 
 TEST(Webgl2Rules, VertexShadersGetNoFloatPrecisionAndNoFragOutputs) {
   const std::string text = "attribute vec4 p;\nvoid main() { gl_Position = p; }\n";
-  EXPECT_TRUE(RunOneRule(Rule("webgl2/precision"), text, ShaderStage::kVertex).diagnostics.empty());
+  EXPECT_TRUE(
+      RunOneRule(Rule("webgl2/precision"), text, model::Stage::kVertex).diagnostics.empty());
 }
 
 TEST(Webgl2Rules, TextureVariableIsNotACall) {
@@ -97,7 +98,7 @@ TEST(Webgl2Rules, TextureVariableIsNotACall) {
   const std::string text =
       "precision mediump float;\nuniform sampler2D tex;\nvoid main() {\n"
       "  vec4 texture2D = vec4(1.0);\n  gl_FragColor = texture2D;\n}\n";
-  EXPECT_TRUE(RunOneRule(Rule("webgl2/texture-functions"), text, ShaderStage::kFragment)
+  EXPECT_TRUE(RunOneRule(Rule("webgl2/texture-functions"), text, model::Stage::kFragment)
                   .diagnostics.empty());
 }
 
@@ -114,8 +115,8 @@ TEST(Webgl2Rules, SsaoCorpusPortsAndValidates) {
     SCOPED_TRACE(name);
     const std::string text = shaderport::testing::ReadWholeFile(dir + name);
     ASSERT_FALSE(text.empty());
-    const ShaderStage stage =
-        std::string(name).ends_with(".vert") ? ShaderStage::kVertex : ShaderStage::kFragment;
+    const model::Stage stage =
+        std::string(name).ends_with(".vert") ? model::Stage::kVertex : model::Stage::kFragment;
     const rule::FixEngineResult result = PortWithWebgl2Rules(text, stage);
     const auto compiled = Compile(result.text, stage);
     EXPECT_TRUE(result.text.starts_with("#version 300 es\n")) << result.text;
@@ -147,8 +148,8 @@ TEST(Webgl2Rules, ConformanceWebgl1CasesPort) {
       if (!c.contains(key) || !c[key].is_string()) continue;
       const std::string text = c[key];
       if (text.find("#version 300") != std::string::npos) continue;
-      const ShaderStage stage =
-          std::string(key) == "vertex" ? ShaderStage::kVertex : ShaderStage::kFragment;
+      const model::Stage stage =
+          std::string(key) == "vertex" ? model::Stage::kVertex : model::Stage::kFragment;
       if (!Compile(text, stage).Accepted(false)) continue;  // glslang rejects it as 1.00 already
       ++total;
       const rule::FixEngineResult result = PortWithWebgl2Rules(text, stage);

@@ -23,7 +23,7 @@ struct RuleRun {
   std::string fixed;  // the text with the rule's non-overlapping safe fixes applied
 };
 
-inline rule::PortSettings Settings(rule::ShaderStage stage, rule::PortMode mode, int version) {
+inline rule::PortSettings Settings(model::Stage stage, rule::PortMode mode, int version) {
   rule::PortSettings settings;
   settings.stage = stage;
   settings.mode = mode;
@@ -31,7 +31,7 @@ inline rule::PortSettings Settings(rule::ShaderStage stage, rule::PortMode mode,
   return settings;
 }
 
-inline RuleRun RunOneRule(const rule::Rule& r, const std::string& text, rule::ShaderStage stage,
+inline RuleRun RunOneRule(const rule::Rule& r, const std::string& text, model::Stage stage,
                           rule::PortMode mode = rule::PortMode::kPort, int version = 100) {
   const SourceFile file(0, "input", text);
   const rule::AnalyzedShader analyzed = rule::AnalyzePlain(file, 0, stage);
@@ -67,7 +67,7 @@ inline std::vector<const rule::Rule*> Webgl2Rules() {
   return selected;
 }
 
-inline rule::FixEngineResult PortWithWebgl2Rules(const std::string& text, rule::ShaderStage stage,
+inline rule::FixEngineResult PortWithWebgl2Rules(const std::string& text, model::Stage stage,
                                                  int version = 100) {
   const SourceFile file(0, "input", text);
   rule::FixEngineOptions options;
@@ -77,11 +77,10 @@ inline rule::FixEngineResult PortWithWebgl2Rules(const std::string& text, rule::
   return rule::RunFixEngine(file, options);
 }
 
-inline validate::ValidationResult Compile(const std::string& text, rule::ShaderStage stage) {
+inline validate::ValidationResult Compile(const std::string& text, model::Stage stage) {
   validate::ValidationRequest request;
   request.parts.push_back({"input", text, 0, validate::PartKind::kUser});
-  request.stage =
-      stage == rule::ShaderStage::kVertex ? validate::Stage::kVertex : validate::Stage::kFragment;
+  request.stage = stage;
   request.default_version = 100;
   return validate::ValidateWithGlslang(request);
 }

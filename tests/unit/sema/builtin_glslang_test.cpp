@@ -20,12 +20,12 @@ using testing::CompileWithGlslang;
 
 struct Combo {
   int version;
-  ShaderStage stage;
+  model::Stage stage;
 };
-constexpr Combo kCombos[] = {{100, ShaderStage::kVertex},
-                             {100, ShaderStage::kFragment},
-                             {300, ShaderStage::kVertex},
-                             {300, ShaderStage::kFragment}};
+constexpr Combo kCombos[] = {{100, model::Stage::kVertex},
+                             {100, model::Stage::kFragment},
+                             {300, model::Stage::kVertex},
+                             {300, model::Stage::kFragment}};
 
 std::string Header(int version, std::string_view extension) {
   std::string s;
@@ -79,7 +79,8 @@ std::string CallShader(const BuiltinFunction& f, const std::vector<Type>& arg_ty
 struct Tally {
   int agree = 0;
   std::vector<std::string> disagreements;
-  void Check(bool expected, const std::string& shader, ShaderStage stage, const std::string& what) {
+  void Check(bool expected, const std::string& shader, model::Stage stage,
+             const std::string& what) {
     testing::GlslangResult r = CompileWithGlslang(shader, stage);
     if (r.ok == expected) {
       ++agree;
@@ -94,7 +95,7 @@ std::string Describe(const BuiltinFunction& f, const std::vector<Type>& args, co
   std::string s = Spell(f.return_type) + " " + f.name + "(";
   for (size_t i = 0; i < args.size(); ++i) s += (i ? ", " : "") + Spell(args[i]);
   return s + ") in ESSL " + std::to_string(c.version) +
-         (c.stage == ShaderStage::kVertex ? " vertex" : " fragment");
+         (c.stage == model::Stage::kVertex ? " vertex" : " fragment");
 }
 
 // The overload our resolution picks among the available ones, else nullptr.
@@ -109,7 +110,7 @@ const BuiltinFunction* StrictlyResolve(const BuiltinFunction& f, const std::vect
 // functions to fragment shaders only (as ANGLE, the WebGL reference, does); glslang also
 // accepts the Grad forms in vertex shaders.
 bool IsKnownGlslangQuirk(const BuiltinFunction& f, const Combo& c) {
-  return c.version == 100 && c.stage == ShaderStage::kVertex && f.name.ends_with("GradEXT");
+  return c.version == 100 && c.stage == model::Stage::kVertex && f.name.ends_with("GradEXT");
 }
 
 TEST(BuiltinGlslangTest, FunctionsAgreeWithGlslang) {

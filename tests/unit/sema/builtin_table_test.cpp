@@ -38,81 +38,82 @@ TEST(BuiltinTableTest, FamiliesExpand) {
 
 TEST(BuiltinTableTest, ExactMatchOnly) {
   BuiltinCallMatch m =
-      ResolveBuiltinCall("pow", std::vector{kFloat, kInt}, 300, ShaderStage::kFragment);
+      ResolveBuiltinCall("pow", std::vector{kFloat, kInt}, 300, model::Stage::kFragment);
   EXPECT_EQ(m.function, nullptr);
-  m = ResolveBuiltinCall("pow", std::vector{kVec3, kVec3}, 300, ShaderStage::kFragment);
+  m = ResolveBuiltinCall("pow", std::vector{kVec3, kVec3}, 300, model::Stage::kFragment);
   ASSERT_NE(m.function, nullptr);
   EXPECT_EQ(m.function->return_type, kVec3);
-  m = ResolveBuiltinCall("mix", std::vector{kVec3, kVec3, kFloat}, 100, ShaderStage::kVertex);
+  m = ResolveBuiltinCall("mix", std::vector{kVec3, kVec3, kFloat}, 100, model::Stage::kVertex);
   ASSERT_NE(m.function, nullptr);
   EXPECT_EQ(m.function->return_type, kVec3);
-  m = ResolveBuiltinCall("dot", std::vector{kVec2, kVec2}, 100, ShaderStage::kVertex);
+  m = ResolveBuiltinCall("dot", std::vector{kVec2, kVec2}, 100, model::Stage::kVertex);
   ASSERT_NE(m.function, nullptr);
   EXPECT_EQ(m.function->return_type, kFloat);
-  m = ResolveBuiltinCall("min", std::vector{kInt, kInt}, 300, ShaderStage::kFragment);
+  m = ResolveBuiltinCall("min", std::vector{kInt, kInt}, 300, model::Stage::kFragment);
   ASSERT_NE(m.function, nullptr);
   EXPECT_EQ(m.function->return_type, kInt);
   // int min exists only in 3.00: in 1.00 it resolves but is marked unavailable.
-  m = ResolveBuiltinCall("min", std::vector{kInt, kInt}, 100, ShaderStage::kFragment);
+  m = ResolveBuiltinCall("min", std::vector{kInt, kInt}, 100, model::Stage::kFragment);
   ASSERT_NE(m.function, nullptr);
   EXPECT_FALSE(m.available);
 }
 
 TEST(BuiltinTableTest, TextureLookups) {
   BuiltinCallMatch m =
-      ResolveBuiltinCall("texture", std::vector{kSampler2D, kVec2}, 300, ShaderStage::kFragment);
+      ResolveBuiltinCall("texture", std::vector{kSampler2D, kVec2}, 300, model::Stage::kFragment);
   ASSERT_NE(m.function, nullptr);
   EXPECT_EQ(m.function->return_type, kVec4);
   m = ResolveBuiltinCall("texture",
                          std::vector{Type::Sampler(SamplerDim::k2D, BaseType::kInt), kVec2, kFloat},
-                         300, ShaderStage::kFragment);
+                         300, model::Stage::kFragment);
   ASSERT_NE(m.function, nullptr);
   EXPECT_EQ(m.function->return_type, Type::Vector(BaseType::kInt, 4));
   // Bias forms are fragment-only.
   m = ResolveBuiltinCall("texture2D", std::vector{kSampler2D, kVec2, kFloat}, 100,
-                         ShaderStage::kVertex);
+                         model::Stage::kVertex);
   ASSERT_NE(m.function, nullptr);
   EXPECT_FALSE(m.available);
   // texture2D is gone in 3.00 but still typed.
-  m = ResolveBuiltinCall("texture2D", std::vector{kSampler2D, kVec2}, 300, ShaderStage::kFragment);
+  m = ResolveBuiltinCall("texture2D", std::vector{kSampler2D, kVec2}, 300, model::Stage::kFragment);
   ASSERT_NE(m.function, nullptr);
   EXPECT_FALSE(m.available);
   EXPECT_EQ(m.function->return_type, kVec4);
   m = ResolveBuiltinCall("textureSize", std::vector{Type::Sampler(SamplerDim::k3D), kInt}, 300,
-                         ShaderStage::kVertex);
+                         model::Stage::kVertex);
   ASSERT_NE(m.function, nullptr);
   EXPECT_EQ(m.function->return_type, Type::Vector(BaseType::kInt, 3));
 }
 
 TEST(BuiltinTableTest, UnknownArgumentsResolveWhenUnambiguous) {
   BuiltinCallMatch m =
-      ResolveBuiltinCall("length", std::vector{Type::Unknown()}, 300, ShaderStage::kFragment);
+      ResolveBuiltinCall("length", std::vector{Type::Unknown()}, 300, model::Stage::kFragment);
   ASSERT_NE(m.function, nullptr);  // every length() returns float
   EXPECT_TRUE(m.uncertain);
   EXPECT_EQ(m.function->return_type, kFloat);
-  m = ResolveBuiltinCall("normalize", std::vector{Type::Unknown()}, 300, ShaderStage::kFragment);
+  m = ResolveBuiltinCall("normalize", std::vector{Type::Unknown()}, 300, model::Stage::kFragment);
   EXPECT_EQ(m.function, nullptr);
-  m = ResolveBuiltinCall("cross", std::vector{Type::Unknown(), kVec3}, 300, ShaderStage::kFragment);
+  m = ResolveBuiltinCall("cross", std::vector{Type::Unknown(), kVec3}, 300,
+                         model::Stage::kFragment);
   ASSERT_NE(m.function, nullptr);
   EXPECT_EQ(m.function->return_type, kVec3);
 }
 
 TEST(BuiltinTableTest, Variables) {
-  const BuiltinVariable* v = FindBuiltinVariable("gl_FragColor", 100, ShaderStage::kFragment);
+  const BuiltinVariable* v = FindBuiltinVariable("gl_FragColor", 100, model::Stage::kFragment);
   ASSERT_NE(v, nullptr);
   EXPECT_EQ(v->type, kVec4);
-  EXPECT_EQ(FindBuiltinVariable("gl_FragColor", 300, ShaderStage::kFragment), nullptr);
-  EXPECT_EQ(FindBuiltinVariable("gl_FragColor", 100, ShaderStage::kVertex), nullptr);
-  v = FindBuiltinVariable("gl_MaxDrawBuffers", 300, ShaderStage::kVertex);
+  EXPECT_EQ(FindBuiltinVariable("gl_FragColor", 300, model::Stage::kFragment), nullptr);
+  EXPECT_EQ(FindBuiltinVariable("gl_FragColor", 100, model::Stage::kVertex), nullptr);
+  v = FindBuiltinVariable("gl_MaxDrawBuffers", 300, model::Stage::kVertex);
   ASSERT_NE(v, nullptr);
   EXPECT_EQ(v->value, 4);
   EXPECT_EQ(v->storage, BuiltinStorage::kConst);
-  v = FindBuiltinVariable("gl_FragData", 100, ShaderStage::kFragment);
+  v = FindBuiltinVariable("gl_FragData", 100, model::Stage::kFragment);
   ASSERT_NE(v, nullptr);
   EXPECT_EQ(Spell(v->type), "vec4[]");
-  EXPECT_NE(FindBuiltinVariable("gl_VertexID", 300, ShaderStage::kVertex), nullptr);
-  EXPECT_EQ(FindBuiltinVariable("gl_VertexID", 100, ShaderStage::kVertex), nullptr);
-  EXPECT_NE(FindBuiltinVariable("gl_DepthRange", 100, ShaderStage::kFragment), nullptr);
+  EXPECT_NE(FindBuiltinVariable("gl_VertexID", 300, model::Stage::kVertex), nullptr);
+  EXPECT_EQ(FindBuiltinVariable("gl_VertexID", 100, model::Stage::kVertex), nullptr);
+  EXPECT_NE(FindBuiltinVariable("gl_DepthRange", 100, model::Stage::kFragment), nullptr);
 }
 
 }  // namespace

@@ -16,10 +16,10 @@ struct GlslangResult {
 };
 
 // Parses one shader (no link). `source` carries its own #version line, if any.
-inline GlslangResult CompileWithGlslang(const std::string& source, ShaderStage stage) {
+inline GlslangResult CompileWithGlslang(const std::string& source, model::Stage stage) {
   static const bool initialized = glslang::InitializeProcess();
   (void)initialized;
-  EShLanguage language = stage == ShaderStage::kVertex ? EShLangVertex : EShLangFragment;
+  EShLanguage language = stage == model::Stage::kVertex ? EShLangVertex : EShLangFragment;
   glslang::TShader shader(language);
   const char* text = source.c_str();
   shader.setStrings(&text, 1);

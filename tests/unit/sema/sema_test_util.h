@@ -57,7 +57,7 @@ inline std::unique_ptr<Analyzed> AnalyzeText(const std::vector<std::string>& fil
 }
 
 inline std::unique_ptr<Analyzed> AnalyzeText(const std::string& text, int version = 300,
-                                             ShaderStage stage = ShaderStage::kFragment) {
+                                             model::Stage stage = model::Stage::kFragment) {
   AnalyzeOptions options;
   options.version = version;
   options.stage = stage;

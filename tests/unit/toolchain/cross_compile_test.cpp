@@ -40,7 +40,7 @@ TEST(CrossCompile, HlslAndMslNameTheEntryPointAndEveryUsedUniform) {
         EmitText(shader.webgl2, shader.stage, OptionsFor(EmitKind::kMsl), shader.path);
     ASSERT_TRUE(hlsl.diagnostics.empty()) << RuleIds(hlsl.diagnostics);
     ASSERT_TRUE(msl.diagnostics.empty()) << RuleIds(msl.diagnostics);
-    const char* stage_word = shader.stage == Stage::kVertex ? "vertex" : "fragment";
+    const char* stage_word = shader.stage == model::Stage::kVertex ? "vertex" : "fragment";
     // HLSL keeps SPIR-V's entry point name; MSL renames main (reserved in Metal) to main0.
     EXPECT_NE(hlsl.output.find(" main("), std::string::npos) << hlsl.output;
     EXPECT_NE(msl.output.find(std::string(stage_word) + " main0_out main0("), std::string::npos)
@@ -77,14 +77,15 @@ TEST(CrossCompile, UnoptimisedRoundTripIsReadable) {
       "#version 300 es\nprecision highp float;\nuniform float iTime;\nout vec4 color;\n"
       "float wave(float t) { return sin(t) * 0.5 + 0.5; }\n"
       "void main() { float brightness = wave(iTime); color = vec4(brightness); }\n";
-  const EmitResult plain = EmitText(text, Stage::kFragment, OptionsFor(EmitKind::kEsslRoundtrip));
+  const EmitResult plain =
+      EmitText(text, model::Stage::kFragment, OptionsFor(EmitKind::kEsslRoundtrip));
   ASSERT_TRUE(plain.diagnostics.empty()) << RuleIds(plain.diagnostics);
   EXPECT_NE(plain.output.find("float wave("), std::string::npos) << plain.output;
   EXPECT_NE(plain.output.find("uniform highp float iTime;"), std::string::npos) << plain.output;
   EXPECT_NE(plain.output.find("out highp vec4 color;"), std::string::npos) << plain.output;
   EmitOptions optimized = OptionsFor(EmitKind::kEsslRoundtrip);
   optimized.optimize = "O";
-  const EmitResult inlined = EmitText(text, Stage::kFragment, optimized);
+  const EmitResult inlined = EmitText(text, model::Stage::kFragment, optimized);
   ASSERT_TRUE(inlined.diagnostics.empty()) << RuleIds(inlined.diagnostics);
   EXPECT_EQ(inlined.output.find("float wave("), std::string::npos) << inlined.output;
   EXPECT_LT(inlined.words_after, inlined.words_before);
@@ -96,8 +97,8 @@ TEST(CrossCompile, ShaderModelAndMslVersionAreHonoured) {
       "out vec4 color;\nvoid main() { color = texture(tex, uv); }\n";
   EmitOptions sm30 = OptionsFor(EmitKind::kHlsl);
   sm30.hlsl_shader_model = 30;
-  const EmitResult old_hlsl = EmitText(text, Stage::kFragment, sm30);
-  const EmitResult new_hlsl = EmitText(text, Stage::kFragment, OptionsFor(EmitKind::kHlsl));
+  const EmitResult old_hlsl = EmitText(text, model::Stage::kFragment, sm30);
+  const EmitResult new_hlsl = EmitText(text, model::Stage::kFragment, OptionsFor(EmitKind::kHlsl));
   ASSERT_TRUE(old_hlsl.diagnostics.empty()) << RuleIds(old_hlsl.diagnostics);
   ASSERT_TRUE(new_hlsl.diagnostics.empty()) << RuleIds(new_hlsl.diagnostics);
   EXPECT_NE(old_hlsl.output.find("sampler2D"), std::string::npos) << old_hlsl.output;
@@ -105,8 +106,8 @@ TEST(CrossCompile, ShaderModelAndMslVersionAreHonoured) {
 
   EmitOptions msl1 = OptionsFor(EmitKind::kMsl);
   msl1.msl_version = 10200;
-  const EmitResult old_msl = EmitText(text, Stage::kFragment, msl1);
-  const EmitResult new_msl = EmitText(text, Stage::kFragment, OptionsFor(EmitKind::kMsl));
+  const EmitResult old_msl = EmitText(text, model::Stage::kFragment, msl1);
+  const EmitResult new_msl = EmitText(text, model::Stage::kFragment, OptionsFor(EmitKind::kMsl));
   ASSERT_TRUE(old_msl.diagnostics.empty()) << RuleIds(old_msl.diagnostics);
   EXPECT_NE(new_msl.output.find("texture2d<float> tex"), std::string::npos) << new_msl.output;
   EXPECT_NE(old_msl.output.find("main0"), std::string::npos);

@@ -17,9 +17,9 @@ constexpr const char* kBufferName =
     "void main() {\n  float buffer = 0.5;\n  color = vec4(buffer);\n}\n";
 
 TEST(EmitDiagnostics, A310esReservedWordIsALegLimitationOnItsLine) {
-  ASSERT_EQ(GlslangErrors(kBufferName, Stage::kFragment), "") << "valid WebGL2 shader";
+  ASSERT_EQ(GlslangErrors(kBufferName, model::Stage::kFragment), "") << "valid WebGL2 shader";
   const SourceFile file(3, "buffer.frag", kBufferName);
-  const EmitResult result = Emit(file, Stage::kFragment, OptionsFor(EmitKind::kHlsl));
+  const EmitResult result = Emit(file, model::Stage::kFragment, OptionsFor(EmitKind::kHlsl));
   ASSERT_FALSE(result.diagnostics.empty());
   EXPECT_TRUE(result.output.empty());
   for (const Diagnostic& d : result.diagnostics) {
@@ -37,9 +37,9 @@ TEST(EmitDiagnostics, InvalidEsslIsInvalidInputNotALegLimitation) {
   const std::string text =
       "#version 300 es\nprecision highp float;\nout vec4 color;\n"
       "void main() {\n  float x = 1;\n  color = vec4(x);\n}\n";
-  ASSERT_NE(GlslangErrors(text, Stage::kFragment), "");  // the helper can say no
+  ASSERT_NE(GlslangErrors(text, model::Stage::kFragment), "");  // the helper can say no
   const SourceFile file(0, "bad.frag", text);
-  const EmitResult result = Emit(file, Stage::kFragment, OptionsFor(EmitKind::kSpirv));
+  const EmitResult result = Emit(file, model::Stage::kFragment, OptionsFor(EmitKind::kSpirv));
   ASSERT_FALSE(result.diagnostics.empty());
   EXPECT_EQ(result.diagnostics.front().rule_id, "spirv/invalid-input");
   EXPECT_EQ(file.LocationOf(result.diagnostics.front().range.begin).line, 5u);
@@ -47,8 +47,8 @@ TEST(EmitDiagnostics, InvalidEsslIsInvalidInputNotALegLimitation) {
 }
 
 TEST(EmitDiagnostics, MissingMainIsInvalidInput) {
-  const EmitResult result = EmitText("#version 300 es\nfloat f() { return 1.0; }\n", Stage::kVertex,
-                                     OptionsFor(EmitKind::kSpvasm));
+  const EmitResult result = EmitText("#version 300 es\nfloat f() { return 1.0; }\n",
+                                     model::Stage::kVertex, OptionsFor(EmitKind::kSpvasm));
   ASSERT_FALSE(result.diagnostics.empty()) << result.output;
   EXPECT_EQ(result.diagnostics.front().rule_id, "spirv/invalid-input");
 }
@@ -56,7 +56,7 @@ TEST(EmitDiagnostics, MissingMainIsInvalidInput) {
 TEST(EmitDiagnostics, UnknownOptimisationLevelIsRejectedBeforeCompiling) {
   EmitOptions options = OptionsFor(EmitKind::kSpirv);
   options.optimize = "O3";
-  const EmitResult result = EmitText(kBufferName, Stage::kFragment, options);
+  const EmitResult result = EmitText(kBufferName, model::Stage::kFragment, options);
   ASSERT_EQ(result.diagnostics.size(), 1u) << RuleIds(result.diagnostics);
   EXPECT_EQ(result.diagnostics[0].rule_id, "spirv/unknown-optimization");
   EXPECT_NE(result.diagnostics[0].message.find("O3"), std::string::npos);
@@ -66,14 +66,14 @@ TEST(EmitDiagnostics, OutOfRangeTargetVersionsAreRejected) {
   const std::string text = "#version 300 es\nvoid main() { gl_Position = vec4(0.0); }\n";
   EmitOptions hlsl = OptionsFor(EmitKind::kHlsl);
   hlsl.hlsl_shader_model = 7;
-  EXPECT_EQ(RuleIds(EmitText(text, Stage::kVertex, hlsl).diagnostics)
+  EXPECT_EQ(RuleIds(EmitText(text, model::Stage::kVertex, hlsl).diagnostics)
                 .rfind("spirv/unsupported-option", 0),
             0u);
   EmitOptions msl = OptionsFor(EmitKind::kMsl);
   msl.msl_version = 2;
-  EXPECT_EQ(
-      RuleIds(EmitText(text, Stage::kVertex, msl).diagnostics).rfind("spirv/unsupported-option", 0),
-      0u);
+  EXPECT_EQ(RuleIds(EmitText(text, model::Stage::kVertex, msl).diagnostics)
+                .rfind("spirv/unsupported-option", 0),
+            0u);
 }
 
 // SPIRV-Cross throws for texelFetch in shader model 3; the adapter turns that into a diagnostic.
@@ -83,13 +83,13 @@ TEST(EmitDiagnostics, SpirvCrossExceptionsBecomeDiagnostics) {
       "void main() { color = texelFetch(tex, ivec2(gl_FragCoord.xy), 0); }\n";
   EmitOptions options = OptionsFor(EmitKind::kHlsl);
   options.hlsl_shader_model = 30;
-  const EmitResult result = EmitText(text, Stage::kFragment, options);
+  const EmitResult result = EmitText(text, model::Stage::kFragment, options);
   ASSERT_EQ(result.diagnostics.size(), 1u) << result.output;
   EXPECT_EQ(result.diagnostics[0].rule_id, "spirv/cross-compile-failed");
   EXPECT_NE(result.diagnostics[0].message.find("SPIRV-Cross"), std::string::npos);
   EXPECT_TRUE(result.output.empty());
   options.hlsl_shader_model = 50;
-  EXPECT_TRUE(EmitText(text, Stage::kFragment, options).diagnostics.empty());
+  EXPECT_TRUE(EmitText(text, model::Stage::kFragment, options).diagnostics.empty());
 }
 
 // glslang 12 puts a plain bool uniform in UniformConstant, which SPIR-V forbids: the validator
@@ -98,8 +98,8 @@ TEST(EmitDiagnostics, GlslangModulesTheValidatorRejectsAreInvalidModule) {
   const std::string text =
       "#version 300 es\nprecision highp float;\nuniform bool enabled;\nout vec4 color;\n"
       "void main() { color = enabled ? vec4(1.0) : vec4(0.0); }\n";
-  ASSERT_EQ(GlslangErrors(text, Stage::kFragment), "");
-  const EmitResult result = EmitText(text, Stage::kFragment, OptionsFor(EmitKind::kSpirv));
+  ASSERT_EQ(GlslangErrors(text, model::Stage::kFragment), "");
+  const EmitResult result = EmitText(text, model::Stage::kFragment, OptionsFor(EmitKind::kSpirv));
   ASSERT_EQ(result.diagnostics.size(), 1u) << result.output.size();
   EXPECT_EQ(result.diagnostics[0].rule_id, "spirv/invalid-module");
   EXPECT_NE(result.diagnostics[0].message.find("OpTypeBool"), std::string::npos)
@@ -113,11 +113,12 @@ TEST(EmitDiagnostics, HostileInputNeverCrashes) {
       "float x = " +
       std::string(3000, '(') + "1.0" + std::string(3000, ')') + "; c = vec4(x); }\n";
   for (const EmitKind kind : {EmitKind::kSpirv, EmitKind::kEsslRoundtrip, EmitKind::kReflect}) {
-    const EmitResult result = EmitText(deep, Stage::kFragment, OptionsFor(kind));
+    const EmitResult result = EmitText(deep, model::Stage::kFragment, OptionsFor(kind));
     EXPECT_TRUE(!result.output.empty() || HasErrors(result.diagnostics));
   }
   for (const char* garbage : {"", "\x01\x02\x03", "#version 300 es\n}}}}", "#version 999\n"}) {
-    const EmitResult result = EmitText(garbage, Stage::kFragment, OptionsFor(EmitKind::kSpirv));
+    const EmitResult result =
+        EmitText(garbage, model::Stage::kFragment, OptionsFor(EmitKind::kSpirv));
     EXPECT_TRUE(HasErrors(result.diagnostics)) << garbage;
     EXPECT_TRUE(result.output.empty());
   }
@@ -140,7 +141,7 @@ TEST(EmitDiagnostics, ExponentialInliningSkipsTheOptimiserAndRefusesSpirvCross) 
   const std::string text = DoublingCalls(30);
   EmitOptions spirv = OptionsFor(EmitKind::kSpirv);
   spirv.optimize = "O";
-  const EmitResult optimised = EmitText(text, Stage::kFragment, spirv);
+  const EmitResult optimised = EmitText(text, model::Stage::kFragment, spirv);
   EXPECT_FALSE(optimised.output.empty());
   ASSERT_EQ(optimised.diagnostics.size(), 1u) << RuleIds(optimised.diagnostics);
   EXPECT_EQ(optimised.diagnostics[0].rule_id, "spirv/inlining-too-large");
@@ -148,14 +149,14 @@ TEST(EmitDiagnostics, ExponentialInliningSkipsTheOptimiserAndRefusesSpirvCross) 
   EXPECT_EQ(optimised.words_after, optimised.words_before);
   for (const EmitKind kind :
        {EmitKind::kHlsl, EmitKind::kMsl, EmitKind::kEsslRoundtrip, EmitKind::kReflect}) {
-    const EmitResult crossed = EmitText(text, Stage::kFragment, OptionsFor(kind));
+    const EmitResult crossed = EmitText(text, model::Stage::kFragment, OptionsFor(kind));
     EXPECT_TRUE(crossed.output.empty()) << EmitKindName(kind);
     ASSERT_EQ(crossed.diagnostics.size(), 1u) << RuleIds(crossed.diagnostics);
     EXPECT_EQ(crossed.diagnostics[0].rule_id, "spirv/inlining-too-large");
     EXPECT_EQ(crossed.diagnostics[0].severity, Severity::kError);
   }
   // A shallow chain is optimised and cross-compiled as before.
-  const EmitResult shallow = EmitText(DoublingCalls(4), Stage::kFragment, spirv);
+  const EmitResult shallow = EmitText(DoublingCalls(4), model::Stage::kFragment, spirv);
   EXPECT_TRUE(shallow.diagnostics.empty()) << RuleIds(shallow.diagnostics);
 }
 

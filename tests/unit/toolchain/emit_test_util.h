@@ -55,20 +55,21 @@ inline constexpr const char* kHarnessHeader =
 
 // A mechanical WebGL1 -> WebGL2 port, enough for the corpus's ssao files until
 // `shaderport port` exists: version line, attribute/varying, texture2D, gl_FragColor.
-inline std::string PortWebGl1(const std::string& text, Stage stage) {
+inline std::string PortWebGl1(const std::string& text, model::Stage stage) {
   std::string out = std::regex_replace(text, std::regex(R"(\battribute\b)"), "in");
-  out =
-      std::regex_replace(out, std::regex(R"(\bvarying\b)"), stage == Stage::kVertex ? "out" : "in");
+  out = std::regex_replace(out, std::regex(R"(\bvarying\b)"),
+                           stage == model::Stage::kVertex ? "out" : "in");
   out = std::regex_replace(out, std::regex(R"(\btexture(2D|Cube)\s*\()"), "texture(");
   out = std::regex_replace(out, std::regex(R"(\bgl_FragColor\b)"), "port_FragColor");
   std::string header = "#version 300 es\n";
-  if (stage == Stage::kFragment) header += "precision highp float;\nout vec4 port_FragColor;\n";
+  if (stage == model::Stage::kFragment)
+    header += "precision highp float;\nout vec4 port_FragColor;\n";
   return header + out;
 }
 
 struct CorpusShader {
   std::string path;  // relative to corpus/
-  Stage stage = Stage::kFragment;
+  model::Stage stage = model::Stage::kFragment;
   bool shadertoy = false;
   std::string webgl2;  // a whole WebGL2 shader
 };
@@ -85,7 +86,7 @@ inline std::vector<CorpusShader> CompilingCorpusShaders() {
     std::istringstream fields(line);
     for (std::string field; std::getline(fields, field, '\t');) f.push_back(field);
     if (f.size() != 5 || f[4] != "compiles") continue;
-    CorpusShader shader{f[0], f[3] == "vertex" ? Stage::kVertex : Stage::kFragment,
+    CorpusShader shader{f[0], f[3] == "vertex" ? model::Stage::kVertex : model::Stage::kFragment,
                         f[2] == "shadertoy", ""};
     const std::string text = ReadText(corpus / f[0]);
     if (f[2] == "shadertoy") {
@@ -104,9 +105,9 @@ inline std::vector<CorpusShader> CompilingCorpusShaders() {
 
 // glslang's verdict on `text` as GLSL ES 3.00 (pure validation, as `check` runs it): "" when
 // it compiles and links, else the log.
-inline std::string GlslangErrors(const std::string& text, Stage stage) {
+inline std::string GlslangErrors(const std::string& text, model::Stage stage) {
   glslang::InitializeProcess();
-  const EShLanguage language = stage == Stage::kVertex ? EShLangVertex : EShLangFragment;
+  const EShLanguage language = stage == model::Stage::kVertex ? EShLangVertex : EShLangFragment;
   glslang::TShader shader(language);
   const char* source = text.c_str();
   shader.setStrings(&source, 1);
@@ -155,7 +156,7 @@ inline EmitOptions OptionsFor(EmitKind kind) {
   return options;
 }
 
-inline EmitResult EmitText(const std::string& text, Stage stage, EmitOptions options,
+inline EmitResult EmitText(const std::string& text, model::Stage stage, EmitOptions options,
                            const std::string& name = "test.frag") {
   const SourceFile file(0, name, text);
   return Emit(file, stage, options);

@@ -17,7 +17,7 @@ SpirvWords Compile(const std::string& body) {
   const SourceFile& file = sources.Add(
       "inlined.frag",
       "#version 300 es\nprecision highp float;\nuniform float u;\nout vec4 o;\n" + body, true);
-  SpirvCompilation compiled = CompileToSpirv(file, Stage::kFragment);
+  SpirvCompilation compiled = CompileToSpirv(file, model::Stage::kFragment);
   EXPECT_FALSE(HasErrors(compiled.diagnostics));
   return compiled.words;
 }

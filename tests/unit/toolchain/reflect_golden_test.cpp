@@ -29,7 +29,7 @@ nlohmann::json Schema() {
       ReadText(fs::path(SHADERPORT_SOURCE_DIR) / "docs/reflect.schema.json"));
 }
 
-std::string ReflectJson(const std::string& text, Stage stage, bool shadertoy,
+std::string ReflectJson(const std::string& text, model::Stage stage, bool shadertoy,
                         const std::string& name) {
   EmitOptions options = OptionsFor(EmitKind::kReflect);
   options.shadertoy = shadertoy;
@@ -52,11 +52,11 @@ void CheckGolden(const std::string& golden_name, const std::string& json) {
 TEST(ReflectGolden, HandWrittenShaders) {
   const struct {
     const char* file;
-    Stage stage;
+    model::Stage stage;
     bool shadertoy;
-  } cases[] = {{"shadertoy-channels.frag", Stage::kFragment, true},
-               {"resources.frag", Stage::kFragment, false},
-               {"points.vert", Stage::kVertex, false}};
+  } cases[] = {{"shadertoy-channels.frag", model::Stage::kFragment, true},
+               {"resources.frag", model::Stage::kFragment, false},
+               {"points.vert", model::Stage::kVertex, false}};
   for (const auto& c : cases) {
     const std::string text = ReadText(kData / c.file);
     ASSERT_FALSE(text.empty()) << c.file;
@@ -98,7 +98,7 @@ TEST(ReflectGolden, EveryCorpusShaderFitsTheSchema) {
 // The facts the goldens hold, asserted directly so a wrong golden cannot hide them.
 TEST(ReflectGolden, ShaderToyChannelUsage) {
   const nlohmann::json json = nlohmann::json::parse(ReflectJson(
-      ReadText(kData / "shadertoy-channels.frag"), Stage::kFragment, true, "channels.frag"));
+      ReadText(kData / "shadertoy-channels.frag"), model::Stage::kFragment, true, "channels.frag"));
   const nlohmann::json& channels = json["shadertoy"]["channels"];
   ASSERT_EQ(channels.size(), 4u);
   EXPECT_EQ(channels[0]["kind"], "2D");

@@ -77,11 +77,11 @@ TEST(ShaderToySweep, ValidImagePassesGoThroughEveryBackEnd) {
   // Every 5th pass (every 20th through all back ends) keeps the sweep within seconds in Debug.
   for (size_t i = 0; i < passes.size(); i += 5) {
     const Pass& pass = passes[i];
-    if (!GlslangErrors(pass.text, Stage::kFragment).empty()) continue;
+    if (!GlslangErrors(pass.text, model::Stage::kFragment).empty()) continue;
     ++valid;
     SCOPED_TRACE(pass.id);
     const EmitResult spirv =
-        EmitText(pass.text, Stage::kFragment, OptionsFor(EmitKind::kSpirv), pass.id);
+        EmitText(pass.text, model::Stage::kFragment, OptionsFor(EmitKind::kSpirv), pass.id);
     if (!spirv.diagnostics.empty()) {
       for (const Diagnostic& d : spirv.diagnostics) {
         EXPECT_TRUE(d.rule_id == "spirv/leg-limitation" || d.rule_id == "spirv/invalid-module")
@@ -94,11 +94,12 @@ TEST(ShaderToySweep, ValidImagePassesGoThroughEveryBackEnd) {
     EXPECT_GT(spirv.words_before, 0u);
     if (i % 20 != 0) continue;
     for (const EmitKind kind : {EmitKind::kHlsl, EmitKind::kMsl, EmitKind::kEsslRoundtrip}) {
-      const EmitResult result = EmitText(pass.text, Stage::kFragment, OptionsFor(kind), pass.id);
+      const EmitResult result =
+          EmitText(pass.text, model::Stage::kFragment, OptionsFor(kind), pass.id);
       EXPECT_TRUE(result.diagnostics.empty()) << EmitKindName(kind) << RuleIds(result.diagnostics);
       EXPECT_FALSE(result.output.empty());
       if (kind == EmitKind::kEsslRoundtrip) {
-        EXPECT_EQ(GlslangErrors(result.output, Stage::kFragment), "") << result.output;
+        EXPECT_EQ(GlslangErrors(result.output, model::Stage::kFragment), "") << result.output;
       }
     }
   }

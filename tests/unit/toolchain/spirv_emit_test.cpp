@@ -22,7 +22,7 @@ constexpr uint32_t kSpirvMagic = 0x07230203;
 TEST(SpirvEmit, CorpusHasBothStages) {
   const std::vector<CorpusShader> shaders = CompilingCorpusShaders();
   int vertex = 0;
-  for (const CorpusShader& shader : shaders) vertex += shader.stage == Stage::kVertex;
+  for (const CorpusShader& shader : shaders) vertex += shader.stage == model::Stage::kVertex;
   EXPECT_GE(shaders.size(), 22u);
   EXPECT_GE(vertex, 3);
 }
@@ -63,7 +63,7 @@ TEST(SpirvEmit, DisassemblyNamesTheEntryPointAndUniforms) {
   const std::string text =
       "#version 300 es\nprecision highp float;\nuniform vec3 iResolution;\n"
       "out vec4 color;\nvoid main() { color = vec4(iResolution, 1.0); }\n";
-  const EmitResult result = EmitText(text, Stage::kFragment, OptionsFor(EmitKind::kSpvasm));
+  const EmitResult result = EmitText(text, model::Stage::kFragment, OptionsFor(EmitKind::kSpvasm));
   ASSERT_TRUE(result.diagnostics.empty()) << RuleIds(result.diagnostics);
   EXPECT_FALSE(result.binary);
   EXPECT_EQ(result.output.rfind("; SPIR-V", 0), 0u) << result.output.substr(0, 80);
@@ -76,7 +76,7 @@ TEST(SpirvEmit, VertexShadersGetAutomaticLocations) {
   const std::string text =
       "#version 300 es\nin vec3 position;\nin vec2 uv;\nout vec2 v_uv;\nuniform mat4 mvp;\n"
       "void main() { v_uv = uv; gl_Position = mvp * vec4(position, 1.0); }\n";
-  const EmitResult result = EmitText(text, Stage::kVertex, OptionsFor(EmitKind::kSpvasm));
+  const EmitResult result = EmitText(text, model::Stage::kVertex, OptionsFor(EmitKind::kSpvasm));
   ASSERT_TRUE(result.diagnostics.empty()) << RuleIds(result.diagnostics);
   EXPECT_NE(result.output.find("OpEntryPoint Vertex %main \"main\""), std::string::npos);
   EXPECT_NE(result.output.find("OpDecorate %position Location"), std::string::npos);
@@ -109,7 +109,7 @@ TEST(SpirvEmit, ParallelEmitsAgreeWithSerialOnes) {
 
 TEST(SpirvEmit, EsslKindReturnsTheTextUnchanged) {
   const std::string text = "#version 300 es\nvoid main() {}\n";
-  const EmitResult result = EmitText(text, Stage::kVertex, OptionsFor(EmitKind::kEssl));
+  const EmitResult result = EmitText(text, model::Stage::kVertex, OptionsFor(EmitKind::kEssl));
   EXPECT_EQ(result.output, text);
   EXPECT_TRUE(result.diagnostics.empty());
   EXPECT_EQ(result.words_before, 0u);
@@ -123,9 +123,9 @@ TEST(SpirvEmit, KindNamesRoundTrip) {
   }
   EXPECT_FALSE(EmitKindFromName("glsl").has_value());
   EXPECT_FALSE(EmitKindFromName("").has_value());
-  EXPECT_EQ(EmitExtension(EmitKind::kSpirv, Stage::kFragment), ".spv");
-  EXPECT_EQ(EmitExtension(EmitKind::kEsslRoundtrip, Stage::kVertex), ".vert");
-  EXPECT_EQ(EmitExtension(EmitKind::kMsl, Stage::kFragment), ".metal");
+  EXPECT_EQ(EmitExtension(EmitKind::kSpirv, model::Stage::kFragment), ".spv");
+  EXPECT_EQ(EmitExtension(EmitKind::kEsslRoundtrip, model::Stage::kVertex), ".vert");
+  EXPECT_EQ(EmitExtension(EmitKind::kMsl, model::Stage::kFragment), ".metal");
 }
 
 }  // namespace

@@ -27,7 +27,7 @@ struct StageCase {
   std::string id;    // "<case id> vertex|fragment"
   std::string file;  // path written for the CLI
   std::string text;
-  Stage stage;
+  model::Stage stage;
 };
 
 struct Verdict {
@@ -136,8 +136,8 @@ std::vector<StageCase> LoadCases(const fs::path& dir) {
   std::string line;
   for (int index = 0; std::getline(in, line); ++index) {
     const auto json = nlohmann::json::parse(line);
-    for (Stage stage : {Stage::kVertex, Stage::kFragment}) {
-      const bool vertex = stage == Stage::kVertex;
+    for (model::Stage stage : {model::Stage::kVertex, model::Stage::kFragment}) {
+      const bool vertex = stage == model::Stage::kVertex;
       StageCase c;
       c.id = json.at("id").get<std::string>() + (vertex ? " vertex" : " fragment");
       c.file = (dir / (std::to_string(index) + (vertex ? ".vert" : ".frag"))).string();

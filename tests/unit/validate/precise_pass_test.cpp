@@ -42,12 +42,12 @@ TEST(PrecisePassTest, ValidationSkipsThePassForATextWithoutTheKeyword) {
   if (!PrecisePassCanBeSkipped()) GTEST_SKIP() << "this build runs glslang's pass unwrapped";
   const uint64_t before = PrecisePassesSkipped();
   const std::array<GlslangPart, 1> plain = {GlslangPart{"p0", kPlain}};
-  EXPECT_TRUE(RunGlslang(plain, Stage::kFragment, 100, true).compiled);
+  EXPECT_TRUE(RunGlslang(plain, model::Stage::kFragment, 100, true).compiled);
   EXPECT_EQ(PrecisePassesSkipped(), before + 1);
 
   const std::string commented = std::string(kPlain) + "// precise\n";
   const std::array<GlslangPart, 1> mention = {GlslangPart{"p0", commented}};
-  EXPECT_TRUE(RunGlslang(mention, Stage::kFragment, 100, true).compiled);
+  EXPECT_TRUE(RunGlslang(mention, model::Stage::kFragment, 100, true).compiled);
   EXPECT_EQ(PrecisePassesSkipped(), before + 1);
 }
 

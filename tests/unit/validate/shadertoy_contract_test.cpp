@@ -11,8 +11,8 @@ namespace {
 
 using testing::Where;
 
-constexpr ChannelTypes kAll2D = {ChannelType::k2D, ChannelType::k2D, ChannelType::k2D,
-                                 ChannelType::k2D};
+constexpr model::ChannelKinds kAll2D = {model::ChannelKind::k2D, model::ChannelKind::k2D,
+                                        model::ChannelKind::k2D, model::ChannelKind::k2D};
 
 struct Compiled {
   SourceManager sources;
@@ -21,9 +21,10 @@ struct Compiled {
   ValidationResult result;
 };
 
-std::unique_ptr<Compiled> CompilePass(const std::string& code, PassType type = PassType::kImage,
+std::unique_ptr<Compiled> CompilePass(const std::string& code,
+                                      model::PassKind type = model::PassKind::kImage,
                                       const std::string& common = "",
-                                      const ChannelTypes& channels = kAll2D) {
+                                      const model::ChannelKinds& channels = kAll2D) {
   auto out = std::make_unique<Compiled>();
   const SourceFile* common_file = nullptr;
   if (!common.empty()) {
@@ -44,8 +45,9 @@ std::string Rules(const DiagnosticList& diagnostics) {
 }
 
 TEST(ShaderToyContractTest, HeaderDeclaresTheSiteUniformsAndSamplers) {
-  const std::string header = ShaderToyHeader(
-      PassType::kImage, {ChannelType::k2D, ChannelType::kCube, ChannelType::k3D, ChannelType::k2D});
+  const std::string header =
+      ShaderToyHeader(model::PassKind::kImage, {model::ChannelKind::k2D, model::ChannelKind::kCube,
+                                                model::ChannelKind::k3D, model::ChannelKind::k2D});
   EXPECT_TRUE(header.starts_with("#version 300 es\n#ifdef GL_ES\nprecision highp float;\n"));
   for (const char* line :
        {"uniform vec3 iResolution;", "uniform float iTime;", "uniform float iChannelTime[4];",
@@ -57,9 +59,9 @@ TEST(ShaderToyContractTest, HeaderDeclaresTheSiteUniformsAndSamplers) {
         "precision mediump sampler3D;"}) {
     EXPECT_NE(header.find(line), std::string::npos) << line;
   }
-  EXPECT_NE(ShaderToyEpilogue(PassType::kImage).find("vec4(shadertoy_color.xyz, 1.0)"),
+  EXPECT_NE(ShaderToyEpilogue(model::PassKind::kImage).find("vec4(shadertoy_color.xyz, 1.0)"),
             std::string::npos);
-  EXPECT_EQ(ShaderToyEpilogue(PassType::kBuffer).find("1.0)"), std::string::npos);
+  EXPECT_EQ(ShaderToyEpilogue(model::PassKind::kBuffer).find("1.0)"), std::string::npos);
 }
 
 TEST(ShaderToyContractTest, TypicalImagePassCompilesAndLinks) {
@@ -90,7 +92,7 @@ TEST(ShaderToyContractTest, UserMacrosDoNotBreakTheGeneratedMain) {
 TEST(ShaderToyContractTest, EntryPointDefinedAsAMacroIsCalledLikeOnTheSite) {
   // Corpus shader wddcz2 defines mainImage in Common as a function-like macro.
   auto c =
-      CompilePass("vec4 Main(vec2 uv) { return vec4(uv, 0.0, 1.0); }\n", PassType::kImage,
+      CompilePass("vec4 Main(vec2 uv) { return vec4(uv, 0.0, 1.0); }\n", model::PassKind::kImage,
                   "vec4 Main(vec2 uv);\n#define mainImage(color, coord) (color = Main(coord))\n");
   EXPECT_TRUE(c->result.Accepted(true)) << Rules(c->result.diagnostics);
 }
@@ -108,9 +110,9 @@ TEST(ShaderToyContractTest, ErrorBehindTheHeaderLandsOnTheUserLine) {
 }
 
 TEST(ShaderToyContractTest, ErrorInCommonLandsInCommon) {
-  auto c =
-      CompilePass("void mainImage(out vec4 o, in vec2 u) { o = vec4(helper()); }\n",
-                  PassType::kImage, "// shared code\nfloat helper() {\n  return pow(2.0, 2);\n}\n");
+  auto c = CompilePass("void mainImage(out vec4 o, in vec2 u) { o = vec4(helper()); }\n",
+                       model::PassKind::kImage,
+                       "// shared code\nfloat helper() {\n  return pow(2.0, 2);\n}\n");
   ASSERT_FALSE(c->result.diagnostics.empty());
   const auto& d = c->result.diagnostics[0];
   EXPECT_EQ(d.rule_id, "glslang/no-matching-overload");
@@ -120,7 +122,7 @@ TEST(ShaderToyContractTest, ErrorInCommonLandsInCommon) {
 
 TEST(ShaderToyContractTest, MacroFromCommonIsVisibleInThePass) {
   auto c = CompilePass("void mainImage(out vec4 o, in vec2 u) {\n  o = vec4(TWICE(1.0) + x);\n}\n",
-                       PassType::kImage, "#define TWICE(v) (2.0 * (v))\n");
+                       model::PassKind::kImage, "#define TWICE(v) (2.0 * (v))\n");
   ASSERT_EQ(c->result.diagnostics.size(), 1u) << Rules(c->result.diagnostics);
   EXPECT_EQ(c->result.diagnostics[0].range.file, c->pass);
   EXPECT_EQ(Where(c->sources, c->result.diagnostics[0].range), (LineColumn{2, 25}));
@@ -196,7 +198,7 @@ TEST(ShaderToyContractTest, AMacroRewritingTheWrapperIsBlamedOnTheMacro) {
 // where the next text starts: the error goes on Common's last token.
 TEST(ShaderToyContractTest, AnUnfinishedEndOfCommonIsBlamedOnCommon) {
   auto missing = CompilePass("void mainImage(out vec4 o, in vec2 u) { o = vec4(1); }\n",
-                             PassType::kImage, "struct S { float a; }");
+                             model::PassKind::kImage, "struct S { float a; }");
   ASSERT_FALSE(missing->result.diagnostics.empty());
   for (const auto& d : missing->result.diagnostics) {
     EXPECT_NE(d.rule_id, "internal/generated-code");
@@ -208,7 +210,7 @@ TEST(ShaderToyContractTest, AnUnfinishedEndOfCommonIsBlamedOnCommon) {
   EXPECT_EQ(first.notes[0].range.begin, 20u);  // Common's closing brace
 
   auto extra = CompilePass("void mainImage(out vec4 o, in vec2 u) { o = vec4(1); }\n",
-                           PassType::kImage, "float f() { return 1.0; };");
+                           model::PassKind::kImage, "float f() { return 1.0; };");
   ASSERT_EQ(extra->result.diagnostics.size(), 1u) << Rules(extra->result.diagnostics);
   EXPECT_EQ(extra->result.diagnostics[0].range.file, extra->common);
   EXPECT_EQ(extra->result.diagnostics[0].range.begin, 25u);  // the extra ';'
@@ -227,7 +229,7 @@ TEST(ShaderToyContractTest, AnUnfinishedEndOfCommonIsBlamedOnCommon) {
 // site's '#ifndef mainImage' that follows it (seen on real passes).
 TEST(ShaderToyContractTest, ALineContinuationAtTheEndOfCommonStaysInCommon) {
   auto c = CompilePass("void mainImage(out vec4 o, in vec2 u) { o = vec4(f()); }\n",
-                       PassType::kImage, "float f() { return 1.0; }\\\n");
+                       model::PassKind::kImage, "float f() { return 1.0; }\\\n");
   EXPECT_TRUE(c->result.Accepted(true)) << Rules(c->result.diagnostics);
   auto alone = CompilePass("void mainImage(out vec4 o, in vec2 u) { o = vec4(1); }\\\n");
   EXPECT_TRUE(alone->result.Accepted(true)) << Rules(alone->result.diagnostics);
@@ -237,35 +239,35 @@ TEST(ShaderToyContractTest, ChannelTypesFollowTheInputs) {
   const std::string code =
       "void mainImage(out vec4 o, in vec2 u) { o = texture(iChannel1, vec3(u, 1.0)); }\n";
   EXPECT_FALSE(CompilePass(code)->result.compiled);
-  auto cube = CompilePass(
-      code, PassType::kImage, "",
-      {ChannelType::k2D, ChannelTypeFromCtype("cubemap"), ChannelType::k2D, ChannelType::k2D});
+  auto cube = CompilePass(code, model::PassKind::kImage, "",
+                          {model::ChannelKind::k2D, model::ChannelKindFromCtype("cubemap"),
+                           model::ChannelKind::k2D, model::ChannelKind::k2D});
   EXPECT_TRUE(cube->result.Accepted(true)) << Rules(cube->result.diagnostics);
-  auto volume = CompilePass(
-      code, PassType::kImage, "",
-      {ChannelType::k2D, ChannelTypeFromCtype("volume"), ChannelType::k2D, ChannelType::k2D});
+  auto volume = CompilePass(code, model::PassKind::kImage, "",
+                            {model::ChannelKind::k2D, model::ChannelKindFromCtype("volume"),
+                             model::ChannelKind::k2D, model::ChannelKind::k2D});
   EXPECT_TRUE(volume->result.Accepted(true)) << Rules(volume->result.diagnostics);
 }
 
 TEST(ShaderToyContractTest, SoundAndCubePassesHaveTheirOwnMains) {
   auto sound = CompilePass("vec2 mainSound(int samp, float time) { return vec2(sin(time)); }\n",
-                           PassType::kSound);
+                           model::PassKind::kSound);
   EXPECT_TRUE(sound->result.Accepted(true)) << Rules(sound->result.diagnostics);
   auto cube = CompilePass(
       "void mainCubemap(out vec4 o, in vec2 f, in vec3 ro, in vec3 rd) { o = vec4(rd, 1.0); }\n",
-      PassType::kCube);
+      model::PassKind::kCube);
   EXPECT_TRUE(cube->result.Accepted(true)) << Rules(cube->result.diagnostics);
-  auto wrong =
-      CompilePass("void mainImage(out vec4 o, in vec2 u) { o = vec4(1.0); }\n", PassType::kSound);
+  auto wrong = CompilePass("void mainImage(out vec4 o, in vec2 u) { o = vec4(1.0); }\n",
+                           model::PassKind::kSound);
   ASSERT_EQ(wrong->result.diagnostics.size(), 1u);
   EXPECT_EQ(wrong->result.diagnostics[0].rule_id, "glslang/missing-entry-point");
 }
 
 TEST(ShaderToyContractTest, NamesFromTheCorpusJson) {
-  EXPECT_EQ(PassTypeFromName("buffer"), PassType::kBuffer);
-  EXPECT_EQ(PassTypeFromName("common"), std::nullopt);
-  EXPECT_EQ(ChannelTypeFromCtype("texture"), ChannelType::k2D);
-  EXPECT_EQ(ChannelTypeFromCtype("keyboard"), ChannelType::k2D);
+  EXPECT_EQ(model::ParsePassKind("buffer"), model::PassKind::kBuffer);
+  EXPECT_EQ(model::ParsePassKind("common"), model::PassKind::kCommon);
+  EXPECT_EQ(model::ChannelKindFromCtype("texture"), model::ChannelKind::k2D);
+  EXPECT_EQ(model::ChannelKindFromCtype("keyboard"), model::ChannelKind::k2D);
 }
 
 }  // namespace

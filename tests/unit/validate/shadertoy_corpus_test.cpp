@@ -42,18 +42,19 @@ PassOutcome Compile(const nlohmann::json& shader, const nlohmann::json& pass,
   outcome.shader = &shader;
   outcome.pass_name = pass.value("name", "");
   outcome.pass_type = pass.at("type").get<std::string>();
-  ChannelTypes channels{};
+  model::ChannelKinds channels{};
   for (const auto& input : pass.value("inputs", nlohmann::json::array())) {
     const int channel = input.value("channel", -1);
     if (channel >= 0 && channel < 4) {
-      channels[static_cast<size_t>(channel)] = ChannelTypeFromCtype(input.value("ctype", ""));
+      channels[static_cast<size_t>(channel)] =
+          model::ChannelKindFromCtype(input.value("ctype", ""));
     }
   }
   SourceManager sources;
   const SourceFile* common_file =
       common ? &sources.Add("Common", common->at("code").get<std::string>()) : nullptr;
   const SourceFile& pass_file = sources.Add(outcome.pass_name, pass.at("code").get<std::string>());
-  const auto type = PassTypeFromName(outcome.pass_type);
+  const auto type = model::ParsePassKind(outcome.pass_type);
   const ValidationResult result = ValidateWithGlslang(
       ComposeShaderToyRequest(sources, *type, channels, common_file, pass_file));
   outcome.accepted = result.Accepted(true);
@@ -143,7 +144,8 @@ TEST(ShaderToyCorpusTest, ReportMatchesTheCommittedOne) {
       if (pass.at("type") == "common") common = &pass;
     }
     for (const auto& pass : shader.at("passes")) {
-      if (PassTypeFromName(pass.at("type").get<std::string>())) {
+      const auto type = model::ParsePassKind(pass.at("type").get<std::string>());
+      if (type && *type != model::PassKind::kCommon) {
         jobs.push_back({&shader, &pass, common});
       }
     }

@@ -10,7 +10,8 @@ namespace shaderport::validate::testing {
 
 // Validates one user file as is (WebGL: compile only).
 inline ValidationResult ValidateText(SourceManager& sources, const std::string& text,
-                                     Stage stage = Stage::kFragment, int default_version = 100) {
+                                     model::Stage stage = model::Stage::kFragment,
+                                     int default_version = 100) {
   const SourceFile& file = sources.Add("user.frag", text);
   ValidationRequest request;
   request.parts.push_back({file.Name(), file.Text(), file.Id(), PartKind::kUser});

@@ -27,7 +27,7 @@ inline BrowserSemanticsResult Apply(std::string_view body, BrowserSemanticsOptio
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'),
             std::count(file.Text().begin(), file.Text().end(), '\n'));
   const auto compiled = testing::CompileWithGlslang(
-      text, options.vertex_stage ? ShaderStage::kVertex : ShaderStage::kFragment);
+      text, options.vertex_stage ? model::Stage::kVertex : model::Stage::kFragment);
   EXPECT_TRUE(compiled.ok) << text << "\n" << compiled.log;
   return result;
 }

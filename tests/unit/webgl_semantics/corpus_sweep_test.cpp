@@ -32,14 +32,15 @@ TEST(BrowserSemanticsSweep, CorpusStillCompilesAfterTheTransforms) {
       if (pass["type"] == "common") common = pass["code"].get<std::string>() + "\n";
     }
     for (const auto& pass : record["passes"]) {
-      const auto type = validate::PassTypeFromName(pass["type"].get<std::string>());
-      if (!type || *type == validate::PassType::kSound || *type == validate::PassType::kCube) {
+      const auto type = model::ParsePassKind(pass["type"].get<std::string>());
+      if (!type || *type == model::PassKind::kSound || *type == model::PassKind::kCube ||
+          *type == model::PassKind::kCommon) {
         continue;
       }
       const std::string text = validate::ShaderToyHeader(*type, {}) + common +
                                pass["code"].get<std::string>() + "\n" +
                                validate::ShaderToyEpilogue(*type);
-      if (!testing::CompileWithGlslang(text, ShaderStage::kFragment).ok) continue;
+      if (!testing::CompileWithGlslang(text, model::Stage::kFragment).ok) continue;
       ++compiled;
       SourceManager sources;
       const SourceFile& file = sources.Add(record["id"].get<std::string>(), text);
@@ -51,7 +52,7 @@ TEST(BrowserSemanticsSweep, CorpusStillCompilesAfterTheTransforms) {
       EXPECT_EQ(std::count(edited.begin(), edited.end(), '\n'),
                 std::count(text.begin(), text.end(), '\n'))
           << file.Name();
-      const auto again = testing::CompileWithGlslang(edited, ShaderStage::kFragment);
+      const auto again = testing::CompileWithGlslang(edited, model::Stage::kFragment);
       EXPECT_TRUE(again.ok) << file.Name() << "\n" << again.log;
     }
   }
