@@ -633,11 +633,20 @@ void ExpandMacroUses(const BrowserContext& context, FileId part, std::string_vie
   std::sort(replacements.begin(), replacements.end(),
             [](const auto& a, const auto& b) { return a.range.begin > b.range.begin; });
   for (const Replacement& replacement : replacements) {
+    // Only a self-named token that is called needs the alias: glslang would take
+    // `T(` for the macro again, while `T = ...` (a variable of the macro's name) is
+    // plain text to it. No alias to give (a one-letter name): glslang keeps its say.
     std::string expansion = " ";
-    for (std::string_view token : replacement.tokens) {
-      const bool self = !replacement.self.empty() && token == replacement.self;
-      expansion += std::string(self ? std::string_view(aliases[replacement.self]) : token) + " ";
+    bool aliased = true;
+    for (size_t i = 0; i < replacement.tokens.size(); ++i) {
+      const std::string_view token = replacement.tokens[i];
+      const bool called = i + 1 < replacement.tokens.size() && replacement.tokens[i + 1] == "(";
+      const bool self = !replacement.self.empty() && token == replacement.self && called;
+      const std::string& alias = self ? aliases[replacement.self] : replacement.self;
+      aliased = aliased && (!self || !alias.empty());
+      expansion += std::string(self ? std::string_view(alias) : token) + " ";
     }
+    if (!aliased) continue;
     text.replace(replacement.range.begin, replacement.range.end - replacement.range.begin,
                  expansion);
   }
