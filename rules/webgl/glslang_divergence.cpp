@@ -551,11 +551,8 @@ std::set<std::string> RenameSelfNamingMacros(const BrowserContext& context, File
           {use.use.file, use.use.begin, use.use.begin + static_cast<uint32_t>(name.size())});
       names.push_back(use.definition);
     }
-    // `#ifdef NAME`, `#undef NAME`, `defined(NAME)`: they would lose the macro.
-    const std::regex other_directive("^[ \\t]*#[ \\t]*(?!define)[a-z]+\\b.*\\b" + name + "\\b",
-                                     std::regex::multiline);
     const std::string whole(original);
-    if (!movable || std::regex_search(whole, other_directive)) continue;
+    if (!movable) continue;
     const std::string alias = SameLengthAlias(whole, name);
     if (alias.empty()) continue;
     std::set<uint32_t> done;
@@ -565,6 +562,26 @@ std::set<std::string> RenameSelfNamingMacros(const BrowserContext& context, File
         continue;
       }
       text.replace(range.begin, alias.size(), alias);
+    }
+    // The directives that name the macro name the alias: `#undef NAME`, `#ifdef NAME`,
+    // `#ifndef NAME`, `defined(NAME)`, and calls of it in other macros' bodies (its own
+    // body calls the function, which keeps the name).
+    static const std::regex kDirective(R"(^[ \t]*#[ \t]*([a-z]+)[^\n]*)", std::regex::multiline);
+    const std::regex named("\\b(undef|ifdef|ifndef|defined)([ \\t(]*)" + name + "\\b|\\b" + name +
+                           "(?=[ \\t]*\\()");
+    const std::regex own_definition("^[ \\t]*#[ \\t]*define[ \\t]+" + name + "\\(");
+    for (auto line = std::sregex_iterator(whole.begin(), whole.end(), kDirective);
+         line != std::sregex_iterator(); ++line) {
+      const std::string directive = line->str(0);
+      if (std::regex_search(directive, own_definition)) continue;  // renamed above
+      for (auto use = std::sregex_iterator(directive.begin(), directive.end(), named);
+           use != std::sregex_iterator(); ++use) {
+        const size_t at = static_cast<size_t>(line->position(0) + use->position(0)) +
+                          (use->str(1).empty() ? 0 : use->length(1) + use->length(2));
+        if (at + name.size() <= text.size() && text.compare(at, name.size(), name) == 0) {
+          text.replace(at, alias.size(), alias);
+        }
+      }
     }
     renamed.insert(name);
   }
