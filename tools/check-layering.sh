@@ -36,4 +36,8 @@ if grep -rHE '^#include "(driver|validate|report|toolchain|render)/' "$root/rule
   status=1
 fi
 # The CLI may include only the driver's public headers (and lower ones), never rules directly.
+if grep -rHE '^#include "rules/' "$root/tools/shaderport" 2>/dev/null; then
+  echo "layering: tools/shaderport includes rules/ (go through the driver)" >&2
+  status=1
+fi
 exit $status

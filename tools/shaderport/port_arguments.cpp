@@ -10,10 +10,10 @@
 #include "cli_errors.h"
 #include "driver/config/config_lookup.h"
 #include "driver/dialect.h"
+#include "driver/harness_dialects.h"
 #include "empty_input.h"
 #include "option_names.h"
 #include "report/output_format.h"
-#include "rules/shadertoy/builtin_dialects.h"
 
 namespace shaderport::cli {
 
@@ -36,10 +36,7 @@ namespace {
 // Every name --dialect takes: the three dialects and the shipped harness dialects.
 std::vector<std::string> DialectNames() {
   std::vector<std::string> names(kDialectNames.begin(), kDialectNames.end());
-  for (const rule::HarnessDialect& dialect : rules::BuiltinDialects()) {
-    for (const std::string& name : dialect.aliases) names.push_back(name);
-    names.push_back(dialect.name);
-  }
+  for (std::string& name : driver::ShippedHarnessDialectNames()) names.push_back(std::move(name));
   // ShaderToy is both a dialect and a harness: named once.
   std::vector<std::string> unique;
   for (std::string& name : names) {
@@ -68,7 +65,7 @@ bool ResolveDialectOption(const std::string& value, SourceManager& sources,
       return false;
     }
   }
-  rule::DialectLoadResult loaded = rules::LoadDialect(value, sources);
+  rule::DialectLoadResult loaded = driver::LoadHarnessDialect(value, sources);
   if (!loaded.dialect) {
     for (const Diagnostic& d : loaded.diagnostics) {
       const std::string suggestion =
