@@ -776,9 +776,9 @@ void PassEmptyArgumentsInMacroBodies(const BrowserContext& context, FileId part,
       blank = line;
     }
   }
+  if (!blank) return;
   std::string empty = "SPE";
   for (int n = 0; text.find(empty) != std::string::npos; ++n) empty = "SPE" + std::to_string(n);
-  if (!blank) return;
   // From the last line, so that earlier line starts stay valid.
   for (auto line = with_empty_calls.rbegin(); line != with_empty_calls.rend(); ++line) {
     const std::string body = line_text(*line);

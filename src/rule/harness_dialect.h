@@ -27,8 +27,8 @@ struct ProvidedVariable {
   std::string name;
   std::string type;  // GLSL spelling, optionally with one array size: "vec3", "float[4]"
   ProvidedStorage storage = ProvidedStorage::kUniform;
-  std::string precision;    // "", "lowp", "mediump" or "highp"
-  int channel = -1;         // 0..3 for a texture channel whose sampler type the port chooses
+  std::string precision;      // "", "lowp", "mediump" or "highp"
+  int channel = -1;           // 0..3 for a texture channel whose sampler type the port chooses
   std::string description{};  // what the host feeds it, for people (editor hover)
 };
 
