@@ -282,28 +282,70 @@ bool BrowserAcceptsName(const BrowserContext& context, const glsl::Symbol& funct
                                     function.name) != kEs3DeclarableBuiltins.end();
 }
 
-// A name of `name`'s length that `text` does not contain: its last characters
-// replaced by digits (no `__`, no `gl_` prefix: both reserved), or "" if none is free.
-std::string SameLengthAlias(const std::string& text, const std::string& name) {
+// A name of `name`'s length that neither `text` nor `taken` contains: its last
+// characters replaced by digits (no `__`, no `gl_` prefix: both reserved), or "" if none is free.
+std::string SameLengthAlias(const std::string& text, const std::string& name,
+                            const std::set<std::string>& taken = {}) {
   for (size_t tail = 1; tail <= std::min<size_t>(name.size() - 1, 3); ++tail) {
     for (int n = 0; n < 1000; ++n) {
       std::string digits = std::to_string(n);
       if (digits.size() > tail) break;
       digits.insert(0, tail - digits.size(), '0');
       const std::string alias = name.substr(0, name.size() - tail) + digits;
-      if (text.find(alias) == std::string::npos) return alias;
+      if (text.find(alias) == std::string::npos && !taken.contains(alias)) return alias;
     }
   }
   return {};
 }
 
+// Calls `visit(name, symbol)` for every name that declares or refers to a symbol:
+// functions, calls, declarators and identifiers.
+template <typename Visit>
+void VisitNames(const BrowserContext& context, Visit visit) {
+  const glsl::SemanticModel& model = *context.model;
+  glsl::VisitPreorder(*context.tree, [&](const glsl::Node& node, uint32_t) {
+    if (const auto* function = node.As<glsl::FunctionDeclaration>()) {
+      visit(function->name, model.SymbolAt(function->id));
+    } else if (const auto* call = node.As<glsl::CallExpr>();
+               call != nullptr && call->call_kind == glsl::CallKind::kFunction) {
+      visit(call->callee, model.SymbolAt(call->id));
+    } else if (const auto* declarator = node.As<glsl::Declarator>()) {
+      visit(declarator->name, model.SymbolAt(declarator->id));
+    } else if (const auto* identifier = node.As<glsl::IdentifierExpr>()) {
+      visit(glsl::Name{identifier->name, identifier->range}, model.SymbolAt(identifier->id));
+    }
+    return true;
+  });
+}
+
+bool SpelledIn(const glsl::Name& name, FileId part, const std::string& text) {
+  return name.range.file == part && name.range.end <= text.size() &&
+         text.compare(name.range.begin, name.text.size(), name.text) == 0;
+}
+
+// A local variable named like a struct of an enclosing scope (`struct d1 {...};` and
+// `vec2 d0, d1;` in a function): browsers' grammar takes a type name as a declarator's
+// name anywhere (ANGLE's `identifier: IDENTIFIER | TYPE_NAME`), glslang only right
+// after a type, so `, d1` is its syntax error. In the same scope both call it a
+// redefinition.
+bool HidesStructName(const glsl::SemanticModel& model, const glsl::Symbol& variable) {
+  if (variable.kind != glsl::SymbolKind::kVariable || variable.scope == 0) return false;
+  const auto ids = model.FindSymbols(variable.name);
+  return std::any_of(ids.begin(), ids.end(), [&](uint32_t other) {
+    return model.symbols[other].kind == glsl::SymbolKind::kStruct &&
+           model.symbols[other].scope != variable.scope;
+  });
+}
+
 // Renames, in `text` (the user's file), every function browsers let the shader declare
-// under a built-in's name and every call of it, to one alias per name of the same
-// length, so that offsets stay put.
+// under a built-in's name and every call of it, and every variable glslang cannot
+// declare under its name, to one alias per name of the same length, so that offsets
+// stay put.
 void RenameDeclarableBuiltins(const BrowserContext& context, FileId part, std::string& text) {
   if (context.model == nullptr || context.tree == nullptr || context.front_end_errors) return;
   const glsl::SemanticModel& model = *context.model;
-  std::map<uint32_t, std::string> aliases;  // function or variable symbol -> its alias
+  std::set<uint32_t> renamed;
+  std::set<uint32_t> hiding_struct;  // renamed only when every name of them is in `text`
   for (uint32_t i = 0; i < model.symbols.size(); ++i) {
     const glsl::Symbol& symbol = model.symbols[i];
     if (symbol.predeclared) continue;
@@ -314,35 +356,30 @@ void RenameDeclarableBuiltins(const BrowserContext& context, FileId part, std::s
     const bool global = symbol.kind == glsl::SymbolKind::kVariable && symbol.scope == 0 &&
                         ((context.version >= 300 && glsl::IsBuiltinFunctionName(symbol.name)) ||
                          GlslangOnlyFunctionName(context, symbol.name));
-    if (!function && !global) continue;
-    std::string alias;
-    for (const auto& [other, taken] : aliases) {
-      if (model.symbols[other].name == symbol.name) alias = taken;  // overloads share it
-    }
-    if (alias.empty()) alias = SameLengthAlias(text, symbol.name);
-    if (!alias.empty()) aliases[i] = alias;
+    if (function || global) renamed.insert(i);
+    if (HidesStructName(model, symbol)) renamed.insert(i), hiding_struct.insert(i);
+  }
+  if (!hiding_struct.empty()) {
+    VisitNames(context, [&](const glsl::Name& name, uint32_t symbol) {
+      if (hiding_struct.contains(symbol) && !SpelledIn(name, part, text)) renamed.erase(symbol);
+    });
+  }
+  // One alias per name (overloads and same-named locals share it).
+  std::map<std::string, std::string> aliases;
+  std::set<std::string> taken;
+  for (const uint32_t symbol : renamed) {
+    const std::string& name = model.symbols[symbol].name;
+    if (aliases.contains(name)) continue;
+    std::string alias = SameLengthAlias(text, name, taken);
+    if (!alias.empty()) aliases[name] = alias, taken.insert(alias);
   }
   if (aliases.empty()) return;
-  auto rename = [&](const glsl::Name& name, uint32_t symbol) {
-    const auto alias = aliases.find(symbol);
-    if (alias == aliases.end() || name.range.file != part || name.range.end > text.size() ||
-        text.compare(name.range.begin, name.text.size(), name.text) != 0) {
+  VisitNames(context, [&](const glsl::Name& name, uint32_t symbol) {
+    if (!renamed.contains(symbol) || !SpelledIn(name, part, text)) {
       return;  // spelled inside a macro: glslang keeps its complaint
     }
-    text.replace(name.range.begin, alias->second.size(), alias->second);
-  };
-  glsl::VisitPreorder(*context.tree, [&](const glsl::Node& node, uint32_t) {
-    if (const auto* function = node.As<glsl::FunctionDeclaration>()) {
-      rename(function->name, model.SymbolAt(function->id));
-    } else if (const auto* call = node.As<glsl::CallExpr>();
-               call != nullptr && call->call_kind == glsl::CallKind::kFunction) {
-      rename(call->callee, model.SymbolAt(call->id));
-    } else if (const auto* declarator = node.As<glsl::Declarator>()) {
-      rename(declarator->name, model.SymbolAt(declarator->id));
-    } else if (const auto* identifier = node.As<glsl::IdentifierExpr>()) {
-      rename(glsl::Name{identifier->name, identifier->range}, model.SymbolAt(identifier->id));
-    }
-    return true;
+    const auto alias = aliases.find(name.text);
+    if (alias != aliases.end()) text.replace(name.range.begin, alias->second.size(), alias->second);
   });
 }
 
