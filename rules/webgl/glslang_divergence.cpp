@@ -738,7 +738,8 @@ TextLines LinesOf(const std::string& text) {
 // expands an argument before substituting it, so F's body gets nothing, as in
 // browsers); line numbers stay.
 void PassEmptyArgumentsInMacroBodies(const BrowserContext& context, FileId part,
-                                     std::string_view original, std::string& text) {
+                                     std::string_view original, std::string& text,
+                                     std::string& prelude) {
   if (context.preprocessed == nullptr || context.front_end_errors ||
       text.find("()") == std::string::npos) {
     return;
@@ -813,7 +814,8 @@ void PassEmptyArgumentsInMacroBodies(const BrowserContext& context, FileId part,
       blank = line;
     }
   }
-  if (!blank) return;
+  // Without one, behind the site's header, the definition goes before the part.
+  if (!blank && !context.behind_header) return;
   std::string empty = "SPE";
   for (int n = 0; text.find(empty) != std::string::npos; ++n) empty = "SPE" + std::to_string(n);
   // From the last line, so that earlier line starts stay valid.
@@ -832,7 +834,11 @@ void PassEmptyArgumentsInMacroBodies(const BrowserContext& context, FileId part,
     text.replace(lines.starts[*line], body.size(), rewritten);
   }
   const std::string definition = "#define " + empty;
-  text.replace(lines.starts[*blank], line_text(*blank).size(), definition);
+  if (blank) {
+    text.replace(lines.starts[*blank], line_text(*blank).size(), definition);
+  } else {
+    prelude += definition + "\n";
+  }
 }
 
 // A `//` comment whose line ends in a backslash continues on the next line in
@@ -953,8 +959,9 @@ void AlignWithBrowser(const BrowserContext& context, Diagnostic& diagnostic) {
   AlignConstantExpression(context, diagnostic);
 }
 
-std::string TextForGlslang(const BrowserContext& context, const SourceFile& part) {
+GlslangText TextForGlslang(const BrowserContext& context, const SourceFile& part) {
   std::string text(part.Text());
+  std::string prelude;
   // Same-length edits first: the offsets of our front end stay valid for the next.
   RenameDeclarableBuiltins(context, part.Id(), text);
   RenameGlslangOnlyKeywords(context, text);
@@ -963,9 +970,10 @@ std::string TextForGlslang(const BrowserContext& context, const SourceFile& part
   BlankContinuedLineComments(text);
   EmptyInactiveLines(context, part.Id(), text);
   ExpandMacroUses(context, part.Id(), part.Text(), text);
-  PassEmptyArgumentsInMacroBodies(context, part.Id(), part.Text(), text);
+  PassEmptyArgumentsInMacroBodies(context, part.Id(), part.Text(), text, prelude);
   text = RepairDefines(JoinContinuedLines(context, text));
-  return text == part.Text() ? std::string() : text;
+  if (text == part.Text()) text.clear();
+  return {std::move(text), std::move(prelude)};
 }
 
 }  // namespace shaderport::rules

@@ -26,6 +26,9 @@ struct BrowserContext {
   const glsl::SemanticModel* model = nullptr;  // nullptr when analysis did not run
   const glsl::PreprocessResult* preprocessed = nullptr;
   bool front_end_errors = false;  // our own front end found errors in the file
+  // Generated code (the site's header) is compiled before the user's parts, so lines
+  // glslang needs can go into a generated part of their own (GlslangText::prelude).
+  bool behind_header = false;
 };
 
 // Rewrites one glslang diagnostic in place when the browser disagrees with it.
@@ -39,8 +42,11 @@ void AlignWithBrowser(const BrowserContext& context, Diagnostic& diagnostic);
 // not know, as do words glslang reserves and browsers do not (`filter`, `shared`...);
 // `__FILE__` in GLSL ES 3.00 becomes 0, lines of skipped #if groups are emptied, uses
 // `F()` of one-parameter macros (one empty argument in browsers) are expanded in place,
-// and `#define` lines that only browsers read are written as glslang reads them. Empty when the
-// text needs no change.
-std::string TextForGlslang(const BrowserContext& context, const SourceFile& part);
+// and `#define` lines that only browsers read are written as glslang reads them.
+struct GlslangText {
+  std::string text;     // empty when the part needs no change
+  std::string prelude;  // lines to compile right before the part (only behind a header)
+};
+GlslangText TextForGlslang(const BrowserContext& context, const SourceFile& part);
 
 }  // namespace shaderport::rules

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include "base/limits.h"
 #include "diag/limit_breach.h"
@@ -248,19 +249,29 @@ FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceMana
   webgl.forced_version = decision.ForcedVersion();
   webgl.behind_header = decision.IsShaderToy();
   validate::ValidationRequest request = ComposeForGlslang(decision, file, common, sources);
-  const std::string glslang_text = TextForGlslang(file, file, front, webgl);
-  const std::string common_text =
-      common != nullptr ? TextForGlslang(file, *common, front, webgl) : std::string();
+  const rules::GlslangText glslang_text = TextForGlslang(file, file, front, webgl);
+  const rules::GlslangText common_text =
+      common != nullptr ? TextForGlslang(file, *common, front, webgl) : rules::GlslangText{};
+  std::vector<validate::ShaderPart> parts;
   for (validate::ShaderPart& part : request.parts) {
-    if (part.kind != validate::PartKind::kUser) continue;
-    if (part.file == file.Id()) {
+    const rules::GlslangText* text = nullptr;
+    if (part.kind == validate::PartKind::kUser && part.file == file.Id()) {
       part.source = &file;
       part.lexed = &front.lexed;
-      if (!glslang_text.empty()) part.text = glslang_text;
-    } else if (common != nullptr && part.file == common->Id() && !common_text.empty()) {
-      part.text = common_text;
+      text = &glslang_text;
+    } else if (part.kind == validate::PartKind::kUser && common != nullptr &&
+               part.file == common->Id()) {
+      text = &common_text;
     }
+    if (text != nullptr && !text->prelude.empty()) {
+      const SourceFile& prelude = sources.Add("<glslang-prelude>", text->prelude, true);
+      parts.push_back(
+          {"glslang-prelude", prelude.Text(), prelude.Id(), validate::PartKind::kGenerated});
+    }
+    if (text != nullptr && !text->text.empty()) part.text = text->text;
+    parts.push_back(part);
   }
+  request.parts = std::move(parts);
   validate::ValidationResult result = validate::ValidateWithGlslang(request);
   AlignGlslangWithBrowser(file, front, webgl, result.diagnostics);
   ExplainChannelErrors(front, decision, result.diagnostics);

@@ -37,6 +37,7 @@ rules::BrowserContext ToBrowserContext(const FrontEndResult& front,
   context.model = front.model ? &*front.model : nullptr;
   context.preprocessed = &front.preprocessed;
   context.front_end_errors = front.HasErrors();
+  context.behind_header = settings.behind_header;
   return context;
 }
 
@@ -76,8 +77,8 @@ void AlignGlslangWithBrowser(const SourceFile& file, const FrontEndResult& front
   }
 }
 
-std::string TextForGlslang(const SourceFile& file, const SourceFile& part,
-                           const FrontEndResult& front, const WebglCheckSettings& settings) {
+rules::GlslangText TextForGlslang(const SourceFile& file, const SourceFile& part,
+                                  const FrontEndResult& front, const WebglCheckSettings& settings) {
   rules::BrowserContext context = ToBrowserContext(front, settings);
   context.file = &file;
   return rules::TextForGlslang(context, part);

@@ -8,6 +8,7 @@
 #include "diag/diagnostic.h"
 #include "driver/dialect.h"
 #include "driver/front_end.h"
+#include "rules/webgl/glslang_divergence.h"
 
 namespace shaderport::driver {
 
@@ -34,8 +35,8 @@ void AlignGlslangWithBrowser(const SourceFile& file, const FrontEndResult& front
 
 // The text of `part` (`file` itself, or the ShaderToy Common code compiled with it) as
 // glslang should see it where glslang and browsers differ on purpose
-// (rules::TextForGlslang); empty when glslang can compile it as it is.
-std::string TextForGlslang(const SourceFile& file, const SourceFile& part,
-                           const FrontEndResult& front, const WebglCheckSettings& settings);
+// (rules::TextForGlslang): its text is empty when glslang can compile it as it is.
+rules::GlslangText TextForGlslang(const SourceFile& file, const SourceFile& part,
+                                  const FrontEndResult& front, const WebglCheckSettings& settings);
 
 }  // namespace shaderport::driver
