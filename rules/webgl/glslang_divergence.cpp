@@ -467,6 +467,49 @@ void HideUnofferedExtensions(const BrowserContext& context, FileId part, std::st
   }
 }
 
+// `__LINE__` outside `#define` bodies, in a part the host composes behind lines of its
+// own: browsers count the lines of the one text (so `#if __LINE__ < 17` tells a
+// ShaderToy pass from the Common tab compiled alone), glslang those of the part, a
+// source string of its own. The number is padded to the macro's width.
+void ReplaceLineMacro(const BrowserContext& context, FileId part, std::string& text) {
+  if (context.first_lines == nullptr || text.find("__LINE__") == std::string::npos) return;
+  int64_t first_line = 1;
+  for (const auto& [file, line] : *context.first_lines) {
+    if (file == part) first_line = line;
+  }
+  if (first_line == 1) return;
+  int64_t line = first_line;
+  bool in_define = false;  // a #define's logical line, continued lines included
+  size_t line_start = 0;
+  for (size_t i = 0; i < text.size(); ++i) {
+    if (i == line_start) {
+      size_t newline = i - 1;  // the previous line's '\n' (i > 0 here but at the start)
+      if (i > 1 && text[newline - 1] == '\r') --newline;
+      const bool continued = i > 1 && newline > 0 && text[newline - 1] == '\\';
+      if (!continued) {
+        const size_t hash = text.find_first_not_of(" \t", i);
+        const size_t word = hash == std::string::npos || text[hash] != '#'
+                                ? std::string::npos
+                                : text.find_first_not_of(" \t", hash + 1);
+        in_define = word != std::string::npos && text.compare(word, 6, "define") == 0;
+      }
+    }
+    if (text[i] == '\n') {
+      ++line;
+      line_start = i + 1;
+      continue;
+    }
+    if (in_define || text.compare(i, 8, "__LINE__") != 0 || (i > 0 && IsWordChar(text[i - 1])) ||
+        (i + 8 < text.size() && IsWordChar(text[i + 8]))) {
+      continue;
+    }
+    std::string number = std::to_string(line);
+    number.resize(8, ' ');
+    text.replace(i, 8, number);
+    i += 7;
+  }
+}
+
 // `__FILE__`: browsers give 0, glslang wants an extension for it.
 void ReplaceFileMacro(std::string& text) {
   if (text.find("__FILE__") == std::string::npos) return;
@@ -966,6 +1009,7 @@ GlslangText TextForGlslang(const BrowserContext& context, const SourceFile& part
   RenameDeclarableBuiltins(context, part.Id(), text);
   RenameGlslangOnlyKeywords(context, text);
   ReplaceFileMacro(text);
+  ReplaceLineMacro(context, part.Id(), text);
   HideUnofferedExtensions(context, part.Id(), text);
   BlankContinuedLineComments(text);
   EmptyInactiveLines(context, part.Id(), text);

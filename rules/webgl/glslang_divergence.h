@@ -3,7 +3,10 @@
 // docs/browser-divergence.md lists every case with the browser behaviour it copies.
 #pragma once
 
+#include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "diag/diagnostic.h"
 #include "glsl/lex/lexer.h"
@@ -29,6 +32,8 @@ struct BrowserContext {
   // Generated code (the site's header) is compiled before the user's parts, so lines
   // glslang needs can go into a generated part of their own (GlslangText::prelude).
   bool behind_header = false;
+  // The line each part starts on in the host's one text (ShaderToy), when not 1.
+  const std::vector<std::pair<FileId, int64_t>>* first_lines = nullptr;
 };
 
 // Rewrites one glslang diagnostic in place when the browser disagrees with it.

@@ -11,10 +11,12 @@ namespace {
 glsl::ParseResult ParseUnit(const std::vector<const SourceFile*>& files, int forced_version,
                             bool shadertoy, glsl::PreprocessResult& preprocessed,
                             uint32_t max_identifier_length = 0,
-                            std::vector<const glsl::LexedFile*> lexed = {}) {
+                            std::vector<const glsl::LexedFile*> lexed = {},
+                            std::vector<int64_t> first_lines = {}) {
   glsl::PreprocessOptions options;
   options.max_identifier_length = max_identifier_length;
   options.lexed = std::move(lexed);
+  options.first_lines = std::move(first_lines);
   // The site defines HW_PERFORMANCE for every pass.
   if (shadertoy) options.predefined = {"HW_PERFORMANCE=1"};
   preprocessed = glsl::Preprocess(files, options);
@@ -80,8 +82,17 @@ FrontEndResult RunFrontEnd(const SourceFile& file, glsl::LexedFile lexed, const 
   // ShaderToy code is compiled by the site as GLSL ES 3.00 behind its header, a
   // harness's code as its prelude says.
   const int forced_version = shadertoy ? glsl::kEssl300 : options.harness_version;
-  result.parsed = ParseUnit(files, forced_version, shadertoy, result.preprocessed,
-                            options.max_identifier_length, std::move(file_tokens));
+  // ShaderToy's parts are one text behind the site's header, and __LINE__ counts so.
+  std::vector<int64_t> first_lines;
+  if (shadertoy) {
+    first_lines = validate::ShaderToyFirstLines(kind.pass, common);
+    for (size_t i = 0; i < files.size(); ++i) {
+      result.first_lines.emplace_back(files[i]->Id(), first_lines[i]);
+    }
+  }
+  result.parsed =
+      ParseUnit(files, forced_version, shadertoy, result.preprocessed,
+                options.max_identifier_length, std::move(file_tokens), std::move(first_lines));
   Append(result.diagnostics, result.preprocessed.diagnostics);
   Append(result.diagnostics, result.parsed.diagnostics);
 

@@ -5,6 +5,8 @@
 
 #include <memory>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "driver/dialect.h"
 #include "glsl/lex/lexer.h"
@@ -25,6 +27,8 @@ struct FrontEndResult {
   std::shared_ptr<const glsl::ParseResult> header;
   std::optional<glsl::SemanticModel> model;  // when analysis was asked for
   DiagnosticList diagnostics;                // lexer (of Common too), preprocessor, parser
+  // ShaderToy: the line each part (Common, the file) starts on in the site's one text.
+  std::vector<std::pair<FileId, int64_t>> first_lines;
 
   bool HasErrors() const { return shaderport::HasErrors(diagnostics); }
 };

@@ -38,6 +38,7 @@ rules::BrowserContext ToBrowserContext(const FrontEndResult& front,
   context.preprocessed = &front.preprocessed;
   context.front_end_errors = front.HasErrors();
   context.behind_header = settings.behind_header;
+  context.first_lines = &front.first_lines;
   return context;
 }
 

@@ -13,6 +13,8 @@
 //   that a user declaration clashing with them is reported on the user's line.
 #include "validate/shadertoy_contract.h"
 
+#include <algorithm>
+
 namespace shaderport::validate {
 namespace {
 
@@ -119,6 +121,29 @@ std::string ShaderToyEpilogue(model::PassKind type) {
   return epilogue;
 }
 
+namespace {
+
+// A part whose last line has no newline, or ends in a line continuation, is followed
+// by a newline of its own (see ComposeShaderToyRequest).
+bool NeedsSeparator(std::string_view text) {
+  const bool continued = text.ends_with("\\\n") || text.ends_with("\\\r\n");
+  return (!text.empty() && text.back() != '\n' && text.back() != '\r') || continued;
+}
+
+}  // namespace
+
+std::vector<int64_t> ShaderToyFirstLines(model::PassKind type, const SourceFile* common) {
+  const auto lines = [](std::string_view text) {
+    return static_cast<int64_t>(std::count(text.begin(), text.end(), '\n'));
+  };
+  std::vector<int64_t> first{lines(ShaderToyHeader(type, model::ChannelKinds{})) + 1};
+  if (common != nullptr) {
+    first.push_back(first.back() + lines(common->Text()) +
+                    (NeedsSeparator(common->Text()) ? 1 : 0));
+  }
+  return first;
+}
+
 ValidationRequest ComposeShaderToyRequest(SourceManager& sources, model::PassKind type,
                                           const model::ChannelKinds& channels,
                                           const SourceFile* common, const SourceFile& pass) {
@@ -138,11 +163,7 @@ ValidationRequest ComposeShaderToyRequest(SourceManager& sources, model::PassKin
   // added between them, which the continuation then joins harmlessly.
   auto add_user = [&](const SourceFile& file) {
     request.parts.push_back({file.Name(), file.Text(), file.Id(), PartKind::kUser});
-    const std::string_view text = file.Text();
-    const bool continued = text.ends_with("\\\n") || text.ends_with("\\\r\n");
-    if ((!text.empty() && text.back() != '\n' && text.back() != '\r') || continued) {
-      add_generated("shadertoy-separator", "\n");
-    }
+    if (NeedsSeparator(file.Text())) add_generated("shadertoy-separator", "\n");
   };
   add_generated("shadertoy-header", ShaderToyHeader(type, channels));
   if (common != nullptr) add_user(*common);

@@ -3,8 +3,10 @@
 // site's main(). See docs in the .cpp for where this deviates from the site.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "model/channel_kind.h"
 #include "model/pass_kind.h"
@@ -31,5 +33,9 @@ std::string_view EntryPointSignature(model::PassKind type);
 ValidationRequest ComposeShaderToyRequest(SourceManager& sources, model::PassKind type,
                                           const model::ChannelKinds& channels,
                                           const SourceFile* common, const SourceFile& pass);
+
+// The lines Common (if any) and the pass start on in the text the site compiles (one
+// string: header, Common, pass), which __LINE__ counts in: {Common's, the pass's}.
+std::vector<int64_t> ShaderToyFirstLines(model::PassKind type, const SourceFile* common);
 
 }  // namespace shaderport::validate

@@ -23,7 +23,8 @@ class PpDriver {
  public:
   PpDriver(PreprocessResult& result, const PreprocessOptions& options);
   // `lexed`: the file's tokens when the caller has them, else null.
-  void RunFile(const SourceFile& file, size_t index, const LexedFile* lexed);
+  // first_line: the line the file starts on in one composed text (0: its own line 1).
+  void RunFile(const SourceFile& file, size_t index, const LexedFile* lexed, int64_t first_line);
   void Finish(const SourceFile* last_file);
 
  private:

@@ -16,12 +16,13 @@ PpDriver::PpDriver(PreprocessResult& result, const PreprocessOptions& options)
   AddPredefinedMacros(state_, options.predefined);
 }
 
-void PpDriver::RunFile(const SourceFile& file, size_t index, const LexedFile* given) {
+void PpDriver::RunFile(const SourceFile& file, size_t index, const LexedFile* given,
+                       int64_t first_line) {
   file_ = &file;
   file_index_ = index;
   state_.file = &file;
-  state_.line_delta = 0;
-  state_.source_number = static_cast<int>(index);
+  state_.line_delta = first_line > 0 ? first_line - 1 : 0;
+  state_.source_number = first_line > 0 ? 0 : static_cast<int>(index);
   const size_t first_region = state_.result.inactive_regions.size();
   const size_t outer_groups = groups_.size();
   LexedFile own;
@@ -157,7 +158,8 @@ PreprocessResult Preprocess(std::span<const SourceFile* const> files,
   PreprocessResult result;
   PpDriver driver(result, options);
   for (size_t i = 0; i < files.size(); ++i) {
-    driver.RunFile(*files[i], i, i < options.lexed.size() ? options.lexed[i] : nullptr);
+    driver.RunFile(*files[i], i, i < options.lexed.size() ? options.lexed[i] : nullptr,
+                   i < options.first_lines.size() ? options.first_lines[i] : 0);
   }
   driver.Finish(files.empty() ? nullptr : files.back());
   return result;

@@ -73,6 +73,10 @@ struct PreprocessOptions {
   // Tokens of `files` the caller lexed already, by position (missing or null:
   // lexed here). They must be Lex() of the same file and outlive the call.
   std::vector<const LexedFile*> lexed;
+  // The line each file starts on when the files are parts of one text behind lines
+  // of their own (ShaderToy: header, Common, pass), for __LINE__; __FILE__ is then 0
+  // throughout. Empty: each file is a source string of its own from line 1.
+  std::vector<int64_t> first_lines;
 };
 
 struct PreprocessResult {

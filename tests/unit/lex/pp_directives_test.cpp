@@ -187,6 +187,15 @@ TEST(PpDirectives, LineAndBuiltins) {
   EXPECT_EQ(RuleIds(RunPp("#line x\n").result), V{"preprocessor/invalid-line"});
 }
 
+// Parts of one composed text (ShaderToy: header, Common, pass): __LINE__ counts the
+// lines before each part, and the whole is source string 0.
+TEST(PpDirectives, LineCountsFromTheFirstLineOfEachPart) {
+  auto r = RunPp({"__LINE__ __FILE__\n\n__LINE__\n", "__LINE__ __FILE__\n"}, {}, 0, {25, 28});
+  EXPECT_EQ(Joined(r.result), "25 0 27 28 0");
+  auto own = RunPp(std::vector<std::string>{"__LINE__\n", "__LINE__ __FILE__\n"});
+  EXPECT_EQ(Joined(own.result), "1 1 1");
+}
+
 TEST(PpDirectives, UnknownDirectiveAndNullDirective) {
   EXPECT_EQ(
       RuleIds(RunPp("#include \"x.glsl\"\n").result),

@@ -1,6 +1,7 @@
 // Helpers for preprocessor tests.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -17,7 +18,7 @@ struct PpRun {
 
 // Preprocesses `texts` as files "f0.glsl", "f1.glsl", ... of one translation unit.
 inline PpRun RunPp(const std::vector<std::string>& texts, std::vector<std::string> predefined = {},
-                   uint32_t max_identifier_length = 0) {
+                   uint32_t max_identifier_length = 0, std::vector<int64_t> first_lines = {}) {
   PpRun run;
   std::vector<const SourceFile*> files;
   for (size_t i = 0; i < texts.size(); ++i) {
@@ -26,6 +27,7 @@ inline PpRun RunPp(const std::vector<std::string>& texts, std::vector<std::strin
   PreprocessOptions options;
   options.predefined = std::move(predefined);
   options.max_identifier_length = max_identifier_length;
+  options.first_lines = std::move(first_lines);
   run.result = Preprocess(files, options);
   return run;
 }
