@@ -66,6 +66,31 @@ void Demote(Diagnostic& diagnostic, Severity severity, const std::string& why) {
   diagnostic.notes.push_back({{}, why});
 }
 
+// A global initialised by what browsers fold to a constant (`float T = 2. * asinh(1.);`,
+// `uintBitsToFloat(0x7f800001u)`): a constant initialiser to them, in either version;
+// glslang folds fewer built-ins and calls it non-constant.
+bool AllFolded(const BrowserContext& context, Diagnostic& diagnostic) {
+  // A sequence of constants (`(1.0, 2.0)`) counts in both versions: ANGLE refuses it in
+  // GLSL ES 3.00 only as a `const` declaration's initialiser.
+  const webgl::ConstantRules rules{100, nullptr};
+  bool folded = false;
+  for (const glsl::Declarator* declarator : DeclaratorsOnLine(context, diagnostic)) {
+    if (declarator->initializer == nullptr) continue;
+    const uint32_t symbol = context.model->SymbolAt(declarator->id);
+    if (symbol == glsl::kNoSymbol || context.model->symbols[symbol].scope != 0) continue;
+    if (!webgl::IsConstantExpression(*context.model, *declarator->initializer, rules) ||
+        !InitializerFitsDeclaration(context, *declarator)) {
+      return false;
+    }
+    folded = true;
+  }
+  if (!folded) return false;
+  Demote(diagnostic, Severity::kNote,
+         "not an error in browsers: this initialiser is a constant expression (GLSL ES section "
+         "4.3.3) that browsers fold; glslang cannot fold it");
+  return true;
+}
+
 // GLSL ES 1.00 globals initialised from uniforms or other globals: browsers warn
 // (WebGL 1.0 spec, "GLSL ES Global Variable Initialization"); GLSL ES 3.00 errors.
 bool AlignGlobalInitializer(const BrowserContext& context, Diagnostic& diagnostic) {
@@ -73,6 +98,7 @@ bool AlignGlobalInitializer(const BrowserContext& context, Diagnostic& diagnosti
       diagnostic.message.find("non-constant global initializer") == std::string::npos) {
     return false;
   }
+  if (AllFolded(context, diagnostic)) return true;
   if (context.version >= 300) return false;
   // Only uniforms, other globals and constants: a built-in input such as gl_FragCoord
   // or a call of the shader's own function is an error there too ("global variable
@@ -383,6 +409,57 @@ void RenameDeclarableBuiltins(const BrowserContext& context, FileId part, std::s
   });
 }
 
+// A struct field named `length` (`struct Ray { vec3 o; float length; };`, read as
+// `ray.length`): browsers look the field up, glslang reads `.length` as the array
+// method and stops ("does not operate on this type"). The field and every read of it
+// get one same-length alias in each part, when all of them are spelled in the parts.
+void RenameLengthFields(const BrowserContext& context, FileId part, std::string& text) {
+  if (context.model == nullptr || context.tree == nullptr || context.front_end_errors ||
+      text.find("length") == std::string::npos) {
+    return;
+  }
+  const auto original_of = [&](FileId file) -> std::string_view {
+    for (const SourceFile* unit_part : context.parts) {
+      if (unit_part->Id() == file) return unit_part->Text();
+    }
+    return file == context.file->Id() ? context.file->Text() : std::string_view();
+  };
+  std::vector<glsl::Name> names;
+  bool spelled = true;
+  const auto add = [&](const glsl::Name& name) {
+    const std::string_view in = original_of(name.range.file);
+    spelled =
+        spelled && name.range.begin + 6 <= in.size() && in.substr(name.range.begin, 6) == "length";
+    names.push_back(name);
+  };
+  glsl::VisitPreorder(*context.tree, [&](const glsl::Node& node, uint32_t) {
+    if (const auto* specifier = node.As<glsl::StructSpecifier>()) {
+      for (const glsl::VariableDeclaration* field : specifier->fields) {
+        for (const glsl::Declarator* declarator : field->declarators) {
+          if (declarator->name.text == "length") add(declarator->name);
+        }
+      }
+    } else if (const auto* member = node.As<glsl::MemberExpr>();
+               member != nullptr && member->member.text == "length" && member->object != nullptr &&
+               context.model->TypeOf(member->object->id).IsStruct()) {
+      add(member->member);
+    }
+    return true;
+  });
+  if (names.empty() || !spelled) return;
+  std::string unit_text;
+  for (const SourceFile* unit_part : context.parts) unit_text += unit_part->Text();
+  if (context.parts.empty()) unit_text = text;
+  const std::string alias = SameLengthAlias(unit_text, "length");
+  if (alias.empty()) return;
+  for (const glsl::Name& name : names) {
+    if (name.range.file == part && name.range.begin + 6 <= text.size() &&
+        text.compare(name.range.begin, 6, "length") == 0) {
+      text.replace(name.range.begin, 6, alias);
+    }
+  }
+}
+
 // Words glslang reserves that browsers let a shader use as names (measured in Chromium
 // 156 against glslang 12, declaring and reading `float WORD`), by GLSL ES version.
 constexpr std::array<std::string_view, 9> kEs1Names = {"active",
@@ -600,23 +677,37 @@ void EmptyInactiveLines(const BrowserContext& context, FileId part, std::string&
 std::set<std::string> RenameSelfNamingMacros(const BrowserContext& context, FileId part,
                                              std::string_view original, std::string& text) {
   const glsl::PreprocessResult& pp = *context.preprocessed;
-  // Function-like macros of `part` whose body names the macro itself.
+  // The unit's texts as written: a macro of ShaderToy's Common may be used in the pass.
+  const auto original_of = [&](FileId file) -> std::string_view {
+    if (file == part) return original;
+    for (const SourceFile* unit_part : context.parts) {
+      if (unit_part->Id() == file) return unit_part->Text();
+    }
+    return {};
+  };
+  // Function-like macros of the unit whose body names the macro itself.
   std::set<std::string> self_naming;
   for (const glsl::MacroUse& use : pp.macro_uses) {
     const SourceRange& at = use.definition;
-    if (at.file != part || at.end >= original.size() || original[at.end] != '(' ||
+    const std::string_view defined_in = original_of(at.file);
+    if (at.end >= defined_in.size() || defined_in[at.end] != '(' ||
         self_naming.contains(use.name)) {
       continue;
     }
     size_t end = at.end;
-    while (end < original.size() && original[end] != '\n') {
-      end += (original[end] == '\\' && end + 1 < original.size()) ? 2 : 1;
+    while (end < defined_in.size() && defined_in[end] != '\n') {
+      end += (defined_in[end] == '\\' && end + 1 < defined_in.size()) ? 2 : 1;
     }
-    const size_t body = original.find(')', at.end);
+    const size_t body = defined_in.find(')', at.end);
     if (body == std::string_view::npos || body >= end) continue;
     const std::regex names_itself("\\b" + use.name + "\\b");
-    const std::string text_of_body(original.substr(body + 1, end - body - 1));
+    const std::string text_of_body(defined_in.substr(body + 1, end - body - 1));
     if (std::regex_search(text_of_body, names_itself)) self_naming.insert(use.name);
+  }
+  // An alias must be new to every part, and the same in each of them.
+  std::string unit_text(original);
+  for (const SourceFile* unit_part : context.parts) {
+    if (unit_part->Id() != part) unit_text += unit_part->Text();
   }
   std::set<std::string> renamed;
   for (const std::string& name : self_naming) {
@@ -624,16 +715,17 @@ std::set<std::string> RenameSelfNamingMacros(const BrowserContext& context, File
     std::vector<SourceRange> names;  // the definition's and every use's name
     for (const glsl::MacroUse& use : pp.macro_uses) {
       if (use.name != name) continue;
-      movable = movable && use.use.file == part && use.definition.file == part &&
-                use.use.begin + name.size() <= original.size() &&
-                original.substr(use.use.begin, name.size()) == name;
+      const std::string_view used_in = original_of(use.use.file);
+      movable = movable && !original_of(use.definition.file).empty() &&
+                use.use.begin + name.size() <= used_in.size() &&
+                used_in.substr(use.use.begin, name.size()) == name;
       names.push_back(
           {use.use.file, use.use.begin, use.use.begin + static_cast<uint32_t>(name.size())});
       names.push_back(use.definition);
     }
     const std::string whole(original);
     if (!movable) continue;
-    const std::string alias = SameLengthAlias(whole, name);
+    const std::string alias = SameLengthAlias(unit_text, name);
     if (alias.empty()) continue;
     std::set<uint32_t> done;
     for (const SourceRange& range : names) {
@@ -1008,6 +1100,7 @@ GlslangText TextForGlslang(const BrowserContext& context, const SourceFile& part
   // Same-length edits first: the offsets of our front end stay valid for the next.
   RenameDeclarableBuiltins(context, part.Id(), text);
   RenameGlslangOnlyKeywords(context, text);
+  RenameLengthFields(context, part.Id(), text);
   ReplaceFileMacro(text);
   ReplaceLineMacro(context, part.Id(), text);
   HideUnofferedExtensions(context, part.Id(), text);

@@ -34,6 +34,8 @@ struct BrowserContext {
   bool behind_header = false;
   // The line each part starts on in the host's one text (ShaderToy), when not 1.
   const std::vector<std::pair<FileId, int64_t>>* first_lines = nullptr;
+  // The user's parts compiled together, in order (ShaderToy: Common, then the file).
+  std::vector<const SourceFile*> parts;
 };
 
 // Rewrites one glslang diagnostic in place when the browser disagrees with it.

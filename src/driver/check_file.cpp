@@ -249,9 +249,10 @@ FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceMana
   webgl.forced_version = decision.ForcedVersion();
   webgl.behind_header = decision.IsShaderToy();
   validate::ValidationRequest request = ComposeForGlslang(decision, file, common, sources);
-  const rules::GlslangText glslang_text = TextForGlslang(file, file, front, webgl);
-  const rules::GlslangText common_text =
-      common != nullptr ? TextForGlslang(file, *common, front, webgl) : rules::GlslangText{};
+  const rules::GlslangText glslang_text = TextForGlslang(file, common, file, front, webgl);
+  const rules::GlslangText common_text = common != nullptr
+                                             ? TextForGlslang(file, common, *common, front, webgl)
+                                             : rules::GlslangText{};
   std::vector<validate::ShaderPart> parts;
   for (validate::ShaderPart& part : request.parts) {
     const rules::GlslangText* text = nullptr;

@@ -78,10 +78,13 @@ void AlignGlslangWithBrowser(const SourceFile& file, const FrontEndResult& front
   }
 }
 
-rules::GlslangText TextForGlslang(const SourceFile& file, const SourceFile& part,
-                                  const FrontEndResult& front, const WebglCheckSettings& settings) {
+rules::GlslangText TextForGlslang(const SourceFile& file, const SourceFile* common,
+                                  const SourceFile& part, const FrontEndResult& front,
+                                  const WebglCheckSettings& settings) {
   rules::BrowserContext context = ToBrowserContext(front, settings);
   context.file = &file;
+  if (common != nullptr) context.parts.push_back(common);
+  context.parts.push_back(&file);
   return rules::TextForGlslang(context, part);
 }
 

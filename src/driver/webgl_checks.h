@@ -33,10 +33,11 @@ void AlignGlslangWithBrowser(const SourceFile& file, const FrontEndResult& front
                              const WebglCheckSettings& settings,
                              DiagnosticList& glslang_diagnostics);
 
-// The text of `part` (`file` itself, or the ShaderToy Common code compiled with it) as
+// The text of `part` (`file` itself, or `common`, ShaderToy's Common compiled with it) as
 // glslang should see it where glslang and browsers differ on purpose
 // (rules::TextForGlslang): its text is empty when glslang can compile it as it is.
-rules::GlslangText TextForGlslang(const SourceFile& file, const SourceFile& part,
-                                  const FrontEndResult& front, const WebglCheckSettings& settings);
+rules::GlslangText TextForGlslang(const SourceFile& file, const SourceFile* common,
+                                  const SourceFile& part, const FrontEndResult& front,
+                                  const WebglCheckSettings& settings);
 
 }  // namespace shaderport::driver

@@ -5,7 +5,10 @@ WebGL2 one, the stage from the extension (.vert vertex, anything else fragment).
 DIR/verdicts.json ({"webgl2/name.frag": {"compiled": bool, "log": "..."}}), the golden
 file browser_verdicts_test compares `check` with. A `.glsl` file with a mainImage and no
 main is a ShaderToy Image pass: it is compiled as the site composes it
-(shadertoy_reference.compose_image_pass). Python standard library only.
+(shadertoy_reference.compose_image_pass). DIR/projects/NAME.json is a ShaderToy project
+(a record with "passes", as in the Shadertoys dataset): each pass but Common is compiled
+as the site composes it with Common (shadertoy_compose.compose_record), in a WebGL2
+context, recorded as "projects/NAME.json#TAB". Python standard library only.
 
   record_verdicts.py tests/browser-verdicts
   record_verdicts.py --add NAME --context 2 --stage fragment FILE tests/browser-verdicts
@@ -18,6 +21,7 @@ import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import shadertoy_compose  # noqa: E402
 import shadertoy_reference  # noqa: E402
 from browser_compile import BrowserCompiler  # noqa: E402
 
@@ -32,6 +36,20 @@ def shaders(folder):
         for name in sorted(os.listdir(sub)):
             stage = "vertex" if name.endswith(".vert") else "fragment"
             yield "webgl%d/%s" % (context, name), context, stage
+
+
+def project_passes(folder):
+    """("projects/NAME.json#TAB", composed text) for every pass of every project."""
+    sub = os.path.join(folder, "projects")
+    if not os.path.isdir(sub):
+        return
+    for name in sorted(os.listdir(sub)):
+        if not name.endswith(".json"):
+            continue
+        with open(os.path.join(sub, name), encoding="utf-8") as f:
+            record = json.load(f)
+        for tab, _, text in shadertoy_compose.compose_record(record):
+            yield "projects/%s#%s" % (name, tab), text
 
 
 def main(argv=None):
@@ -56,6 +74,9 @@ def main(argv=None):
                 not re.search(r"\bvoid\s+main\s*\(", source):
             source = shadertoy_reference.compose_image_pass(source)
         jobs.append({"source": source, "stage": stage, "context": context})
+    for path, source in project_passes(args.folder):
+        entries.append((path, 2, "fragment"))
+        jobs.append({"source": source, "stage": "fragment", "context": 2})
     compiler = BrowserCompiler(args.chromium)
     try:
         results = compiler.compile(jobs)

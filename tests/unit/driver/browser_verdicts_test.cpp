@@ -2,7 +2,9 @@
 // the smallest shaders of each disagreement class the differential run found
 // (tools/browser/differential.py), with the verdict headless Chromium gave, recorded by
 // tools/browser/record_verdicts.py into verdicts.json (never edited by hand). The
-// folder a shader sits in (webgl1/, webgl2/) is the context it was compiled in.
+// folder a shader sits in (webgl1/, webgl2/) is the context it was compiled in;
+// projects/ holds ShaderToy projects, each pass compiled with Common as the site does
+// ("projects/NAME.json#TAB"), where check rejects a pass for an error in it or in Common.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -44,12 +46,26 @@ std::map<std::string, std::string> FirstErrors(const std::string& context, model
   return errors;
 }
 
+// The same for the passes of the projects: a pass's own first error, else Common's.
+std::map<std::string, std::string> ProjectPassErrors() {
+  std::map<std::string, std::string> tabs = FirstErrors("projects", model::Target::kWebGL2);
+  std::map<std::string, std::string> errors;
+  for (const auto& [tab, error] : tabs) {
+    const size_t hash = tab.find('#');
+    if (hash == std::string::npos || tab.substr(hash + 1) == "Common") continue;
+    const auto common = tabs.find(tab.substr(0, hash) + "#Common");
+    errors[tab] = !error.empty() || common == tabs.end() ? error : common->second;
+  }
+  return errors;
+}
+
 TEST(BrowserVerdicts, CheckGivesChromiumsVerdict) {
   std::ifstream in(kDir / "verdicts.json");
   ASSERT_TRUE(in) << "missing " << (kDir / "verdicts.json");
   const nlohmann::json verdicts = nlohmann::json::parse(in);
   std::map<std::string, std::string> errors = FirstErrors("webgl1", model::Target::kWebGL1);
   errors.merge(FirstErrors("webgl2", model::Target::kWebGL2));
+  errors.merge(ProjectPassErrors());
   ASSERT_EQ(errors.size(), verdicts.size()) << "every shader needs a recorded verdict";
   size_t cases = 0;
   for (const auto& [file, verdict] : verdicts.items()) {

@@ -1,0 +1,6 @@
+#version 300 es
+precision highp float;
+out vec4 o;
+uniform float u;
+float g = (u, 2.0);
+void main() { o = vec4(g); }
