@@ -1046,9 +1046,46 @@ std::string JoinContinuedLines(const BrowserContext& context, const std::string&
 // written as glslang understands them, on the same line: a body right after an
 // object-like macro's name (`#define EPS.001`: glslang drops the macro) gets a space,
 // a trailing comma in a parameter list (`#define f(a, b,)`) goes.
-std::string RepairDefines(const std::string& text) {
+// Object-like macros of the unit whose body is one unsigned literal (`#define N 64u`,
+// `#define N (26u)`) outside skipped groups, by name, with the literal's value as
+// glslang's `#if` takes it ("64"); a name defined with two values is left out.
+std::map<std::string, std::string> UnsignedLiteralMacros(const BrowserContext& context,
+                                                         const SourceFile& part) {
+  static const std::regex kUnsignedDefine(
+      R"(^[ \t]*#[ \t]*define[ \t]+([A-Za-z_][A-Za-z0-9_]*)[ \t]+\(?[ \t]*(0[xX][0-9a-fA-F]+|[0-9]+)[uU][ \t]*\)?[ \t]*(//.*)?\r?$)",
+      std::regex::multiline);
+  std::map<std::string, std::string> values;
+  std::set<std::string> ambiguous;
+  const auto skipped = [&](FileId file, size_t at) {
+    return context.preprocessed != nullptr &&
+           std::any_of(context.preprocessed->inactive_regions.begin(),
+                       context.preprocessed->inactive_regions.end(), [&](const SourceRange& r) {
+                         return r.file == file && r.begin <= at && at < r.end;
+                       });
+  };
+  const auto scan = [&](const SourceFile& file) {
+    const std::string text(file.Text());
+    if (text.find("define") == std::string::npos) return;
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), kUnsignedDefine);
+         it != std::sregex_iterator(); ++it) {
+      if (skipped(file.Id(), static_cast<size_t>(it->position()))) continue;
+      const auto [at, added] = values.emplace((*it)[1].str(), (*it)[2].str());
+      if (!added && at->second != (*it)[2].str()) ambiguous.insert(at->first);
+    }
+  };
+  scan(part);
+  for (const SourceFile* unit_part : context.parts) {
+    if (unit_part->Id() != part.Id()) scan(*unit_part);
+  }
+  for (const std::string& name : ambiguous) values.erase(name);
+  return values;
+}
+
+std::string RepairDefines(const std::string& text,
+                          const std::map<std::string, std::string>& unsigned_macros) {
   static const std::regex kCondition(R"(^[ \t]*#[ \t]*(el)?if\b.*$)");
   static const std::regex kUnsignedLiteral(R"(\b(0[xX][0-9a-fA-F]+|[0-9]+)[uU]\b)");
+  static const std::regex kWord(R"(\b[A-Za-z_][A-Za-z0-9_]*\b)");
   static const std::regex kDefine(R"(^([ \t]*#[ \t]*define[ \t]+[A-Za-z_][A-Za-z0-9_]*)(.*)$)");
   std::string out;
   out.reserve(text.size() + 16);
@@ -1059,8 +1096,21 @@ std::string RepairDefines(const std::string& text) {
     std::string line = text.substr(begin, end - begin);
     std::smatch match;
     if (line.find("if") != std::string::npos && std::regex_match(line, kCondition)) {
-      // `#if N % 2u`: browsers take unsigned literals in #if, glslang does not.
+      // `#if N % 2u`: browsers take unsigned literals in #if, glslang does not; nor
+      // through a macro (`#define N 64u`, `#if N == 64u`), whose value goes in its place.
       line = std::regex_replace(line, kUnsignedLiteral, "$1");
+      if (!unsigned_macros.empty()) {
+        std::string replaced;
+        size_t copied = 0;
+        for (auto it = std::sregex_iterator(line.begin(), line.end(), kWord);
+             it != std::sregex_iterator(); ++it) {
+          const auto value = unsigned_macros.find(it->str());
+          if (value == unsigned_macros.end()) continue;
+          replaced += line.substr(copied, it->position() - copied) + value->second;
+          copied = it->position() + it->length();
+        }
+        line = replaced + line.substr(copied);
+      }
     } else if (line.find("define") != std::string::npos && std::regex_match(line, match, kDefine)) {
       std::string rest = match[2].str();
       if (!rest.empty() && rest[0] == '(') {
@@ -1108,7 +1158,7 @@ GlslangText TextForGlslang(const BrowserContext& context, const SourceFile& part
   EmptyInactiveLines(context, part.Id(), text);
   ExpandMacroUses(context, part.Id(), part.Text(), text);
   PassEmptyArgumentsInMacroBodies(context, part.Id(), part.Text(), text, prelude);
-  text = RepairDefines(JoinContinuedLines(context, text));
+  text = RepairDefines(JoinContinuedLines(context, text), UnsignedLiteralMacros(context, part));
   if (text == part.Text()) text.clear();
   return {std::move(text), std::move(prelude)};
 }
