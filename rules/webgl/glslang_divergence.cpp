@@ -587,6 +587,43 @@ void ReplaceLineMacro(const BrowserContext& context, FileId part, std::string& t
   }
 }
 
+// Directives inside a macro's arguments (`T(\n#if A\n x\n#else\n y\n#endif\n)`):
+// browsers run them, glslang stops at "unexpected '#'". In the text glslang compiles,
+// within such a use the directive lines and the skipped lines become blank (line
+// breaks kept), so that the arguments are what browsers passed.
+void BlankDirectivesInMacroArguments(const BrowserContext& context, FileId part,
+                                     std::string& text) {
+  if (context.preprocessed == nullptr || context.front_end_errors) return;
+  const glsl::PreprocessResult& pp = *context.preprocessed;
+  const auto blank = [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end && i < text.size(); ++i) {
+      if (text[i] != '\n' && text[i] != '\r') text[i] = ' ';
+    }
+  };
+  for (const glsl::MacroUse& use : pp.macro_uses) {
+    if (use.parent != glsl::kNoMacroUse || use.use.file != part || use.use.end > text.size()) {
+      continue;
+    }
+    const size_t open = text.find('(', use.use.begin);
+    if (open >= use.use.end || text.find('\n', open) >= use.use.end) continue;
+    bool directives = false;
+    for (size_t line = text.find('\n', open); line < use.use.end;
+         line = text.find('\n', line + 1)) {
+      const size_t first = text.find_first_not_of(" \t", line + 1);
+      if (first >= use.use.end || text[first] != '#') continue;
+      blank(first, std::min<size_t>(text.find('\n', first), use.use.end));
+      directives = true;
+    }
+    if (!directives) continue;
+    for (const SourceRange& skipped : pp.inactive_regions) {
+      if (skipped.file == part && skipped.begin < use.use.end && use.use.begin < skipped.end) {
+        blank(std::max<size_t>(skipped.begin, open + 1),
+              std::min<size_t>(skipped.end, use.use.end));
+      }
+    }
+  }
+}
+
 // `__FILE__`: browsers give 0, glslang wants an extension for it.
 void ReplaceFileMacro(std::string& text) {
   if (text.find("__FILE__") == std::string::npos) return;
@@ -1153,6 +1190,7 @@ GlslangText TextForGlslang(const BrowserContext& context, const SourceFile& part
   RenameLengthFields(context, part.Id(), text);
   ReplaceFileMacro(text);
   ReplaceLineMacro(context, part.Id(), text);
+  BlankDirectivesInMacroArguments(context, part.Id(), text);
   HideUnofferedExtensions(context, part.Id(), text);
   BlankContinuedLineComments(text);
   EmptyInactiveLines(context, part.Id(), text);

@@ -30,8 +30,13 @@ class PpDriver {
  private:
   // preprocessor.cpp
   bool Active() const { return groups_.empty() || groups_.back().active; }
-  // Preprocesses a run of active text tokens (no directive among them) into the result.
+  // Preprocesses a run of active text tokens (no directive among them) into the result;
+  // a run that ends inside a function-like macro's arguments waits for the rest of them
+  // (browsers run the directives between: `T(\n#if A\n x\n#else\n y\n#endif\n)`).
   void FlushText(std::span<const Token> text);
+  // Expands what waits for the end of a macro call (at the end of a file).
+  void FlushPending();
+  bool EndsInsideMacroCall(std::span<const Token> text) const;
   std::vector<ExpToken> ToExpTokens(std::span<const Token> tokens);
   void AddLexDiagnostics(const LexedFile& lexed, size_t first_region);
   // Past limits::kMaxCompiledTokens the text is not for glslang: one error at the first
@@ -67,6 +72,7 @@ class PpDriver {
   bool seen_code_ = false;   // #extension should come before the code
   bool reported_depth_ = false;
   uint32_t max_identifier_length_ = 0;
+  std::vector<Token> pending_;  // active text of a macro call that spans directives
 };
 
 }  // namespace shaderport::glsl

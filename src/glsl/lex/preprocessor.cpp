@@ -53,6 +53,7 @@ void PpDriver::RunFile(const SourceFile& file, size_t index, const LexedFile* gi
     seen_token_ = true;
     i = end;
   }
+  FlushPending();  // a macro call may not span files
   // A conditional group may not span files.
   while (groups_.size() > outer_groups) {
     const ConditionalGroup& g = groups_.back();
@@ -106,9 +107,51 @@ void ReserveMore(std::vector<PpToken>& out, size_t more) {
 void PpDriver::FlushText(std::span<const Token> text) {
   if (text.empty()) return;
   seen_code_ = true;
+  if (pending_.empty() && !EndsInsideMacroCall(text)) {
+    auto& out = state_.result.tokens;
+    ReserveMore(out, text.size());
+    ExpandMacrosInto(state_, *file_, text, file_has_backslash_, out);
+    return;
+  }
+  pending_.insert(pending_.end(), text.begin(), text.end());
+  if (!EndsInsideMacroCall(pending_)) FlushPending();
+}
+
+void PpDriver::FlushPending() {
+  if (pending_.empty()) return;
   auto& out = state_.result.tokens;
-  ReserveMore(out, text.size());
-  ExpandMacrosInto(state_, *file_, text, file_has_backslash_, out);
+  ReserveMore(out, pending_.size());
+  ExpandMacrosInto(state_, *file_, pending_, file_has_backslash_, out);
+  pending_.clear();
+}
+
+bool PpDriver::EndsInsideMacroCall(std::span<const Token> text) const {
+  // Cheap first: an open call leaves more '(' than ')'.
+  int balance = 0;
+  for (const Token& t : text) {
+    balance += t.punct == Punct::kLeftParen ? 1 : t.punct == Punct::kRightParen ? -1 : 0;
+  }
+  if (balance <= 0) return false;
+  int depth = 0;
+  bool in_call = false;
+  for (size_t k = 0; k < text.size(); ++k) {
+    const Token& t = text[k];
+    if (in_call) {
+      depth += t.punct == Punct::kLeftParen ? 1 : t.punct == Punct::kRightParen ? -1 : 0;
+      in_call = depth > 0;
+      continue;
+    }
+    if (t.kind != TokenKind::kIdentifier || k + 1 >= text.size() ||
+        text[k + 1].punct != Punct::kLeftParen) {
+      continue;
+    }
+    const Macro* macro = state_.Find(t.text);
+    if (macro != nullptr && macro->function_like) {
+      in_call = true;
+      depth = 0;
+    }
+  }
+  return in_call;
 }
 
 void PpDriver::AddLexDiagnostics(const LexedFile& lexed, size_t first_region) {

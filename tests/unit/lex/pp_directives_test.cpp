@@ -196,6 +196,16 @@ TEST(PpDirectives, LineCountsFromTheFirstLineOfEachPart) {
   EXPECT_EQ(Joined(own.result), "1 1 1");
 }
 
+// Directives between a macro's arguments run as browsers run them; only the taken
+// group's tokens become arguments. A call that never closes is still an error.
+TEST(PpDirectives, DirectivesInsideMacroArguments) {
+  auto r = RunPp("#define F(a, b) [a|b]\nF(\n#if 1\nx,\n#else\ny,\n#endif\n#define Z z\nZ)\n");
+  EXPECT_EQ(Joined(r.result), "[ x | z ]");
+  EXPECT_TRUE(r.result.diagnostics.empty());
+  EXPECT_EQ(RuleIds(RunPp("#define F(a) a\nF(\n#if 1\nx\n#endif\n").result),
+            V{"preprocessor/unterminated-macro-call"});
+}
+
 TEST(PpDirectives, UnknownDirectiveAndNullDirective) {
   EXPECT_EQ(
       RuleIds(RunPp("#include \"x.glsl\"\n").result),
