@@ -34,6 +34,7 @@ import glob
 import hashlib
 import json
 import os
+import random
 import re
 import shutil
 import subprocess
@@ -82,10 +83,13 @@ def select_records(corpus, limit):
 
 def run_shaderport(args):
     """Worker (runs in the process pool): one `shaderport render`."""
-    binary, rec_path, png_path, size, timeout, render_timeout = args
+    binary, rec_path, png_path, size, timeout, render_timeout, inputs = args
     cmd = [binary, "render", "--hermetic", "--size", size, rec_path, "-o", png_path]
     if render_timeout:
         cmd += ["--timeout", "%g" % render_timeout]
+    if inputs:
+        cmd += ["--time", repr(inputs["time"]), "--frame", str(inputs["frame"]),
+                "--mouse"] + [repr(v) for v in inputs["mouse"]]
     t0 = time.time()
     try:
         proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=timeout)
@@ -95,6 +99,18 @@ def run_shaderport(args):
         out, code = "shaderport did not finish in %.0f s" % timeout, None
     return {"exit": code, "output": out, "seconds": time.time() - t0,
             "rendered": os.path.isfile(png_path) and os.path.getsize(png_path) > 0}
+
+
+def random_inputs(seed, rid, width, height):
+    """iTime, iFrame and iMouse for one shader of a --seed run: the same seed and id
+    always give the same values (the seed is printed in the report)."""
+    rng = random.Random("%d:%s" % (seed, rid))
+    pressed = rng.random() < 0.5
+    x, y = round(rng.uniform(0, width), 1), round(rng.uniform(0, height), 1)
+    cx, cy = round(rng.uniform(0, width), 1), round(rng.uniform(0, height), 1)
+    # ShaderToy: zw hold the click position, negative while the button is up.
+    return {"time": round(rng.uniform(0.0, 120.0), 2), "frame": rng.randrange(0, 1000),
+            "mouse": [x, y, cx if pressed else -cx, cy if pressed else -cy]}
 
 
 def findings_of(output):
@@ -173,6 +189,9 @@ def main(argv=None):
     ap.add_argument("--causes", help="JSON file {id: cause} with a classification of the mismatches (classify_mismatches.py or by hand)")
     ap.add_argument("--notes", help="Markdown file appended to the report (e.g. how the causes "
                     "were found)")
+    ap.add_argument("--seed", type=int, help="draw each shader at its own random iTime "
+                    "(0-120 s), iFrame (0-999) and iMouse, from this seed (default: iTime 1, "
+                    "iFrame 0, iMouse 0)")
     ap.add_argument("--out-md", help="write the Markdown report here")
     ap.add_argument("--keep", help="keep both PNGs and shaderport's output per shader, and a "
                     "side-by-side picture per mismatch, in this directory")
@@ -196,15 +215,19 @@ def main(argv=None):
     try:
         # 1. shaderport, 2 processes at a time.
         tasks = []
+        rec_inputs = {}
         for rec in records:
             d = os.path.join(work, rec["id"])
             os.makedirs(d)
             rec_path = os.path.join(d, "record.json")
             with open(rec_path, "w", encoding="utf-8") as f:
                 json.dump(rec, f)
+            inputs = (random_inputs(args.seed, rec["id"], width, height)
+                      if args.seed is not None else None)
+            rec_inputs[rec["id"]] = inputs
             tasks.append((binary, rec_path, os.path.join(d, "shaderport.png"), args.size,
                           max(args.shaderport_timeout, (args.render_timeout or 10.0) + 30.0),
-                          args.render_timeout))
+                          args.render_timeout, inputs))
         t0 = time.time()
         with concurrent.futures.ProcessPoolExecutor(max_workers=args.jobs) as pool:
             sp_results = list(pool.map(run_shaderport, tasks))
@@ -213,7 +236,8 @@ def main(argv=None):
 
         # 2. Chromium.
         t0 = time.time()
-        jobs = [{"key": rec["id"], "fragment": shadertoy_reference.compose_record(rec)}
+        jobs = [dict({"key": rec["id"], "fragment": shadertoy_reference.compose_record(rec)},
+                     **(rec_inputs[rec["id"]] or {}))
                 for rec in records]
         ch_results = shadertoy_reference.render_jobs(
             jobs, width, height, 1.0, args.batch, chromium=chromium,
@@ -262,6 +286,7 @@ def main(argv=None):
                     "url": r["rec"].get("url"), "shaderport_rendered": r["sp"]["rendered"],
                     "shaderport_exit": r["sp"]["exit"], "chromium": r["ch"]["status"],
                     "chromium_ms": r["ch"].get("ms"),
+                    "inputs": rec_inputs.get(r["rec"]["id"]),
                     "match": c.match if c else None, "worst": round(c.worst, 2) if c else None,
                     "mean_abs": round(c.mean_abs, 2) if c else None,
                     "blocks_over": c.blocks_over if c else None,
@@ -304,6 +329,12 @@ def _chromium_version(chromium):
         return "unknown"
 
 
+def shown(rec, text, limit=None):
+    """Findings and logs quote the shader's own names: only for permissive records
+    (sample_dataset.py marks the others `restricted`)."""
+    return "(restricted licence: id only)" if rec.get("restricted") else md(text, limit)
+
+
 def build_report(args, rows, total, binary, elapsed, t_sp, t_ch, causes):
     both = [r for r in rows if r["comparison"] is not None]
     match = [r for r in both if r["comparison"].match]
@@ -333,6 +364,8 @@ def build_report(args, rows, total, binary, elapsed, t_sp, t_ch, causes):
         cmd += " --shaderport %s" % args.shaderport
     if args.render_timeout:
         cmd += " --render-timeout %g" % args.render_timeout
+    if args.seed is not None:
+        cmd += " --seed %d" % args.seed
     if args.causes:
         cmd += " --causes %s" % os.path.relpath(os.path.abspath(args.causes), REPO)
     if args.notes:
@@ -353,11 +386,15 @@ def build_report(args, rows, total, binary, elapsed, t_sp, t_ch, causes):
     lines.append("* shaderport: `%s render --hermetic --size %s%s REC.json -o out.png`; binary built "
                  "%s UTC (sha256 %s…), repository HEAD %s at run time." %
                  (shown, args.size, extra, built.strftime("%Y-%m-%d %H:%M"), digest, _git_rev()))
+    uniform_note = ("iTime, iFrame and iMouse drawn per shader from seed %d: iTime uniform in "
+                    "0-120 s, iFrame in 0-999, iMouse anywhere in the picture, button up or down "
+                    "(values per shader in the `--keep` summary); both sides get the same values"
+                    % args.seed if args.seed is not None else "iTime 1, iFrame 0, iMouse 0")
     lines.append("* Chromium: %s, headless, `--use-angle=swiftshader`; the site's composition "
                  "(src/validate/shadertoy_contract.cpp) drawn into an RGBA8 framebuffer with "
-                 "shaderport's uniform values (iTime 1, iFrame 0, iMouse 0, iDate 2025-01-01 12:00); "
-                 "unfed channels are unbound, as on the site." % _chromium_version(
-                     shadertoy_reference.find_chromium(args.chromium)))
+                 "shaderport's uniform values (%s, iDate 2025-01-01 12:00); "
+                 "unfed channels are unbound, as on the site." % (uniform_note, _chromium_version(
+                     shadertoy_reference.find_chromium(args.chromium))))
     lines.append("* Comparison: 8x8 blocks, R/G/B mean per block; MATCH when no block mean differs "
                  "by more than %g/255." % args.threshold)
     lines.append("* Run time: %.0f s in all (shaderport %.0f s with %d processes, Chromium %.0f s)." %
@@ -410,7 +447,7 @@ def build_report(args, rows, total, binary, elapsed, t_sp, t_ch, causes):
         url = rec.get("url") or "https://www.shadertoy.com/view/%s" % rec["id"]
         line = "| [%s](%s) | %s | %s | %s | %.1f | %s |" % (
             rec["id"], url, md(rec.get("name"), 60), md(rec.get("author"), 30),
-            md(rec.get("license")), c.worst, md(summarize_findings(r["findings"])))
+            md(rec.get("license")), c.worst, shown(rec, summarize_findings(r["findings"])))
         if causes:
             line += " %s |" % md(causes.get(rec["id"], ""))
         lines.append(line)
@@ -426,8 +463,8 @@ def build_report(args, rows, total, binary, elapsed, t_sp, t_ch, causes):
         url = rec.get("url") or "https://www.shadertoy.com/view/%s" % rec["id"]
         lines.append("| [%s](%s) | %s | %s | %s | %s | %s |" % (
             rec["id"], url, md(rec.get("name"), 60), md(rec.get("author"), 30), md(rec.get("license")),
-            r["ch"]["status"], md(summarize_findings(r["findings"]) if r["findings"]
-                                  else r["sp"]["output"], 200)))
+            r["ch"]["status"], shown(rec, summarize_findings(r["findings"]) if r["findings"]
+                                     else r["sp"]["output"], 200)))
     if not sp_failed:
         lines.append("| none | | | | | |")
     lines.append("")
@@ -440,7 +477,8 @@ def build_report(args, rows, total, binary, elapsed, t_sp, t_ch, causes):
         url = rec.get("url") or "https://www.shadertoy.com/view/%s" % rec["id"]
         lines.append("| [%s](%s) | %s | %s | %s | %s | %s | %s |" % (
             rec["id"], url, md(rec.get("name"), 60), md(rec.get("author"), 30), md(rec.get("license")),
-            r["ch"]["status"], md(r["ch"].get("log", ""), 200), md(summarize_findings(r["findings"]))))
+            r["ch"]["status"], shown(rec, r["ch"].get("log", ""), 200),
+            shown(rec, summarize_findings(r["findings"]))))
     if not ch_failed:
         lines.append("| none | | | | | | |")
     lines.append("")

@@ -156,7 +156,11 @@ function isSampler(t) {
           G.UNSIGNED_INT_SAMPLER_2D_ARRAY].indexOf(t) >= 0;
 }
 // The values of src/render/uniform_values.cpp (SetShaderToyUniform, then by type and name).
-function setUniforms(prog) {
+function setUniforms(prog, job) {
+  // A job may bring its own iTime, iFrame and iMouse (random-time parity runs).
+  const T = job.time !== undefined ? job.time : CONFIG.time;
+  const FRAME = job.frame || 0;
+  const MOUSE = job.mouse || [0, 0, 0, 0];
   const count = gl.getProgramParameter(prog, gl.ACTIVE_UNIFORMS);
   const delta = 1.0 / 60.0;
   let unit = 0;
@@ -172,8 +176,8 @@ function setUniforms(prog) {
     else if (name === "iTime" || name === "iGlobalTime" || name === "iTimeOffset") gl.uniform1f(loc, T);
     else if (name === "iTimeDelta") gl.uniform1f(loc, delta);
     else if (name === "iFrameRate") gl.uniform1f(loc, 60.0);
-    else if (name === "iFrame") gl.uniform1i(loc, 0);
-    else if (name === "iMouse") gl.uniform4f(loc, 0, 0, 0, 0);
+    else if (name === "iFrame") gl.uniform1i(loc, FRAME);
+    else if (name === "iMouse") gl.uniform4f(loc, MOUSE[0], MOUSE[1], MOUSE[2], MOUSE[3]);
     else if (name === "iDate") gl.uniform4f(loc, 2025, 0, 1, 43200);
     else if (name === "iSampleRate") gl.uniform1f(loc, 44100.0);
     else if (name === "iSampleOffset") gl.uniform1i(loc, 0);
@@ -261,7 +265,7 @@ function run() {
     gl.disable(gl.BLEND); gl.disable(gl.DEPTH_TEST); gl.disable(gl.DITHER);
     gl.clearColor(0, 0, 0, 0);
     gl.clear(gl.COLOR_BUFFER_BIT);
-    setUniforms(prog);
+    setUniforms(prog, job);
     gl.drawArrays(gl.TRIANGLES, 0, 3);
     gl.readPixels(0, 0, W, H, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
     const err = gl.getError();
@@ -293,7 +297,8 @@ def build_page(jobs, width, height, time_value):
             "</head><body><pre id=\"results\"></pre>\n<script>\n"
             "const CONFIG = " + js({"width": width, "height": height, "time": time_value}) + ";\n"
             "const VERTEX_SHADER = " + js(VERTEX_SHADER) + ";\n"
-            "const JOBS = " + js([{"key": j["key"], "fragment": j["fragment"]} for j in jobs]) +
+            "const JOBS = " + js([{k: j[k] for k in ("key", "fragment", "time", "frame", "mouse")
+                                  if k in j} for j in jobs]) +
             ";\n" + _PAGE_SCRIPT + "</script></body></html>\n")
 
 
