@@ -630,10 +630,10 @@ void ReplaceFileMacro(std::string& text) {
   ReplaceWord(text, "__FILE__", "0       ");
 }
 
-// An integer literal past 32 bits (4294967296, 0x100000000, a long octal) on a line:
-// glslang's scanner reports "numeric literal too big" for it even in a skipped group
-// (and then loses track of the group's #endif).
-bool HasOversizedIntegerLiteral(std::string_view line) {
+// An integer literal past 32 bits (4294967296, 0x100000000, a long octal) or an octal
+// one with a digit 8 or 9 (`08`) on a line: glslang's scanner reports it even in a
+// skipped group (and then loses track of the group's #endif).
+bool HasIntegerLiteralGlslangScansAsError(std::string_view line) {
   const auto word_char = [](char c) {
     return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '.';
   };
@@ -657,6 +657,8 @@ bool HasOversizedIntegerLiteral(std::string_view line) {
                         : std::isxdigit(static_cast<unsigned char>(c)) != 0
                             ? std::tolower(static_cast<unsigned char>(c)) - 'a' + 10
                             : -1;
+      // `08`: glslang's scanner says "octal literal digit too large" even here.
+      if (base == 8 && (c == '8' || c == '9')) return true;
       if (digit < 0 || static_cast<unsigned>(digit) >= base) break;  // not a literal
       value = value * base + static_cast<unsigned>(digit);
       if (value > 0xFFFFFFFFull) return true;
@@ -686,8 +688,8 @@ void EmptyInactiveLines(const BrowserContext& context, FileId part, std::string&
                         return c == '"' || c == '\'' || c == '$' || c == '@' || c == '`' ||
                                static_cast<unsigned char>(c) >= 0x80;
                       });
-      const bool oversized =
-          !troubling && HasOversizedIntegerLiteral(std::string_view(text).substr(line, end - line));
+      const bool oversized = !troubling && HasIntegerLiteralGlslangScansAsError(
+                                               std::string_view(text).substr(line, end - line));
       if ((troubling || oversized) && first < end && text[first] != '#') {
         for (size_t i = line; i < end; ++i) {
           if (text[i] != '\r' && text[i] != '\\') text[i] = ' ';

@@ -9,7 +9,7 @@ namespace shaderport::driver {
 namespace {
 
 glsl::ParseResult ParseUnit(const std::vector<const SourceFile*>& files, int forced_version,
-                            bool shadertoy, glsl::PreprocessResult& preprocessed,
+                            bool hw_performance, glsl::PreprocessResult& preprocessed,
                             uint32_t max_identifier_length = 0,
                             std::vector<const glsl::LexedFile*> lexed = {},
                             std::vector<int64_t> first_lines = {}) {
@@ -17,8 +17,8 @@ glsl::ParseResult ParseUnit(const std::vector<const SourceFile*>& files, int for
   options.max_identifier_length = max_identifier_length;
   options.lexed = std::move(lexed);
   options.first_lines = std::move(first_lines);
-  // The site defines HW_PERFORMANCE for every pass.
-  if (shadertoy) options.predefined = {"HW_PERFORMANCE=1"};
+  // The site defines HW_PERFORMANCE for every pass (not for the Common tab alone).
+  if (hw_performance) options.predefined = {"HW_PERFORMANCE=1"};
   preprocessed = glsl::Preprocess(files, options);
   glsl::ParseOptions parse_options;
   parse_options.version = forced_version != 0 ? forced_version : preprocessed.version.number;
@@ -29,9 +29,12 @@ glsl::ParseResult ParseUnit(const std::vector<const SourceFile*>& files, int for
 // about a tenth of the front end's work on a short pass. Only its declarations are
 // read (as predeclared symbols, without nodes or ranges), so sharing one tree and
 // one generated file between files changes nothing they report.
-std::shared_ptr<const glsl::ParseResult> ShaderToyHeaderTree(const model::ChannelKinds& channels,
+std::shared_ptr<const glsl::ParseResult> ShaderToyHeaderTree(model::PassKind pass,
+                                                             const model::ChannelKinds& channels,
                                                              SourceManager& sources) {
-  std::string text = validate::ShaderToyHeader(model::PassKind::kImage, channels);
+  // The Common tab alone sees its own, shorter header; every pass the Image pass's.
+  std::string text = validate::ShaderToyHeader(
+      pass == model::PassKind::kCommon ? pass : model::PassKind::kImage, channels);
   std::string key = "front-end:shadertoy-header:" + text;
   return std::static_pointer_cast<const glsl::ParseResult>(sources.Memo(key, [&] {
     const SourceFile& header = sources.Add("<shadertoy-header>", std::move(text), true);
@@ -90,8 +93,9 @@ FrontEndResult RunFrontEnd(const SourceFile& file, glsl::LexedFile lexed, const 
       result.first_lines.emplace_back(files[i]->Id(), first_lines[i]);
     }
   }
+  const bool hw_performance = shadertoy && kind.pass != model::PassKind::kCommon;
   result.parsed =
-      ParseUnit(files, forced_version, shadertoy, result.preprocessed,
+      ParseUnit(files, forced_version, hw_performance, result.preprocessed,
                 options.max_identifier_length, std::move(file_tokens), std::move(first_lines));
   Append(result.diagnostics, result.preprocessed.diagnostics);
   Append(result.diagnostics, result.parsed.diagnostics);
@@ -101,7 +105,7 @@ FrontEndResult RunFrontEnd(const SourceFile& file, glsl::LexedFile lexed, const 
   analyze.version = forced_version != 0 ? forced_version : result.preprocessed.version.number;
   analyze.stage = kind.stage;
   if (shadertoy) {
-    result.header = ShaderToyHeaderTree(options.channels, sources);
+    result.header = ShaderToyHeaderTree(kind.pass, options.channels, sources);
     analyze.header = &result.header->tree;
   } else if (!options.harness_header.empty()) {
     result.header = HarnessHeaderTree(options.harness_header, analyze.version, sources);

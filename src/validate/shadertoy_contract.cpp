@@ -30,6 +30,10 @@ constexpr std::string_view kUniforms =
     "uniform float iTimeDelta;\n"
     "uniform float iFrameRate;\n";
 
+constexpr std::string_view kCommonTabUniforms =
+    "uniform vec4 iDate;\n"
+    "uniform float iSampleRate;\n";
+
 }  // namespace
 
 std::string_view EntryPointName(model::PassKind type) {
@@ -55,6 +59,12 @@ std::string ShaderToyHeader(model::PassKind type, const model::ChannelKinds& cha
       "precision highp int;\n"
       "precision mediump sampler3D;\n"
       "#endif\n";
+  if (type == model::PassKind::kCommon) {
+    // The site compiles the Common tab on its own behind a shorter header: only iDate
+    // and iSampleRate, no channels, no HW_PERFORMANCE. Shaders test for it with
+    // `#ifndef HW_PERFORMANCE` or `#if __LINE__ < 17` and declare what they need.
+    return header + std::string(kCommonTabUniforms) + "out vec4 shadertoy_out_color;\n";
+  }
   header += kUniforms;
   for (size_t i = 0; i < channels.size(); ++i) {
     header += "uniform " + std::string(model::SamplerTypeName(channels[i])) + " iChannel" +
@@ -101,9 +111,12 @@ std::string ShaderToyEpilogue(model::PassKind type) {
              "shadertoy_rd);\n"
              "  shadertoy_out_color = shadertoy_color;\n"
              "}\n";
+    case model::PassKind::kCommon:
+      return "void main() {\n"
+             "  shadertoy_out_color = vec4(0.0);\n"
+             "}\n";
     case model::PassKind::kImage:
     case model::PassKind::kBuffer:
-    case model::PassKind::kCommon:
       break;
   }
   std::string epilogue =
@@ -113,7 +126,7 @@ std::string ShaderToyEpilogue(model::PassKind type) {
       "void main() {\n"
       "  vec4 shadertoy_color = vec4(1e20);\n"
       "  mainImage(shadertoy_color, gl_FragCoord.xy);\n";
-  // Image (and Common, composed as Image) forces alpha to 1; buffers keep what the shader wrote.
+  // Image forces alpha to 1; buffers keep what the shader wrote.
   epilogue += type != model::PassKind::kBuffer
                   ? "  shadertoy_out_color = vec4(shadertoy_color.xyz, 1.0);\n"
                   : "  shadertoy_out_color = shadertoy_color;\n";

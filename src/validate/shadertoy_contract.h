@@ -15,8 +15,9 @@
 
 namespace shaderport::validate {
 
-// Common has no pass of its own: a kCommon `type` is composed as an Image pass
-// would see it.
+// A kCommon `type` is the Common tab compiled on its own, as the site compiles it:
+// a shorter header (iDate and iSampleRate only, no HW_PERFORMANCE) and a main() of
+// its own.
 
 // The generated texts (each ends with a newline).
 std::string ShaderToyHeader(model::PassKind type, const model::ChannelKinds& channels);

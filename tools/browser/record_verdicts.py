@@ -8,7 +8,8 @@ main is a ShaderToy Image pass: it is compiled as the site composes it
 (shadertoy_reference.compose_image_pass). DIR/projects/NAME.json is a ShaderToy project
 (a record with "passes", as in the Shadertoys dataset): each pass but Common is compiled
 as the site composes it with Common (shadertoy_compose.compose_record), in a WebGL2
-context, recorded as "projects/NAME.json#TAB". Python standard library only.
+context, recorded as "projects/NAME.json#TAB", and the Common tab alone as the site
+compiles it ("projects/NAME.json#Common"). Python standard library only.
 
   record_verdicts.py tests/browser-verdicts
   record_verdicts.py --add NAME --context 2 --stage fragment FILE tests/browser-verdicts
@@ -50,6 +51,9 @@ def project_passes(folder):
             record = json.load(f)
         for tab, _, text in shadertoy_compose.compose_record(record):
             yield "projects/%s#%s" % (name, tab), text
+        common = shadertoy_compose.compose_common_tab(record)
+        if common is not None:
+            yield "projects/%s#Common" % name, common
 
 
 def main(argv=None):

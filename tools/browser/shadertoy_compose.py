@@ -19,13 +19,17 @@ PASS_KIND = {"image": "image", "buffer": "buffer", "cube": "cube", "cubemap": "c
 
 
 def header(kind, channel_samplers=("sampler2D",) * 4):
-    """ShaderToyHeader(kind, channels); kind is image | buffer | cube | sound."""
+    """ShaderToyHeader(kind, channels); kind is image | buffer | cube | sound | common
+    (the Common tab compiled on its own: iDate and iSampleRate, no HW_PERFORMANCE)."""
     text = ("#version 300 es\n"
             "#ifdef GL_ES\n"
             "precision highp float;\n"
             "precision highp int;\n"
             "precision mediump sampler3D;\n"
             "#endif\n")
+    if kind == "common":
+        return text + ("uniform vec4 iDate;\nuniform float iSampleRate;\n"
+                       "out vec4 shadertoy_out_color;\n")
     text += _UNIFORMS
     for i, sampler in enumerate(channel_samplers):
         text += "uniform %s iChannel%d;\n" % (sampler, i)
@@ -40,6 +44,8 @@ def header(kind, channel_samplers=("sampler2D",) * 4):
 
 def epilogue(kind):
     """ShaderToyEpilogue(kind)."""
+    if kind == "common":
+        return "void main() {\n  shadertoy_out_color = vec4(0.0);\n}\n"
     if kind == "sound":
         return ("#ifndef mainSound\n"
                 "vec2 mainSound(int, float);\n"
@@ -106,6 +112,15 @@ def compose(kind, code, common=None, inputs=()):
     if common is not None:
         text += _user_part(common)
     return text + _user_part(code) + epilogue(kind)
+
+
+def compose_common_tab(record):
+    """The Common tab as the site compiles it on its own, or None without one."""
+    common = next((p.get("code", "") for p in record.get("passes") or []
+                   if p.get("type") == "common"), None)
+    if common is None:
+        return None
+    return header("common") + _user_part(common) + epilogue("common")
 
 
 def compose_record(record):

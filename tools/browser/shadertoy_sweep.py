@@ -280,6 +280,11 @@ def compare(records, passes, chromium, check_errors, check_failed):
         rid, tab = p["id"], p["tab"]
         rec = by_id[rid]
         ok, clog = chromium.get((rid, tab), (None, "not compiled"))
+        common_ok, common_log = chromium.get((rid, "Common"), (True, ""))
+        text = p["text"]
+        if ok and common_ok is False:  # the Common tab alone does not compile
+            ok, clog = False, common_log
+            text = shadertoy_compose.compose_common_tab(rec)
         row = {"id": rid, "pass": tab, "kind": p["kind"], "license": license_class(rec)}
         if ok is None:
             row["verdict"] = "chromium-failed"
@@ -299,7 +304,7 @@ def compare(records, passes, chromium, check_errors, check_failed):
                 row.update(verdict="false-accept", cause=shape(chromium_cause(first), rec),
                            chromium=mask(first, rec))
                 m = re.match(r"ERROR:\s*\d+:(\d+):", first)
-                lines = p["text"].splitlines()
+                lines = text.splitlines()
                 if row["license"] == "permissive" and m and 0 < int(m.group(1)) <= len(lines):
                     row["src_line"] = lines[int(m.group(1)) - 1].strip()[:120]
             else:
@@ -316,6 +321,17 @@ def composed_passes(records):
     return out
 
 
+def common_tabs(records):
+    """The Common tab of each record that has one, compiled alone as the site does: a
+    pass runs only when its Common tab compiles too."""
+    out = []
+    for rec in records:
+        text = shadertoy_compose.compose_common_tab(rec)
+        if text is not None:
+            out.append({"id": rec["id"], "tab": "Common", "kind": "common", "text": text})
+    return out
+
+
 def sweep(records, args, only=None):
     """Rows for the passes of `records` (restricted to the (id, tab) set `only`)."""
     times = {}
@@ -324,7 +340,8 @@ def sweep(records, args, only=None):
         passes = [p for p in passes if (p["id"], p["tab"]) in only]
     t0 = time.time()
     log("chromium: %d passes" % len(passes))
-    chromium, version = chromium_verdicts(passes, args.batch)
+    tabs = [t for t in common_tabs(records) if any(p["id"] == t["id"] for p in passes)]
+    chromium, version = chromium_verdicts(passes + tabs, args.batch)
     times["chromium_s"] = round(time.time() - t0, 1)
     t0 = time.time()
     log("shaderport check: %d records" % len(records))

@@ -3,8 +3,9 @@
 // (tools/browser/differential.py), with the verdict headless Chromium gave, recorded by
 // tools/browser/record_verdicts.py into verdicts.json (never edited by hand). The
 // folder a shader sits in (webgl1/, webgl2/) is the context it was compiled in;
-// projects/ holds ShaderToy projects, each pass compiled with Common as the site does
-// ("projects/NAME.json#TAB"), where check rejects a pass for an error in it or in Common.
+// projects/ holds ShaderToy projects: each pass compiled with Common as the site does
+// ("projects/NAME.json#TAB") and the Common tab alone ("...#Common"). The site runs a
+// pass when both compile; check rejects a pass for an error in it or in Common.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -52,7 +53,7 @@ std::map<std::string, std::string> ProjectPassErrors() {
   std::map<std::string, std::string> errors;
   for (const auto& [tab, error] : tabs) {
     const size_t hash = tab.find('#');
-    if (hash == std::string::npos || tab.substr(hash + 1) == "Common") continue;
+    if (hash == std::string::npos) continue;
     const auto common = tabs.find(tab.substr(0, hash) + "#Common");
     errors[tab] = !error.empty() || common == tabs.end() ? error : common->second;
   }
@@ -70,7 +71,12 @@ TEST(BrowserVerdicts, CheckGivesChromiumsVerdict) {
   size_t cases = 0;
   for (const auto& [file, verdict] : verdicts.items()) {
     ASSERT_TRUE(errors.contains(file)) << file << " was not checked";
-    const bool browser = verdict.at("compiled").get<bool>();
+    bool browser = verdict.at("compiled").get<bool>();
+    if (const size_t hash = file.find('#'); hash != std::string::npos) {
+      const std::string common = file.substr(0, hash) + "#Common";
+      if (verdicts.contains(common))
+        browser = browser && verdicts[common].at("compiled").get<bool>();
+    }
     const std::string& error = errors[file];
     EXPECT_EQ(browser, error.empty())
         << file << ": Chromium " << (browser ? "compiles it" : "rejects it: ")
