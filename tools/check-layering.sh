@@ -2,6 +2,8 @@
 # Fails when a layer includes a header from a layer above it.
 # Layers, lowest first (a layer may include itself and anything listed before it,
 # except that toolchain, validate and report are siblings that do not include each other).
+# The harness model (dialects, the ShaderToy site's uniforms) is in model, so toolchain,
+# validate and render read it without reaching up to rule.
 set -euo pipefail
 root=${1:-$(dirname "$0")/..}
 declare -A allowed=(

@@ -45,11 +45,11 @@ class ChannelTypesRule final : public rule::Rule {
   }
 
   void Run(rule::RuleContext& context) const override {
-    const rule::HarnessDialect* dialect = context.Settings().harness;
+    const model::HarnessDialect* dialect = context.Settings().harness;
     if (dialect == nullptr) return;
     const auto channels = harness::ChooseChannels(context, *dialect);
     const auto& tree = context.Tree();
-    for (const rule::ProvidedVariable& variable : dialect->provides) {
+    for (const model::ProvidedVariable& variable : dialect->provides) {
       if (variable.channel < 0 || variable.channel > 3) continue;
       const harness::ChannelChoice& choice = channels[variable.channel];
       const std::string number = std::to_string(variable.channel);

@@ -24,7 +24,7 @@ class GlobalTimeRule final : public rule::Rule {
   }
 
   void Run(rule::RuleContext& context) const override {
-    const rule::HarnessDialect* dialect = context.Settings().harness;
+    const model::HarnessDialect* dialect = context.Settings().harness;
     if (dialect == nullptr || dialect->renames.empty()) return;
     const rule::CodeInterface code = rule::ReadCodeInterface(context.Tree(), context.Model());
     const auto macros = harness::DefinedMacros(context);

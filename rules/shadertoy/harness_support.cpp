@@ -6,9 +6,9 @@
 
 namespace shaderport::rules::harness {
 
-const rule::EntryPoint* DefinedEntryPoint(const rule::HarnessDialect& dialect,
-                                          const rule::CodeInterface& code) {
-  for (const rule::EntryPoint& entry : dialect.entry_points) {
+const model::EntryPoint* DefinedEntryPoint(const model::HarnessDialect& dialect,
+                                           const rule::CodeInterface& code) {
+  for (const model::EntryPoint& entry : dialect.entry_points) {
     if (code.defined_functions.contains(entry.function)) return &entry;
   }
   return nullptr;
@@ -131,16 +131,16 @@ std::array<ChannelUse, 4> ReadChannelUses(const glsl::SyntaxTree& tree,
   return uses;
 }
 
-std::array<std::string, 4> ChannelNames(const rule::HarnessDialect& dialect) {
+std::array<std::string, 4> ChannelNames(const model::HarnessDialect& dialect) {
   std::array<std::string, 4> names;
-  for (const rule::ProvidedVariable& provided : dialect.provides) {
+  for (const model::ProvidedVariable& provided : dialect.provides) {
     if (provided.channel >= 0 && provided.channel < 4) names[provided.channel] = provided.name;
   }
   return names;
 }
 
 std::array<ChannelChoice, 4> ChooseChannels(const rule::RuleContext& context,
-                                            const rule::HarnessDialect& dialect) {
+                                            const model::HarnessDialect& dialect) {
   std::array<ChannelChoice, 4> choices;
   const std::array<ChannelUse, 4> uses =
       ReadChannelUses(context.Tree(), context.Model(), ChannelNames(dialect));
@@ -158,7 +158,7 @@ std::array<ChannelChoice, 4> ChooseChannels(const rule::RuleContext& context,
   return choices;
 }
 
-std::string TypeFor(const rule::ProvidedVariable& variable,
+std::string TypeFor(const model::ProvidedVariable& variable,
                     const std::array<ChannelChoice, 4>& channels) {
   if (variable.channel >= 0 && variable.channel < 4) return channels[variable.channel].type;
   return variable.type;

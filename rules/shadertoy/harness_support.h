@@ -8,15 +8,15 @@
 #include <string>
 #include <string_view>
 
-#include "rule/harness_dialect.h"
+#include "model/harness_dialect.h"
 #include "rule/harness_dialect_detect.h"
 #include "rule/rule_context.h"
 
 namespace shaderport::rules::harness {
 
 // The dialect's entry point the code defines (first in the dialect's order), if any.
-const rule::EntryPoint* DefinedEntryPoint(const rule::HarnessDialect& dialect,
-                                          const rule::CodeInterface& code);
+const model::EntryPoint* DefinedEntryPoint(const model::HarnessDialect& dialect,
+                                           const rule::CodeInterface& code);
 
 // The FunctionDeclaration (with a body) of `name` in this file, if any.
 const glsl::FunctionDeclaration* FindDefinition(const rule::RuleContext& context,
@@ -56,7 +56,7 @@ std::array<ChannelUse, 4> ReadChannelUses(const glsl::SyntaxTree& tree,
                                           const std::array<std::string, 4>& names);
 
 // The names of the dialect's channel variables by channel number ("" where none).
-std::array<std::string, 4> ChannelNames(const rule::HarnessDialect& dialect);
+std::array<std::string, 4> ChannelNames(const model::HarnessDialect& dialect);
 
 // Sampler type of each provided channel (index = ProvidedVariable::channel): from
 // the settings when told, else cube when the code samples it only with 3-component
@@ -67,10 +67,10 @@ struct ChannelChoice {
   ChannelUse use;
 };
 std::array<ChannelChoice, 4> ChooseChannels(const rule::RuleContext& context,
-                                            const rule::HarnessDialect& dialect);
+                                            const model::HarnessDialect& dialect);
 
 // The chosen type for one provided variable (its own type unless it is a channel).
-std::string TypeFor(const rule::ProvidedVariable& variable,
+std::string TypeFor(const model::ProvidedVariable& variable,
                     const std::array<ChannelChoice, 4>& channels);
 
 }  // namespace shaderport::rules::harness

@@ -91,8 +91,8 @@ bool EndIsOpen(const rule::RuleContext& context) {
 
 // The entry point defined as a function-like macro in this file, and where its
 // name is; nullptr when there is none.
-const rule::EntryPoint* MacroEntryPoint(const rule::RuleContext& context,
-                                        const rule::HarnessDialect& dialect, SourceRange& where) {
+const model::EntryPoint* MacroEntryPoint(const rule::RuleContext& context,
+                                         const model::HarnessDialect& dialect, SourceRange& where) {
   const auto& tokens = context.Lexed().tokens;
   for (size_t i = 0; i + 3 < tokens.size(); ++i) {
     if (tokens[i].kind != glsl::TokenKind::kHash || tokens[i + 1].text != "define" ||
@@ -100,7 +100,7 @@ const rule::EntryPoint* MacroEntryPoint(const rule::RuleContext& context,
         tokens[i + 3].begin != tokens[i + 2].end) {  // function-like: "(" right after the name
       continue;
     }
-    for (const rule::EntryPoint& entry : dialect.entry_points) {
+    for (const model::EntryPoint& entry : dialect.entry_points) {
       if (tokens[i + 2].text == entry.function) {
         where = {context.File().Id(), tokens[i + 2].begin, tokens[i + 2].end};
         return &entry;
@@ -153,7 +153,7 @@ class MainWrapperRule final : public rule::Rule {
   }
 
   void Run(rule::RuleContext& context) const override {
-    const rule::HarnessDialect* dialect = context.Settings().harness;
+    const model::HarnessDialect* dialect = context.Settings().harness;
     if (dialect == nullptr || dialect->entry_points.empty()) return;
     if (context.Settings().stage != model::Stage::kFragment) return;
     const rule::CodeInterface code = rule::ReadCodeInterface(context.Tree(), context.Model());
@@ -162,7 +162,7 @@ class MainWrapperRule final : public rule::Rule {
     // An #if left open (or another preprocessor error) may hide what is added in a
     // group that is not compiled: it would be added again every round.
     if (HasErrors(context.Preprocessed().diagnostics)) return;
-    const rule::EntryPoint* entry = harness::DefinedEntryPoint(*dialect, code);
+    const model::EntryPoint* entry = harness::DefinedEntryPoint(*dialect, code);
     SourceRange where;
     if (entry != nullptr) {
       const glsl::FunctionDeclaration* definition =

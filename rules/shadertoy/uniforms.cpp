@@ -37,30 +37,30 @@ class UniformsRule final : public rule::Rule {
   }
 
   void Run(rule::RuleContext& context) const override {
-    const rule::HarnessDialect* dialect = context.Settings().harness;
+    const model::HarnessDialect* dialect = context.Settings().harness;
     if (dialect == nullptr || context.Settings().stage != model::Stage::kFragment) return;
     const std::optional<uint32_t> offset = harness::AfterVersionLines(context);
     if (!offset) return;  // webgl2/version adds the #version first
     const rule::CodeInterface code = rule::ReadCodeInterface(context.Tree(), context.Model());
     const auto channels = harness::ChooseChannels(context, *dialect);
 
-    std::vector<const rule::ProvidedVariable*> provided;
-    for (const rule::ProvidedVariable& variable : dialect->provides) provided.push_back(&variable);
-    if (const rule::EntryPoint* entry = harness::DefinedEntryPoint(*dialect, code)) {
-      for (const rule::ProvidedVariable& variable : entry->provides) provided.push_back(&variable);
+    std::vector<const model::ProvidedVariable*> provided;
+    for (const model::ProvidedVariable& variable : dialect->provides) provided.push_back(&variable);
+    if (const model::EntryPoint* entry = harness::DefinedEntryPoint(*dialect, code)) {
+      for (const model::ProvidedVariable& variable : entry->provides) provided.push_back(&variable);
     }
     std::string text;
     std::string names;
-    for (const rule::ProvidedVariable* variable : provided) {
+    for (const model::ProvidedVariable* variable : provided) {
       // The code's own declaration wins (and a second one would not compile).
       if (code.globals.contains(variable->name) || code.functions.contains(variable->name)) {
         continue;
       }
-      if (dialect->declare == rule::DeclareMode::kUsed &&
+      if (dialect->declare == model::DeclareMode::kUsed &&
           !code.free_identifiers.contains(variable->name)) {
         continue;
       }
-      text += rule::DeclarationOf(*variable, harness::TypeFor(*variable, channels)) + "\n";
+      text += model::DeclarationOf(*variable, harness::TypeFor(*variable, channels)) + "\n";
       names += (names.empty() ? "" : ", ") + variable->name;
     }
     const auto macros = harness::DefinedMacros(context);
@@ -81,7 +81,7 @@ class UniformsRule final : public rule::Rule {
     diagnostic.fixes.push_back(
         FixIt{{context.File().Id(), *offset, *offset}, std::move(text), FixSafety::kSafe});
     // Say why a channel is not a sampler2D (shadertoy/channel-types has the details).
-    for (const rule::ProvidedVariable* variable : provided) {
+    for (const model::ProvidedVariable* variable : provided) {
       if (variable->channel < 0 || code.globals.contains(variable->name)) continue;
       const harness::ChannelChoice& choice = channels[variable->channel];
       if (choice.type == "sampler2D") continue;

@@ -123,9 +123,9 @@ class NonConstantGlobalInitializerRule final : public rule::Rule {
 
   static const glsl::FunctionDeclaration* FindEntry(const rule::RuleContext& context,
                                                     const glsl::TranslationUnit& unit) {
-    const rule::HarnessDialect* harness = context.Settings().harness;
+    const model::HarnessDialect* harness = context.Settings().harness;
     if (harness != nullptr) {
-      for (const rule::EntryPoint& entry : harness->entry_points) {
+      for (const model::EntryPoint& entry : harness->entry_points) {
         if (const auto* f = FindDefinition(unit, entry.function)) return f;
       }
     }

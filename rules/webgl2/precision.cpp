@@ -88,7 +88,7 @@ class PrecisionRule final : public rule::Rule {
     }
     // shadertoy.com compiles every pass with `precision highp int;`: without it
     // int arithmetic would run at mediump in the port and change the picture.
-    const rule::HarnessDialect* harness = context.Settings().harness;
+    const model::HarnessDialect* harness = context.Settings().harness;
     if (context.Settings().stage == model::Stage::kFragment && harness != nullptr &&
         harness->NameMatches("shadertoy") && !has_default.contains("int")) {
       missing.push_back("int");

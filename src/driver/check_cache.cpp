@@ -31,10 +31,10 @@ CacheKey RunKey(const CheckOptions& options) {
         .Add(uint64_t{options.channels[i].has_value() ? 1u : 0u});
   }
   // A --dialect harness: what of it decides how a file is composed.
-  if (const rule::HarnessDialect* harness = options.harness) {
+  if (const model::HarnessDialect* harness = options.harness) {
     hasher.Add(harness->name).Add(harness->prelude).Add(static_cast<uint64_t>(harness->declare));
     for (const std::string& define : harness->defines) hasher.Add(define);
-    for (const rule::ProvidedVariable& provided : harness->provides) {
+    for (const model::ProvidedVariable& provided : harness->provides) {
       hasher.Add(provided.name).Add(provided.type).Add(static_cast<uint64_t>(provided.storage));
       hasher.Add(provided.precision).Add(static_cast<uint64_t>(provided.channel + 1));
     }

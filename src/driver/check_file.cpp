@@ -280,9 +280,12 @@ FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceMana
   for (Diagnostic& diagnostic : result.diagnostics)
     report.diagnostics.push_back(std::move(diagnostic));
   if (common != nullptr && job.common_checked_separately) {
-    // Common is an input of its own: its findings are reported once, there.
-    std::erase_if(report.diagnostics,
-                  [&](const Diagnostic& d) { return d.range.file == common->Id(); });
+    // Common is an input of its own: its findings are reported once, there. The site
+    // compiles the Common tab without a pass's wrapper, so what a macro of Common does
+    // to that wrapper only the passes can tell.
+    std::erase_if(report.diagnostics, [&](const Diagnostic& d) {
+      return d.range.file == common->Id() && d.rule_id != "shadertoy/macro-rewrites-wrapper";
+    });
   }
   // What `shaderport fix` would repair, so that every format can say so.
   if (!report.diagnostics.empty() && FixOffersAnEdit(file, front, decision)) {

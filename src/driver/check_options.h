@@ -15,7 +15,7 @@
 #include "driver/read_input.h"
 #include "driver/shard.h"
 #include "model/channel_kind.h"
-#include "rule/harness_dialect.h"
+#include "model/harness_dialect.h"
 #include "validate/shadertoy_contract.h"
 
 namespace shaderport::driver {
@@ -33,7 +33,7 @@ struct CheckOptions {
   model::GivenChannelKinds channels{};          // --channel N=2d|cube|3d; nullopt: inferred
   // --dialect NAME|FILE.toml naming a harness dialect (rules/dialects/): the code is
   // checked as that host composes it.
-  const rule::HarnessDialect* harness = nullptr;
+  const model::HarnessDialect* harness = nullptr;
   std::optional<std::filesystem::path> config;  // --config: instead of searching upward
   bool use_config = true;                       // --no-config
   // The config's include/exclude globs apply to files named on the command line

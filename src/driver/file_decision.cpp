@@ -3,8 +3,8 @@
 #include <string_view>
 
 #include "driver/front_end.h"
+#include "model/shipped_dialects.h"
 #include "rule/harness_dialect_detect.h"
-#include "rules/shadertoy/builtin_dialects.h"
 #include "rules/shadertoy/harness_support.h"
 #include "validate/shadertoy_contract.h"
 
@@ -58,7 +58,7 @@ void DecideTarget(FileDecision& decision, const glsl::LexedFile& lexed,
 
 // What a harness other than ShaderToy puts before this code: its prelude (without
 // its #version when the code has one), defines and the variables the code uses.
-std::string HarnessHeader(const rule::HarnessDialect& harness, const rule::CodeInterface& code,
+std::string HarnessHeader(const model::HarnessDialect& harness, const rule::CodeInterface& code,
                           bool code_has_version, int version) {
   std::string header;
   if (!harness.prelude.empty()) {
@@ -76,16 +76,16 @@ std::string HarnessHeader(const rule::HarnessDialect& harness, const rule::CodeI
     }
   }
   for (const std::string& define : harness.defines) header += "#define " + define + "\n";
-  for (const rule::ProvidedVariable& provided : harness.provides) {
+  for (const model::ProvidedVariable& provided : harness.provides) {
     const bool used = code.free_identifiers.contains(provided.name) &&
                       !code.globals.contains(provided.name) &&
                       !code.functions.contains(provided.name);
-    if (harness.declare != rule::DeclareMode::kAll && !used) continue;
-    std::string declaration = rule::DeclarationOf(provided);
+    if (harness.declare != model::DeclareMode::kAll && !used) continue;
+    std::string declaration = model::DeclarationOf(provided);
     if (version < 300) {
       // GLSL ES 1.00 has no file-scope in/out: an input is a varying, an output is gl_FragColor.
-      if (provided.storage == rule::ProvidedStorage::kOutput) continue;
-      if (provided.storage == rule::ProvidedStorage::kInput)
+      if (provided.storage == model::ProvidedStorage::kOutput) continue;
+      if (provided.storage == model::ProvidedStorage::kInput)
         declaration = "varying" + declaration.substr(2);
     }
     header += declaration + "\n";
@@ -127,7 +127,7 @@ FileDecision DecideFromTokens(const glsl::LexedFile& lexed, const std::filesyste
     decision.harness_version = HasVersionDirective(lexed) ? 0 : given.harness->PreludeVersion();
     decision.reasons.push_back({"harness", given.harness->name, "given by " + given.dialect_from});
   } else if (decision.IsShaderToy()) {
-    decision.harness = rules::FindBuiltinDialect("shadertoy");
+    decision.harness = model::FindBuiltinDialect("shadertoy");
     decision.reasons.push_back({"harness", "shadertoy", "ShaderToy code"});
   }
   for (size_t i = 0; i < decision.channels.size(); ++i) {
@@ -149,7 +149,7 @@ bool DecideFromTree(FileDecision& decision, const glsl::LexedFile& lexed,
                                        ? rule::ReadCodeInterface(tree, model)
                                        : rule::CodeInterface{};
   if (detect) {
-    if (auto match = rule::DetectDialect(rules::BuiltinDialects(), code)) {
+    if (auto match = rule::DetectDialect(model::BuiltinDialects(), code)) {
       if (!match->dialect->NameMatches("shadertoy")) {
         decision.harness = match->dialect;
         decision.harness_version = match->dialect->PreludeVersion();

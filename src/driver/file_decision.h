@@ -15,8 +15,8 @@
 #include "glsl/lex/lexer.h"
 #include "glsl/sema/semantic_model.h"
 #include "glsl/syntax/ast.h"
+#include "model/harness_dialect.h"
 #include "report/check_report.h"
-#include "rule/harness_dialect.h"
 #include "validate/glslang_validator.h"
 #include "validate/shadertoy_contract.h"
 
@@ -28,7 +28,7 @@ struct DecisionGiven {
   std::optional<model::Stage> stage;
   std::optional<model::PassKind> pass;
   std::optional<model::Target> target;
-  const rule::HarnessDialect* harness = nullptr;  // --dialect NAME|FILE.toml naming a harness
+  const model::HarnessDialect* harness = nullptr;  // --dialect NAME|FILE.toml naming a harness
   std::array<std::optional<model::ChannelKind>, 4> channels{};
   // Where each given part came from, for people: "--dialect", "config ./.shaderport.toml".
   std::string dialect_from = "--dialect";
@@ -45,7 +45,7 @@ struct FileDecision {
   model::Target target = model::Target::kWebGL2;
   // The host that completes the code: ShaderToy's for ShaderToy code, a detected or
   // given harness dialect (rules/dialects/) for code that uses its names, else none.
-  const rule::HarnessDialect* harness = nullptr;
+  const model::HarnessDialect* harness = nullptr;
   model::ChannelKinds channels{};  // iChannel0..3 (ShaderToy code)
   // A harness other than ShaderToy: the lines it puts before this code (its
   // prelude, defines and the declarations of what the code uses); "" when none.

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "rule/harness_dialect.h"
+#include "rule/harness_dialect_file.h"
 #include "source/source_manager.h"
 
 namespace shaderport::driver {

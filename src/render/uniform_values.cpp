@@ -6,6 +6,8 @@
 #include <cmath>
 #include <string_view>
 
+#include "model/shipped_dialects.h"
+
 namespace shaderport::render {
 namespace {
 
@@ -119,59 +121,116 @@ void SetUints(const GlFunctions& gl, const UniformInfo& u, int components) {
   if (components == 4) gl.Uniform4uiv(u.location, u.size, data.data());
 }
 
-// ShaderToy's uniforms; false when `u` is not one of them.
-bool SetShaderToyUniform(const GlFunctions& gl, const UniformInfo& u, const RenderRequest& request,
-                         int frame_index, const std::array<std::array<float, 3>, 4>& channel_res) {
-  const ShaderToyInputs& in = request.inputs;
-  const float delta = in.frame_rate > 0 ? 1.0f / in.frame_rate : 0.0f;
-  const float time = in.time + delta * static_cast<float>(frame_index);
-  const float w = static_cast<float>(request.width);
-  const float h = static_cast<float>(request.height);
-  const std::string& n = u.name;
-  if (n == "iResolution") {
-    const float v[3] = {w, h, 1.0f};
-    gl.Uniform3fv(u.location, 1, v);
-  } else if (n == "iTime" || n == "iGlobalTime" || n == "iTimeOffset") {
-    gl.Uniform1fv(u.location, 1, &time);
-  } else if (n == "iTimeDelta") {
-    gl.Uniform1fv(u.location, 1, &delta);
-  } else if (n == "iFrameRate") {
-    gl.Uniform1fv(u.location, 1, &in.frame_rate);
-  } else if (n == "iFrame") {
-    const GLint frame = in.frame + frame_index;
-    gl.Uniform1iv(u.location, 1, &frame);
-  } else if (n == "iMouse") {
-    gl.Uniform4fv(u.location, 1, in.mouse.data());
-  } else if (n == "iDate") {
-    gl.Uniform4fv(u.location, 1, in.date.data());
-  } else if (n == "iSampleRate") {
-    const float rate = 44100.0f;
-    gl.Uniform1fv(u.location, 1, &rate);
-  } else if (n == "iSampleOffset") {
-    const GLint zero = 0;
-    gl.Uniform1iv(u.location, 1, &zero);
-  } else if (n == "iChannelTime") {
-    const float times[4] = {time, time, time, time};
-    gl.Uniform1fv(u.location, std::min(u.size, 4), times);
-  } else if (n == "iChannelResolution") {
-    float res[12];
-    for (size_t i = 0; i < 4; ++i) std::copy_n(channel_res[i].data(), 3, &res[i * 3]);
-    gl.Uniform3fv(u.location, std::min(u.size, 4), res);
-  } else if (n == "unViewport") {
-    const float v[4] = {0.0f, 0.0f, w, h};
-    gl.Uniform4fv(u.location, 1, v);
-  } else if (n == "unCorners") {
-    // The +Z face seen from the origin: bottom-left, bottom-right, top-right,
-    // top-left, then the ray origin (the order the site's main() mixes them in).
-    const float corners[15] = {-1, -1, 1, 1, -1, 1, 1, 1, 1, -1, 1, 1, 0, 0, 0};
-    gl.Uniform3fv(u.location, std::min(u.size, 5), corners);
-  } else {
-    return false;
+// What a ShaderToy uniform is fed for one frame.
+struct SiteValues {
+  const RenderRequest& request;
+  float time = 0.0f;
+  float delta = 0.0f;
+  int frame = 0;
+  const std::array<std::array<float, 3>, 4>& channel_res;
+};
+
+using Feed = void (*)(const GlFunctions& gl, const UniformInfo& u, const SiteValues& v);
+
+// One entry per uniform of rules/dialects/shadertoy.toml (the site's and its entry
+// points'), by the model's name; a test holds the two to the same names.
+struct Feeder {
+  std::string_view name;
+  Feed feed;
+};
+
+constexpr Feeder kFeeders[] = {
+    {"iResolution",
+     [](const GlFunctions& gl, const UniformInfo& u, const SiteValues& v) {
+       const float r[3] = {static_cast<float>(v.request.width),
+                           static_cast<float>(v.request.height), 1.0f};
+       gl.Uniform3fv(u.location, 1, r);
+     }},
+    {"iTime", [](const GlFunctions& gl, const UniformInfo& u,
+                 const SiteValues& v) { gl.Uniform1fv(u.location, 1, &v.time); }},
+    {"iTimeOffset", [](const GlFunctions& gl, const UniformInfo& u,
+                       const SiteValues& v) { gl.Uniform1fv(u.location, 1, &v.time); }},
+    {"iTimeDelta", [](const GlFunctions& gl, const UniformInfo& u,
+                      const SiteValues& v) { gl.Uniform1fv(u.location, 1, &v.delta); }},
+    {"iFrameRate",
+     [](const GlFunctions& gl, const UniformInfo& u, const SiteValues& v) {
+       gl.Uniform1fv(u.location, 1, &v.request.inputs.frame_rate);
+     }},
+    {"iFrame", [](const GlFunctions& gl, const UniformInfo& u,
+                  const SiteValues& v) { gl.Uniform1iv(u.location, 1, &v.frame); }},
+    {"iMouse",
+     [](const GlFunctions& gl, const UniformInfo& u, const SiteValues& v) {
+       gl.Uniform4fv(u.location, 1, v.request.inputs.mouse.data());
+     }},
+    {"iDate",
+     [](const GlFunctions& gl, const UniformInfo& u, const SiteValues& v) {
+       gl.Uniform4fv(u.location, 1, v.request.inputs.date.data());
+     }},
+    {"iSampleRate",
+     [](const GlFunctions& gl, const UniformInfo& u, const SiteValues&) {
+       const float rate = 44100.0f;
+       gl.Uniform1fv(u.location, 1, &rate);
+     }},
+    {"iSampleOffset",
+     [](const GlFunctions& gl, const UniformInfo& u, const SiteValues&) {
+       const GLint zero = 0;
+       gl.Uniform1iv(u.location, 1, &zero);
+     }},
+    {"iChannelTime",
+     [](const GlFunctions& gl, const UniformInfo& u, const SiteValues& v) {
+       const float times[4] = {v.time, v.time, v.time, v.time};
+       gl.Uniform1fv(u.location, std::min(u.size, 4), times);
+     }},
+    {"iChannelResolution",
+     [](const GlFunctions& gl, const UniformInfo& u, const SiteValues& v) {
+       float res[12];
+       for (size_t i = 0; i < 4; ++i) std::copy_n(v.channel_res[i].data(), 3, &res[i * 3]);
+       gl.Uniform3fv(u.location, std::min(u.size, 4), res);
+     }},
+    {"unViewport",
+     [](const GlFunctions& gl, const UniformInfo& u, const SiteValues& v) {
+       const float r[4] = {0.0f, 0.0f, static_cast<float>(v.request.width),
+                           static_cast<float>(v.request.height)};
+       gl.Uniform4fv(u.location, 1, r);
+     }},
+    {"unCorners",
+     [](const GlFunctions& gl, const UniformInfo& u, const SiteValues&) {
+       // The +Z face seen from the origin: bottom-left, bottom-right, top-right,
+       // top-left, then the ray origin (the order the site's main() mixes them in).
+       const float corners[15] = {-1, -1, 1, 1, -1, 1, 1, 1, 1, -1, 1, 1, 0, 0, 0};
+       gl.Uniform3fv(u.location, std::min(u.size, 5), corners);
+     }},
+};
+
+const Feeder* FindFeeder(std::string_view name) {
+  for (const Feeder& feeder : kFeeders) {
+    if (feeder.name == name) return &feeder;
   }
+  return nullptr;
+}
+
+// ShaderToy's uniforms by the model's names (an old name such as iGlobalTime is fed
+// as the name the site renamed it to); false when `u` is not one of them.
+bool SetShaderToyUniform(const GlFunctions& gl, const UniformInfo& u, const SiteValues& values) {
+  const model::HarnessDialect& site = model::ShaderToyDialect();
+  std::string_view name = u.name;
+  for (const auto& [old_name, new_name] : site.renames) {
+    if (old_name == name) name = new_name;
+  }
+  if (site.FindProvided(name) == nullptr) return false;
+  const Feeder* feeder = FindFeeder(name);
+  if (feeder == nullptr) return false;  // a channel declared as a non-sampler: generic values
+  feeder->feed(gl, u, values);
   return true;
 }
 
 }  // namespace
+
+std::vector<std::string_view> FedShaderToyUniforms() {
+  std::vector<std::string_view> names;
+  for (const Feeder& feeder : kFeeders) names.push_back(feeder.name);
+  return names;
+}
 
 std::vector<float> PerspectiveMatrix(float aspect) {
   const float fov = 60.0f * 3.14159265f / 180.0f;
@@ -239,11 +298,13 @@ void SetUniforms(const GlFunctions& gl, GLuint program, const RenderRequest& req
   const float aspect = static_cast<float>(request.width) / static_cast<float>(request.height);
   const float delta = request.inputs.frame_rate > 0 ? 1.0f / request.inputs.frame_rate : 0.0f;
   const float time = request.inputs.time + delta * static_cast<float>(frame_index);
+  const SiteValues site_values{request, time, delta, request.inputs.frame + frame_index,
+                               channel_res};
   for (const UniformInfo& u : uniforms) {
     if (IsSampler(u.type)) continue;
     // Uniforms the render's own transforms declare (an opaque zero) keep GL's 0.
     if (u.name.starts_with("shaderport_")) continue;
-    if (SetShaderToyUniform(gl, u, request, frame_index, channel_res)) continue;
+    if (SetShaderToyUniform(gl, u, site_values)) continue;
     switch (u.type) {
       case GL_FLOAT:
         SetGenericFloats(gl, u, 1, request, time);

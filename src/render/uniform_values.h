@@ -5,6 +5,7 @@
 
 #include <array>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "render/channel_units.h"
@@ -22,6 +23,10 @@ inline constexpr int kMaxTextureUnits = 16;
 void SetUniforms(const GlFunctions& gl, GLuint program, const RenderRequest& request,
                  int frame_index, ProgramTextures& textures, const PassChannels& channels,
                  const ChannelOverrides& overrides = {});
+
+// The ShaderToy uniforms render knows how to feed, by the names of
+// rules/dialects/shadertoy.toml (a test holds them to exactly the TOML's uniforms).
+std::vector<std::string_view> FedShaderToyUniforms();
 
 // Column-major 4x4 matrices, exposed for tests.
 std::vector<float> PerspectiveMatrix(float aspect);

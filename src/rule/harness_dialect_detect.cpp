@@ -55,14 +55,14 @@ CodeInterface ReadCodeInterface(const glsl::SyntaxTree& tree, const glsl::Semant
   return code;
 }
 
-std::optional<DialectMatch> DetectDialect(std::span<const HarnessDialect> candidates,
+std::optional<DialectMatch> DetectDialect(std::span<const model::HarnessDialect> candidates,
                                           const CodeInterface& code) {
   std::optional<DialectMatch> best;
   const bool has_main = code.defined_functions.contains("main");
-  for (const HarnessDialect& dialect : candidates) {
+  for (const model::HarnessDialect& dialect : candidates) {
     DialectMatch match{&dialect, 0, {}};
     bool entry_found = false;
-    for (const EntryPoint& entry : dialect.entry_points) {
+    for (const model::EntryPoint& entry : dialect.entry_points) {
       if (!entry_found && !has_main && code.defined_functions.contains(entry.function)) {
         match.score += kEntryPointScore;
         match.evidence.push_back("defines " + entry.function + "() and no main()");
@@ -80,7 +80,7 @@ std::optional<DialectMatch> DetectDialect(std::span<const HarnessDialect> candid
         match.evidence.push_back("declares " + name);
       }
     };
-    for (const ProvidedVariable& provided : dialect.provides) weigh(provided.name);
+    for (const model::ProvidedVariable& provided : dialect.provides) weigh(provided.name);
     for (const auto& [from, to] : dialect.renames) weigh(from);
     for (const std::string& hint : dialect.hints) {
       if (!dialect.FindEntryPoint(hint)) weigh(hint);
@@ -91,7 +91,7 @@ std::optional<DialectMatch> DetectDialect(std::span<const HarnessDialect> candid
   return best;
 }
 
-std::optional<DialectMatch> DetectDialectInText(std::span<const HarnessDialect> candidates,
+std::optional<DialectMatch> DetectDialectInText(std::span<const model::HarnessDialect> candidates,
                                                 std::string_view text) {
   const SourceFile file(0, "<detect>", std::string(text));
   const SourceFile* files[] = {&file};

@@ -12,7 +12,7 @@
 
 #include "glsl/sema/semantic_model.h"
 #include "glsl/syntax/ast.h"
-#include "rule/harness_dialect.h"
+#include "model/harness_dialect.h"
 
 namespace shaderport::rule {
 
@@ -27,7 +27,7 @@ struct CodeInterface {
 CodeInterface ReadCodeInterface(const glsl::SyntaxTree& tree, const glsl::SemanticModel& model);
 
 struct DialectMatch {
-  const HarnessDialect* dialect = nullptr;
+  const model::HarnessDialect* dialect = nullptr;
   int score = 0;
   std::vector<std::string> evidence;  // "defines mainImage", "uses uv undeclared", ...
 };
@@ -35,11 +35,11 @@ struct DialectMatch {
 // The candidate the code fits best, if any fits clearly: it defines the dialect's
 // entry point without main(), or uses its provided names without declaring them.
 // Earlier candidates win ties.
-std::optional<DialectMatch> DetectDialect(std::span<const HarnessDialect> candidates,
+std::optional<DialectMatch> DetectDialect(std::span<const model::HarnessDialect> candidates,
                                           const CodeInterface& code);
 
 // Same, running the front end (lexer, preprocessor, parser, semantic model) on `text`.
-std::optional<DialectMatch> DetectDialectInText(std::span<const HarnessDialect> candidates,
+std::optional<DialectMatch> DetectDialectInText(std::span<const model::HarnessDialect> candidates,
                                                 std::string_view text);
 
 }  // namespace shaderport::rule

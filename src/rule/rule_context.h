@@ -12,9 +12,9 @@
 #include "glsl/sema/semantic_model.h"
 #include "glsl/syntax/ast.h"
 #include "model/channel_kind.h"
+#include "model/harness_dialect.h"
 #include "model/stage.h"
 #include "model/target.h"
-#include "rule/harness_dialect.h"
 #include "rule/macro_fixes.h"
 #include "source/source_file.h"
 
@@ -30,7 +30,7 @@ struct PortSettings {
   model::Stage stage = model::Stage::kFragment;
   // The harness the code was written for: ShaderToy, glslsandbox, ..., or none
   // (plain WebGL1/WebGL2 code).
-  const HarnessDialect* harness = nullptr;
+  const model::HarnessDialect* harness = nullptr;
   int source_version = 100;  // the code's own GLSL ES version: 100 or 300
   // Sampler kind chosen for each ShaderToy channel; nullopt lets the ShaderToy rule
   // infer it from how the code samples the channel.

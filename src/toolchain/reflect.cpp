@@ -1,13 +1,13 @@
 #include "toolchain/reflect.h"
 
 #include <algorithm>
-#include <array>
 #include <exception>
 #include <nlohmann/json.hpp>
 #include <spirv_cross.hpp>
 #include <string_view>
 #include <unordered_set>
 
+#include "model/shipped_dialects.h"
 #include "toolchain/sampler_usage.h"
 
 namespace shaderport::toolchain {
@@ -228,20 +228,19 @@ ordered_json Samplers(const Context& context,
   return list;
 }
 
-// The uniforms shadertoy.com declares (peers-and-users.md §1c), other than the channels.
-constexpr std::array<std::string_view, 10> kShaderToyUniforms = {
-    "iResolution",        "iTime",  "iTimeDelta", "iFrameRate", "iFrame", "iChannelTime",
-    "iChannelResolution", "iMouse", "iDate",      "iSampleRate"};
-
+// The site's uniforms and channels, as rules/dialects/shadertoy.toml lists them.
 ordered_json ShaderToy(const ordered_json& uniforms, const ordered_json& samplers) {
   ordered_json channels = ordered_json::array();
-  for (int index = 0; index < 4; ++index) {
-    const std::string name = "iChannel" + std::to_string(index);
-    ordered_json channel = {{"channel", index},  {"name", name},
-                            {"declared", false}, {"used", false},
-                            {"kind", nullptr},   {"functions", ordered_json::array()}};
+  for (const model::ProvidedVariable& variable : model::ShaderToyDialect().provides) {
+    if (variable.channel < 0) continue;
+    ordered_json channel = {{"channel", variable.channel},
+                            {"name", variable.name},
+                            {"declared", false},
+                            {"used", false},
+                            {"kind", nullptr},
+                            {"functions", ordered_json::array()}};
     for (const ordered_json& sampler : samplers) {
-      if (sampler["name"] != name) continue;
+      if (sampler["name"] != variable.name) continue;
       channel["declared"] = true;
       channel["used"] = sampler["used"];
       channel["kind"] = sampler["kind"];
@@ -249,10 +248,12 @@ ordered_json ShaderToy(const ordered_json& uniforms, const ordered_json& sampler
     }
     channels.push_back(std::move(channel));
   }
+  // In the order the site declares them.
   ordered_json used = ordered_json::array();
-  for (const std::string_view known : kShaderToyUniforms) {
+  for (const model::ProvidedVariable* known : model::ShaderToySiteUniforms()) {
     for (const ordered_json& uniform : uniforms) {
-      if (uniform["name"] == known && uniform["used"].get<bool>()) used.push_back(known);
+      if (uniform["name"] == known->name && uniform["used"].get<bool>())
+        used.push_back(known->name);
     }
   }
   return {{"channels", std::move(channels)}, {"uniformsUsed", std::move(used)}};

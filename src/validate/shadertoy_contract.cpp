@@ -15,24 +15,16 @@
 
 #include <algorithm>
 
+#include "model/shipped_dialects.h"
+
 namespace shaderport::validate {
 namespace {
 
-constexpr std::string_view kUniforms =
-    "uniform vec3 iResolution;\n"
-    "uniform float iTime;\n"
-    "uniform float iChannelTime[4];\n"
-    "uniform vec4 iMouse;\n"
-    "uniform vec4 iDate;\n"
-    "uniform float iSampleRate;\n"
-    "uniform vec3 iChannelResolution[4];\n"
-    "uniform int iFrame;\n"
-    "uniform float iTimeDelta;\n"
-    "uniform float iFrameRate;\n";
-
-constexpr std::string_view kCommonTabUniforms =
-    "uniform vec4 iDate;\n"
-    "uniform float iSampleRate;\n";
+// `uniform vec3 iResolution;`: the site leaves precision to the header's defaults.
+std::string SiteDeclaration(const model::ProvidedVariable& variable,
+                            std::string_view type_override = {}) {
+  return model::DeclarationOf(variable, type_override, model::PrecisionSpelling::kOmitted) + "\n";
+}
 
 }  // namespace
 
@@ -59,23 +51,34 @@ std::string ShaderToyHeader(model::PassKind type, const model::ChannelKinds& cha
       "precision highp int;\n"
       "precision mediump sampler3D;\n"
       "#endif\n";
+  const model::HarnessDialect& site = model::ShaderToyDialect();
   if (type == model::PassKind::kCommon) {
-    // The site compiles the Common tab on its own behind a shorter header: only iDate
-    // and iSampleRate, no channels, no HW_PERFORMANCE. Shaders test for it with
-    // `#ifndef HW_PERFORMANCE` or `#if __LINE__ < 17` and declare what they need.
-    return header + std::string(kCommonTabUniforms) + "out vec4 shadertoy_out_color;\n";
+    // The site compiles the Common tab on its own behind a shorter header: only the
+    // uniforms the TOML marks in_common_tab, no channels, no HW_PERFORMANCE. Shaders
+    // test for it (`#ifndef HW_PERFORMANCE`, `#if __LINE__ < 17`) and declare what
+    // they need.
+    for (const model::ProvidedVariable* uniform : model::ShaderToySiteUniforms()) {
+      if (uniform->in_common_tab) header += SiteDeclaration(*uniform);
+    }
+    return header + "out vec4 shadertoy_out_color;\n";
   }
-  header += kUniforms;
-  for (size_t i = 0; i < channels.size(); ++i) {
-    header += "uniform " + std::string(model::SamplerTypeName(channels[i])) + " iChannel" +
-              std::to_string(i) + ";\n";
+  // The uniforms, then the channels with the sampler type each is bound as, then
+  // what the pass's entry point adds: all as rules/dialects/shadertoy.toml lists them.
+  for (const model::ProvidedVariable* uniform : model::ShaderToySiteUniforms()) {
+    header += SiteDeclaration(*uniform);
   }
-  if (type == model::PassKind::kCube)
-    header += "uniform vec4 unViewport;\nuniform vec3 unCorners[5];\n";
-  if (type == model::PassKind::kSound)
-    header += "uniform float iTimeOffset;\nuniform int iSampleOffset;\n";
+  for (const model::ProvidedVariable& variable : site.provides) {
+    if (variable.channel < 0) continue;
+    header += SiteDeclaration(
+        variable, model::SamplerTypeName(channels[static_cast<size_t>(variable.channel)]));
+  }
+  if (const model::EntryPoint* entry = site.FindEntryPoint(EntryPointName(type))) {
+    for (const model::ProvidedVariable& variable : entry->provides) {
+      header += SiteDeclaration(variable);
+    }
+  }
   header += "out vec4 shadertoy_out_color;\n";
-  header += "#define HW_PERFORMANCE 1\n";
+  for (const std::string& define : site.defines) header += "#define " + define + "\n";
   return header;
 }
 

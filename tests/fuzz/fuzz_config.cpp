@@ -1,5 +1,5 @@
 // libFuzzer target for the two TOML readers a user's files reach: .shaderport.toml
-// (driver/config) and a harness dialect (`--dialect FILE`, rule/harness_dialect).
+// (driver/config) and a harness dialect (`--dialect FILE`, model/harness_dialect).
 // The same bytes go to both. No crash, no exception, diagnostics inside the file
 // and no more of them than the text has lines (plus one), and the queries
 // (rule levels, include/exclude globs, per-file settings) stay bounded.
@@ -8,8 +8,9 @@
 
 #include "driver/config/config.h"
 #include "fuzz_check.h"
-#include "rule/harness_dialect.h"
+#include "model/harness_dialect.h"
 #include "rule/harness_dialect_detect.h"
+#include "rule/harness_dialect_file.h"
 
 namespace {
 
@@ -49,8 +50,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   CheckDiagnostics(dialect_file, dialect.diagnostics);
   Require(dialect.diagnostics.size() <= size + 1, "dialect diagnostics bounded");
   if (dialect.dialect) {
-    for (const rule::ProvidedVariable& v : dialect.dialect->provides) (void)rule::DeclarationOf(v);
-    const rule::HarnessDialect candidates[] = {*dialect.dialect};
+    for (const model::ProvidedVariable& v : dialect.dialect->provides)
+      (void)model::DeclarationOf(v);
+    const model::HarnessDialect candidates[] = {*dialect.dialect};
     (void)rule::DetectDialectInText(candidates,
                                     "void mainImage(out vec4 c, in vec2 p) { c = vec4(iTime); }");
   }

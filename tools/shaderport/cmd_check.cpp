@@ -89,7 +89,7 @@ bool UseColor(const std::string& mode) {
 int RunCheckCommand(const CheckArgs& args) {
   driver::CheckOptions options;
   SourceManager dialect_sources;  // a --dialect FILE.toml, kept for its diagnostics
-  std::optional<rule::HarnessDialect> harness;
+  std::optional<model::HarnessDialect> harness;
   for (const std::string& path : args.paths) options.paths.emplace_back(path);
   const auto format = ParseOutputFormat(args.format);
   if (!format) return UsageError(UnknownName("--format", args.format, kFormatNames));

@@ -80,7 +80,7 @@ int RunExplainFile(const ExplainArgs& args) {
   driver::CheckOptions options;
   options.explain_only = true;
   SourceManager dialect_sources;  // a --dialect FILE.toml, kept for its diagnostics
-  std::optional<rule::HarnessDialect> harness;
+  std::optional<model::HarnessDialect> harness;
   if (!ResolveKindOptions({args.dialect, args.stage, args.target}, dialect_sources, options,
                           harness)) {
     return kExitUsage;

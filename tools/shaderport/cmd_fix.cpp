@@ -98,7 +98,7 @@ int RunFix(const FixArgs& args) {
   SourceManager sources;
   driver::PortOptions options;
   options.mode = rule::PortMode::kFix;
-  std::optional<rule::HarnessDialect> harness;
+  std::optional<model::HarnessDialect> harness;
   if (!ApplyPortArguments(args.port, options, sources, harness)) return kExitUsage;
   if (!args.stdin_filename.empty() && !args.stdin_input) {
     return UsageError("--stdin-filename needs --stdin");

@@ -24,11 +24,11 @@
 #include "driver/port/port_report.h"
 #include "driver/project/folder_project.h"
 #include "driver/read_input.h"
+#include "model/harness_dialect.h"
 #include "option_names.h"
 #include "port_arguments.h"
 #include "port_projects.h"
 #include "progress_line.h"
-#include "rule/harness_dialect.h"
 #include "toolchain/emit.h"
 
 namespace shaderport::cli {
@@ -65,7 +65,7 @@ int RunPort(const PortArgs& args) {
   SourceManager sources;
   driver::PortOptions options;
   options.mode = rule::PortMode::kPort;
-  std::optional<rule::HarnessDialect> harness;
+  std::optional<model::HarnessDialect> harness;
   if (!ApplyPortArguments({args.dialect, args.channels, args.stage}, options, sources, harness)) {
     return kExitUsage;
   }

@@ -49,7 +49,7 @@ std::vector<std::string> DialectNames() {
 
 bool ResolveDialectOption(const std::string& value, SourceManager& sources,
                           std::optional<driver::Dialect>& dialect,
-                          std::optional<rule::HarnessDialect>& harness) {
+                          std::optional<model::HarnessDialect>& harness) {
   if (value.empty()) return true;
   if (auto named = driver::ParseDialect(value)) {
     dialect = named;
@@ -80,7 +80,7 @@ bool ResolveDialectOption(const std::string& value, SourceManager& sources,
 }
 
 bool ApplyPortArguments(const PortArguments& arguments, driver::PortOptions& options,
-                        SourceManager& sources, std::optional<rule::HarnessDialect>& harness) {
+                        SourceManager& sources, std::optional<model::HarnessDialect>& harness) {
   if (!ResolveDialectOption(arguments.dialect, sources, options.dialect, harness)) return false;
   if (harness) options.harness = &*harness;
   for (const std::string& spec : arguments.channels) {
@@ -152,7 +152,7 @@ std::optional<std::vector<driver::InputFile>> SelectInputFiles(const InputArgume
 
 bool ResolveKindOptions(const KindArguments& arguments, SourceManager& sources,
                         driver::CheckOptions& options,
-                        std::optional<rule::HarnessDialect>& harness) {
+                        std::optional<model::HarnessDialect>& harness) {
   if (!ResolveDialectOption(arguments.dialect, sources, options.dialect, harness)) return false;
   if (harness && !options.dialect) options.harness = &*harness;
   if (!arguments.stage.empty()) {

@@ -13,7 +13,7 @@
 #include "driver/input_files.h"
 #include "driver/port/port_file.h"
 #include "model/channel_kind.h"
-#include "rule/harness_dialect.h"
+#include "model/harness_dialect.h"
 #include "source/source_manager.h"
 #include "validate/shadertoy_contract.h"
 
@@ -40,7 +40,7 @@ bool ParseChannel(std::string_view spec, model::GivenChannelKinds& channels);
 // returns false on a bad value (a usage error).
 bool ResolveDialectOption(const std::string& value, SourceManager& sources,
                           std::optional<driver::Dialect>& dialect,
-                          std::optional<rule::HarnessDialect>& harness);
+                          std::optional<model::HarnessDialect>& harness);
 
 // check's and explain-file's --dialect, --stage and --target into `options` (a loaded
 // harness dialect lives in `harness`). Prints why and returns false on a bad value.
@@ -51,12 +51,12 @@ struct KindArguments {
 };
 bool ResolveKindOptions(const KindArguments& arguments, SourceManager& sources,
                         driver::CheckOptions& options,
-                        std::optional<rule::HarnessDialect>& harness);
+                        std::optional<model::HarnessDialect>& harness);
 
 // Fills `options`; a loaded dialect lives in `harness`. Prints why and returns
 // false on a bad value (a usage error).
 bool ApplyPortArguments(const PortArguments& arguments, driver::PortOptions& options,
-                        SourceManager& sources, std::optional<rule::HarnessDialect>& harness);
+                        SourceManager& sources, std::optional<model::HarnessDialect>& harness);
 
 // `options` for one input: its .shaderport.toml [[files]] dialect and stage apply
 // where no flag gave them, as in `check`.

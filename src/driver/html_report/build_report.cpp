@@ -13,10 +13,10 @@
 #include "driver/parallel_for.h"
 #include "driver/port/port_file.h"
 #include "driver/render_check/render_file.h"
+#include "model/shipped_dialects.h"
 #include "render/isolated_render.h"
 #include "render/png_io.h"
 #include "report/text_format.h"
-#include "rules/shadertoy/builtin_dialects.h"
 
 namespace shaderport::driver {
 namespace {
@@ -61,7 +61,7 @@ PortResult PortEntry(const Job& job, SourceManager& sources, ReportEntry& entry)
   port_options.dialect = ParseDialect(job.checked->dialect);
   port_options.stage = model::ParseStage(job.checked->stage);
   if (!job.checked->harness.empty() && job.checked->harness != "shadertoy") {
-    port_options.harness = rules::FindBuiltinDialect(job.checked->harness);
+    port_options.harness = model::FindBuiltinDialect(job.checked->harness);
   }
   PortResult ported = PortSource(*job.checked->file, job.common, port_options, sources);
   entry.port.status = ported.validated ? StatusOf(ported.diagnostics) : StepStatus::kFail;

@@ -8,8 +8,8 @@
 #include "driver/lsp/lsp_text.h"
 #include "driver/port/port_file.h"
 #include "driver/read_input.h"
+#include "model/shipped_dialects.h"
 #include "report/docs_links.h"
-#include "rules/shadertoy/builtin_dialects.h"
 
 namespace shaderport::driver::lsp {
 namespace {
@@ -59,7 +59,7 @@ class DocumentPositions {
 // An old name the harness renamed (ShaderToy's iGlobalTime, now iTime): editors
 // strike it through as deprecated code.
 bool IsRenamedHarnessName(const std::string& harness, std::string_view text) {
-  const rule::HarnessDialect* dialect = rules::FindBuiltinDialect(harness);
+  const model::HarnessDialect* dialect = model::FindBuiltinDialect(harness);
   if (dialect == nullptr || text.empty()) return false;
   return std::any_of(dialect->renames.begin(), dialect->renames.end(),
                      [&](const auto& rename) { return rename.first == text; });

@@ -8,8 +8,8 @@
 #include "driver/lsp/lsp_text.h"
 #include "glsl/sema/builtins.h"
 #include "glsl/syntax/ast.h"
+#include "model/shipped_dialects.h"
 #include "rule/fix_engine.h"
-#include "rules/shadertoy/builtin_dialects.h"
 
 namespace shaderport::driver::lsp {
 namespace {
@@ -365,8 +365,8 @@ std::optional<std::string> HoverText(const ProjectCode& code, uint32_t offset,
       return DeclaredHover(*resolved->unit->shader.model, found, resolved->unit != &unit);
   }
   // What the ShaderToy site provides (declared by the site, not in the document).
-  if (const rule::HarnessDialect* site = rules::FindBuiltinDialect("shadertoy")) {
-    if (const rule::ProvidedVariable* provided = site->FindProvided(name)) {
+  if (const model::HarnessDialect* site = model::FindBuiltinDialect("shadertoy")) {
+    if (const model::ProvidedVariable* provided = site->FindProvided(name)) {
       std::string type = provided->type;
       std::string checked_as;
       if (provided->channel >= 0 && static_cast<size_t>(provided->channel) < channel_kinds.size()) {
@@ -472,8 +472,8 @@ Json CompletionItems(const ProjectCode& code, uint32_t offset) {
       (!unit->shown_offsets.empty() ||
        DetectKind(unit->file->Text(), unit->file->Name()).dialect == Dialect::kShaderToy);
   if (shadertoy) {
-    if (const rule::HarnessDialect* site = rules::FindBuiltinDialect("shadertoy")) {
-      for (const rule::ProvidedVariable& provided : site->provides) {
+    if (const model::HarnessDialect* site = model::FindBuiltinDialect("shadertoy")) {
+      for (const model::ProvidedVariable& provided : site->provides) {
         add(provided.name, kVariableItem, "uniform " + provided.type + " (shadertoy.com)");
       }
     }

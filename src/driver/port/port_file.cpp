@@ -8,10 +8,10 @@
 #include "driver/file_decision.h"
 #include "driver/front_end.h"
 #include "driver/read_input.h"
+#include "model/shipped_dialects.h"
 #include "rule/fix_engine.h"
 #include "rule/harness_dialect_detect.h"
 #include "rules/registry.h"
-#include "rules/shadertoy/builtin_dialects.h"
 #include "validate/glslang_validator.h"
 #include "validate/shadertoy_contract.h"
 

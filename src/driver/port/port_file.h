@@ -24,8 +24,8 @@ struct PortOptions {
   std::optional<model::Stage> stage;
   // The ShaderToy tab the code is (from a project); implies the ShaderToy dialect.
   std::optional<model::PassKind> pass;
-  const rule::HarnessDialect* harness = nullptr;  // --dialect FILE
-  model::GivenChannelKinds channels{};            // --channel; nullopt: decided from the code
+  const model::HarnessDialect* harness = nullptr;  // --dialect FILE
+  model::GivenChannelKinds channels{};             // --channel; nullopt: decided from the code
   // Rules to run; empty: the registry's rules for `mode`.
   std::vector<const rule::Rule*> rules;
   bool validate = true;  // run glslang on the result (and narrow bad fix sets)

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "driver/html_report/html_report.h"
+#include "driver/project/page_uniforms.h"
 #include "driver/project/port_project.h"
 
 namespace shaderport::driver::project {
@@ -242,8 +243,9 @@ std::string BuildProjectPage(const PageProject& project, const PageOptions& opti
   page += "<script type=\"application/json\" id=\"sp-project\">";
   page += PageProjectJson(project, options);
   page += "</script>\n<script>\n";
-  page += PageFile("textures.js");  // spResources(), used by the runtime
-  page += PageFile("sound.js");     // spSound()
+  page += PageFile("textures.js");    // spResources(), used by the runtime
+  page += PageFile("sound.js");       // spSound()
+  page += ShaderToyUniformsScript();  // spSiteUniforms, spEntryPointUniforms
   page += PageFile("runtime.js");
   page += "</script>\n</body>\n</html>\n";
   return page;

@@ -12,9 +12,9 @@
 
 #include "diag/diagnostic.h"
 #include "driver/dialect.h"
+#include "model/harness_dialect.h"
 #include "render/render_checks.h"
 #include "render/render_request.h"
-#include "rule/harness_dialect.h"
 #include "source/source_manager.h"
 #include "validate/shadertoy_contract.h"
 
@@ -29,7 +29,7 @@ struct RenderFileOptions {
   // (file_decision.h), as every command does.
   std::array<bool, 4> channel_types_given{};
   // The host that completes non-ShaderToy code (a harness dialect), if any.
-  const rule::HarnessDialect* harness = nullptr;
+  const model::HarnessDialect* harness = nullptr;
   const SourceFile* common = nullptr;  // ShaderToy Common code, if any
   // Where the WebGL2 port of WebGL1 code is registered; RenderFile sets it.
   SourceManager* sources = nullptr;

@@ -11,7 +11,7 @@ namespace shaderport::rule {
 namespace {
 
 std::string Detected(std::string_view text) {
-  const auto match = DetectDialectInText(rules::BuiltinDialects(), text);
+  const auto match = DetectDialectInText(model::BuiltinDialects(), text);
   return match ? match->dialect->name : "none";
 }
 
@@ -61,7 +61,7 @@ TEST(DialectDetect, Corpus) {
 
 TEST(DialectDetect, EvidenceExplainsTheChoice) {
   const auto match =
-      DetectDialectInText(rules::BuiltinDialects(), "void main() { color = vec4(uv, 0.0, 1.0); }");
+      DetectDialectInText(model::BuiltinDialects(), "void main() { color = vec4(uv, 0.0, 1.0); }");
   ASSERT_TRUE(match);
   EXPECT_EQ(match->score, 6);
   EXPECT_EQ(match->evidence, (std::vector<std::string>{"uses uv without declaring it",

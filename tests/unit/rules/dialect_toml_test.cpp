@@ -2,11 +2,17 @@
 // errors must come with a line and column.
 #include <gtest/gtest.h>
 
-#include "rule/harness_dialect.h"
-#include "rules/shadertoy/builtin_dialects.h"
+#include "model/harness_dialect.h"
+#include "model/shipped_dialects.h"
+#include "rule/harness_dialect_file.h"
 
 namespace shaderport::rule {
 namespace {
+
+using model::DeclarationOf;
+using model::DeclareMode;
+using model::HarnessDialect;
+using model::ProvidedStorage;
 
 DialectLoadResult Parse(std::string text) {
   static std::vector<std::unique_ptr<SourceFile>> files;  // keep text alive for ranges
@@ -26,7 +32,7 @@ std::vector<std::string> Where(const DialectLoadResult& result, const std::strin
 }
 
 TEST(DialectToml, ShippedDialectsLoadWithoutDiagnostics) {
-  const auto dialects = rules::BuiltinDialects();
+  const auto dialects = model::BuiltinDialects();
   ASSERT_EQ(dialects.size(), 4u);
   EXPECT_EQ(dialects[0].name, "bookofshaders");
   EXPECT_EQ(dialects[1].name, "glslsandbox");
@@ -36,14 +42,14 @@ TEST(DialectToml, ShippedDialectsLoadWithoutDiagnostics) {
   for (const char* file :
        {"shadertoy.toml", "glslsandbox.toml", "bookofshaders.toml", "raymarch-blog.toml"}) {
     const auto loaded =
-        rules::LoadDialect(std::string(rules::DialectsDirectory()) + "/" + file, sources);
+        LoadDialect(std::string(SHADERPORT_SOURCE_DIR) + "/rules/dialects/" + file, sources);
     EXPECT_TRUE(loaded.dialect.has_value()) << file;
     EXPECT_TRUE(loaded.diagnostics.empty()) << file << ": " << loaded.diagnostics[0].message;
   }
 }
 
 TEST(DialectToml, ShaderToyProvidesTheSiteUniformsInOrder) {
-  const HarnessDialect* shadertoy = rules::FindBuiltinDialect("shadertoy");
+  const HarnessDialect* shadertoy = model::FindBuiltinDialect("shadertoy");
   ASSERT_NE(shadertoy, nullptr);
   std::vector<std::string> declarations;
   for (const auto& v : shadertoy->provides) declarations.push_back(DeclarationOf(v));
@@ -74,10 +80,10 @@ TEST(DialectToml, ShaderToyProvidesTheSiteUniformsInOrder) {
 }
 
 TEST(DialectToml, AliasesFindDialects) {
-  ASSERT_NE(rules::FindBuiltinDialect("raymarch-harness"), nullptr);
-  EXPECT_EQ(rules::FindBuiltinDialect("raymarch-harness")->name, "raymarch-blog");
-  EXPECT_EQ(rules::FindBuiltinDialect("glslcanvas")->name, "bookofshaders");
-  EXPECT_EQ(rules::FindBuiltinDialect("nope"), nullptr);
+  ASSERT_NE(model::FindBuiltinDialect("raymarch-harness"), nullptr);
+  EXPECT_EQ(model::FindBuiltinDialect("raymarch-harness")->name, "raymarch-blog");
+  EXPECT_EQ(model::FindBuiltinDialect("glslcanvas")->name, "bookofshaders");
+  EXPECT_EQ(model::FindBuiltinDialect("nope"), nullptr);
 }
 
 TEST(DialectToml, DeclarationSpellings) {
@@ -170,11 +176,11 @@ TEST(DialectToml, DuplicatesAndWrongShapes) {
 
 TEST(DialectToml, UnknownDialectNameOrFile) {
   SourceManager sources;
-  const auto result = rules::LoadDialect("/no/such/dialect.toml", sources);
+  const auto result = LoadDialect("/no/such/dialect.toml", sources);
   EXPECT_FALSE(result.dialect);
   ASSERT_EQ(result.diagnostics.size(), 1u);
   EXPECT_EQ(result.diagnostics[0].rule_id, "dialect/not-found");
-  EXPECT_TRUE(rules::LoadDialect("shadertoy", sources).dialect.has_value());
+  EXPECT_TRUE(LoadDialect("shadertoy", sources).dialect.has_value());
 }
 
 TEST(DialectToml, HugeOrBinaryInputDoesNotCrash) {

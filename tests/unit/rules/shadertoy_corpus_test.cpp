@@ -38,7 +38,7 @@ void ExpectPorts(const Row& row, const char* dialect_name) {
   SCOPED_TRACE(row.path);
   const std::string text =
       shaderport::testing::ReadWholeFile(fs::path(SHADERPORT_SOURCE_DIR) / "corpus" / row.path);
-  const rule::PortSettings settings = HarnessSettings(rules::FindBuiltinDialect(dialect_name));
+  const rule::PortSettings settings = HarnessSettings(model::FindBuiltinDialect(dialect_name));
   ASSERT_NE(settings.harness, nullptr);
   const rule::FixEngineResult ported = Port(text, settings);
   EXPECT_TRUE(ported.converged);

@@ -46,7 +46,7 @@ rule::PortSettings CaseSettings(const std::string& text) {
   std::smatch match;
   std::string dialect = "shadertoy";
   if (std::regex_search(text, match, std::regex("// dialect: ([a-z-]+)"))) dialect = match[1];
-  rule::PortSettings settings = HarnessSettings(rules::FindBuiltinDialect(dialect));
+  rule::PortSettings settings = HarnessSettings(model::FindBuiltinDialect(dialect));
   if (std::regex_search(text, match, std::regex("// channel: ([0-3])=(2d|cube|3d)"))) {
     const std::string kind = match[2];
     settings.channels[std::stoi(match[1])] = kind == "2d"     ? model::ChannelKind::k2D

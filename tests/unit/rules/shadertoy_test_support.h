@@ -15,11 +15,11 @@
 #include "diag/diagnostic.h"
 #include "finding_format.h"
 #include "golden.h"
+#include "model/shipped_dialects.h"
 #include "rule/fix_engine.h"
 #include "rule/rule.h"
 #include "rule/rule_context.h"
 #include "rules/registry.h"
-#include "rules/shadertoy/builtin_dialects.h"
 #include "source/source_file.h"
 #include "validate/glslang_validator.h"
 
@@ -37,7 +37,7 @@ inline rule::AnalyzedShader AnalyzeHarnessCode(const SourceFile& file, bool shad
   return rule::AnalyzePlain(file, 300, model::Stage::kFragment, predefined);
 }
 
-inline rule::PortSettings HarnessSettings(const rule::HarnessDialect* dialect) {
+inline rule::PortSettings HarnessSettings(const model::HarnessDialect* dialect) {
   rule::PortSettings settings;
   settings.mode = rule::PortMode::kPort;
   settings.stage = model::Stage::kFragment;

@@ -61,9 +61,9 @@ inline rule::Analyzer AnalyzerFor(Kind kind, model::Stage stage) {
 }
 
 // A ShaderToy-like harness: entry point mainImage.
-inline const rule::HarnessDialect* ShaderToyHarness() {
-  static const rule::HarnessDialect harness = [] {
-    rule::HarnessDialect h;
+inline const model::HarnessDialect* ShaderToyHarness() {
+  static const model::HarnessDialect harness = [] {
+    model::HarnessDialect h;
     h.name = "shadertoy";
     h.entry_points.push_back({});
     h.entry_points.back().function = "mainImage";

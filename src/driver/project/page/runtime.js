@@ -132,12 +132,28 @@
   const vertexShader = gl.createShader(gl.VERTEX_SHADER);
   gl.shaderSource(vertexShader, kVertex);
   gl.compileShader(vertexShader);
-  const kUniformNames = ["iResolution", "iTime", "iTimeDelta", "iFrameRate", "iFrame",
-    "iChannelTime", "iChannelResolution", "iMouse", "iDate", "iSampleRate", "unViewport",
-    "unCorners"];
+  // The site's uniforms come from the harness model (spSiteUniforms, written before
+  // this script); sound.js looks up mainSound's own.
+  const kUniformNames = spSiteUniforms.concat(spEntryPointUniforms.mainCubemap);
+  // What each site uniform is fed, by name (as render feeds it).
+  const kFeeds = {
+    iResolution: (l, v, w, h) => gl.uniform3f(l, w, h, 1),
+    iTime: (l, v) => gl.uniform1f(l, v.time),
+    iTimeDelta: (l, v) => gl.uniform1f(l, v.delta),
+    iFrameRate: (l, v) => gl.uniform1f(l, v.fps),
+    iFrame: (l, v) => gl.uniform1i(l, v.frame),
+    iChannelTime: (l, v) => gl.uniform1fv(l, [v.time, v.time, v.time, v.time]),
+    iChannelResolution: (l, v, w, h, res) => gl.uniform3fv(l, res),
+    iMouse: (l, v) => gl.uniform4fv(l, v.mouse),
+    iDate: (l, v) => gl.uniform4fv(l, v.date),
+    iSampleRate: (l) => gl.uniform1f(l, 44100),
+  };
   // Programs of the user's own (pass.vertex set) get render's inputs for the rest.
   const own = spOwnInputs(gl, gpu, kUniformNames);
-  let failed = false;
+  // A uniform the model lists that the page cannot feed stops the page, loudly.
+  const unfed = spSiteUniforms.filter((name) => !kFeeds[name]);
+  if (unfed.length) note("error", "the page cannot feed the uniforms " + unfed.join(", "));
+  let failed = unfed.length > 0;
   for (const pass of passes) {
     if (pass.kind !== "image" && pass.kind !== "buffer" && pass.kind !== "cube" &&
         pass.kind !== "sound") continue;
@@ -310,17 +326,9 @@
             mouse: m, date: date};
   }
   function setUniforms(pass, v, w, h, res) {
-    const L = pass.loc;
-    if (L.iResolution) gl.uniform3f(L.iResolution, w, h, 1);
-    if (L.iTime) gl.uniform1f(L.iTime, v.time);
-    if (L.iTimeDelta) gl.uniform1f(L.iTimeDelta, v.delta);
-    if (L.iFrameRate) gl.uniform1f(L.iFrameRate, v.fps);
-    if (L.iFrame) gl.uniform1i(L.iFrame, v.frame);
-    if (L.iChannelTime) gl.uniform1fv(L.iChannelTime, [v.time, v.time, v.time, v.time]);
-    if (L.iChannelResolution) gl.uniform3fv(L.iChannelResolution, res);
-    if (L.iMouse) gl.uniform4fv(L.iMouse, v.mouse);
-    if (L.iDate) gl.uniform4fv(L.iDate, v.date);
-    if (L.iSampleRate) gl.uniform1f(L.iSampleRate, 44100);
+    for (const name of spSiteUniforms) {
+      if (pass.loc[name]) kFeeds[name](pass.loc[name], v, w, h, res);
+    }
   }
   // The corners of cube face f as the site's cube main() mixes them (bottom-left,
   // bottom-right, top-right, top-left of the face in GL's cube-map layout), then the

@@ -6,7 +6,7 @@
 #include <span>
 #include <string_view>
 
-namespace shaderport::rules {
+namespace shaderport::model {
 
 struct EmbeddedTextFile {
   std::string_view name;  // file name, e.g. "shadertoy.toml"
@@ -16,4 +16,4 @@ struct EmbeddedTextFile {
 // In file-name order.
 std::span<const EmbeddedTextFile> EmbeddedDialectFiles();
 
-}  // namespace shaderport::rules
+}  // namespace shaderport::model

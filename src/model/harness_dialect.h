@@ -5,16 +5,14 @@
 // `--dialect FILE`.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
-#include "diag/diagnostic.h"
-#include "source/source_file.h"
-
-namespace shaderport::rule {
+namespace shaderport::model {
 
 // How a provided variable is declared when the code is ported to WebGL2.
 enum class ProvidedStorage {
@@ -30,6 +28,8 @@ struct ProvidedVariable {
   std::string precision;      // "", "lowp", "mediump" or "highp"
   int channel = -1;           // 0..3 for a texture channel whose sampler type the port chooses
   std::string description{};  // what the host feeds it, for people (editor hover)
+  // Also declared when the host compiles shared code on its own (ShaderToy's Common tab).
+  bool in_common_tab = false;
 };
 
 // One function the user writes instead of main(), and the main() that calls it.
@@ -80,14 +80,29 @@ struct HarnessDialect {
   const EntryPoint* FindEntryPoint(std::string_view function) const;
 };
 
-struct DialectLoadResult {
-  std::optional<HarnessDialect> dialect;  // absent when the file has errors
-  DiagnosticList diagnostics;             // errors in the TOML, located in the file
+// A problem in a dialect's TOML, at a byte range of its text. The model sits below
+// the diagnostics layer, so the caller that owns the file makes it a Diagnostic.
+struct DialectProblem {
+  bool error = true;    // false: a warning (an unknown key, which is ignored)
+  std::string rule_id;  // "dialect/syntax-error", "dialect/invalid-value", ...
+  uint32_t begin = 0;
+  uint32_t end = 0;
+  std::string message;
 };
 
-// Parses a dialect from TOML text. Errors are `dialect/...` diagnostics at the
-// offending line and column of `file`; unknown keys are warnings.
-DialectLoadResult ParseDialect(const SourceFile& file);
+struct DialectParse {
+  std::optional<HarnessDialect> dialect;  // absent when the text has errors
+  std::vector<DialectProblem> problems;   // in text order
+};
+
+// Parses a dialect from TOML text; `name` is the file name toml++ reports. Never throws.
+DialectParse ParseDialect(std::string_view text, std::string_view name);
+
+// How DeclarationOf spells a variable without a precision in the dialect.
+enum class PrecisionSpelling {
+  kExplicit,  // the hosts' default written out: valid beside any default precision statement
+  kOmitted,   // left to the default precision statements before it (the site's own header)
+};
 
 // `uniform highp vec3 iResolution;`, `in highp vec2 uv;`, `uniform highp float
 // iChannelTime[4];`. `type_override` replaces the type (a channel's chosen sampler).
@@ -95,11 +110,12 @@ DialectLoadResult ParseDialect(const SourceFile& file);
 // ShaderToy says `precision highp float; precision highp int;`), samplers other
 // than sampler2D/samplerCube mediump (ShaderToy's sampler3D): the declaration is
 // then valid before or after any default precision statement.
-std::string DeclarationOf(const ProvidedVariable& variable, std::string_view type_override = {});
+std::string DeclarationOf(const ProvidedVariable& variable, std::string_view type_override = {},
+                          PrecisionSpelling spelling = PrecisionSpelling::kExplicit);
 
 std::string_view DefaultPrecision(std::string_view type);
 
 // Spellings of ProvidedStorage and DeclareMode in the TOML.
 std::string_view StorageName(ProvidedStorage storage);
 
-}  // namespace shaderport::rule
+}  // namespace shaderport::model

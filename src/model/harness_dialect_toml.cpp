@@ -6,9 +6,9 @@
 #include <array>
 #include <set>
 
-#include "rule/harness_dialect.h"
+#include "model/harness_dialect.h"
 
-namespace shaderport::rule {
+namespace shaderport::model {
 namespace {
 
 // Dialect files are a few KiB; anything much larger is not one.
@@ -68,45 +68,81 @@ std::optional<std::string> BadPlaceholder(std::string_view body) {
   return std::nullopt;
 }
 
+// Where each 1-based line starts, with "\r\n", "\n" and a lone "\r" ending a line, as
+// the SourceFile the caller locates problems in counts them.
+std::vector<uint32_t> LineStarts(std::string_view text) {
+  std::vector<uint32_t> starts = {0};
+  for (uint32_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\r') {
+      if (i + 1 < text.size() && text[i + 1] == '\n') ++i;
+      starts.push_back(i + 1);
+    } else if (text[i] == '\n') {
+      starts.push_back(i + 1);
+    }
+  }
+  return starts;
+}
+
 class DialectParser {
  public:
-  explicit DialectParser(const SourceFile& file) : file_(file) {}
+  DialectParser(std::string_view text, std::string_view name)
+      : text_(text), name_(name), line_starts_(LineStarts(text)) {}
 
-  DialectLoadResult Run() {
-    if (file_.Text().size() > kMaxDialectBytes) {
+  DialectParse Run() {
+    if (text_.size() > kMaxDialectBytes) {
       Error({}, "the dialect file is larger than 1 MiB");
       return Finish();
     }
     toml::table root;
     try {
-      root = toml::parse(file_.Text(), std::string_view(file_.Name()));
+      root = toml::parse(text_, name_);
     } catch (const toml::parse_error& error) {
-      Report(Severity::kError, "dialect/syntax-error", RangeOf(error.source()),
+      Report(true, "dialect/syntax-error", RangeOf(error.source()),
              "invalid TOML: " + std::string(error.description()));
       return Finish();
     }
     for (auto&& [key, value] : root) ReadTopLevel(key, value);
     if (dialect_.name.empty() && !saw_name_) {
-      Report(Severity::kError, "dialect/missing-key", {file_.Id(), 0, 0},
-             "the dialect has no 'name'");
+      Report(true, "dialect/missing-key", {0, 0}, "the dialect has no 'name'");
     }
     return Finish();
   }
 
  private:
-  DialectLoadResult Finish() {
+  struct Range {
+    uint32_t begin = 0;
+    uint32_t end = 0;
+  };
+
+  DialectParse Finish() {
     // toml++ tables iterate in key order: report in file order instead.
     std::stable_sort(
-        result_.diagnostics.begin(), result_.diagnostics.end(),
-        [](const Diagnostic& a, const Diagnostic& b) { return a.range.begin < b.range.begin; });
-    if (!HasErrors(result_.diagnostics)) result_.dialect = std::move(dialect_);
+        result_.problems.begin(), result_.problems.end(),
+        [](const DialectProblem& a, const DialectProblem& b) { return a.begin < b.begin; });
+    const bool errors = std::any_of(result_.problems.begin(), result_.problems.end(),
+                                    [](const DialectProblem& p) { return p.error; });
+    if (!errors) result_.dialect = std::move(dialect_);
     return std::move(result_);
   }
 
-  // toml++ counts columns in characters; SourceFile offsets are bytes.
+  uint32_t LineStart(uint32_t line) const {
+    if (line == 0) return 0;
+    if (line > line_starts_.size()) return static_cast<uint32_t>(text_.size());
+    return line_starts_[line - 1];
+  }
+  std::string_view LineText(uint32_t line) const {
+    if (line == 0 || line > line_starts_.size()) return {};
+    const uint32_t begin = line_starts_[line - 1];
+    uint32_t end =
+        line < line_starts_.size() ? line_starts_[line] : static_cast<uint32_t>(text_.size());
+    while (end > begin && (text_[end - 1] == '\n' || text_[end - 1] == '\r')) --end;
+    return text_.substr(begin, end - begin);
+  }
+
+  // toml++ counts columns in characters; problems are located in bytes.
   uint32_t OffsetOf(const toml::source_position& position) const {
-    const uint32_t line_start = file_.LineStart(position.line);
-    const std::string_view line = file_.LineText(position.line);
+    const uint32_t line_start = LineStart(position.line);
+    const std::string_view line = LineText(position.line);
     uint32_t characters = 1;
     size_t i = 0;
     for (; i < line.size() && characters < position.column; ++i) {
@@ -116,27 +152,27 @@ class DialectParser {
     return line_start + static_cast<uint32_t>(i);
   }
 
-  SourceRange RangeOf(const toml::source_region& region) const {
-    if (!region.begin) return {file_.Id(), 0, 0};
+  Range RangeOf(const toml::source_region& region) const {
+    if (!region.begin) return {0, 0};
     const uint32_t begin = OffsetOf(region.begin);
     const uint32_t end = region.end ? std::max(begin, OffsetOf(region.end)) : begin;
-    return {file_.Id(), begin, end};
+    return {begin, end};
   }
 
-  void Report(Severity severity, std::string rule, SourceRange range, std::string message) {
-    result_.diagnostics.push_back(
-        MakeDiagnostic(severity, std::move(rule), range, std::move(message)));
+  void Report(bool error, std::string rule, Range range, std::string message) {
+    result_.problems.push_back(
+        {error, std::move(rule), range.begin, range.end, std::move(message)});
   }
   void Error(const toml::source_region& where, std::string message) {
-    Report(Severity::kError, "dialect/invalid-value", RangeOf(where), std::move(message));
+    Report(true, "dialect/invalid-value", RangeOf(where), std::move(message));
   }
   void UnknownKey(const toml::key& key, std::string_view where) {
-    Report(Severity::kWarning, "dialect/unknown-key", RangeOf(key.source()),
+    Report(false, "dialect/unknown-key", RangeOf(key.source()),
            "unknown key '" + std::string(key.str()) + "' in " + std::string(where) +
                "; it is ignored");
   }
   void Missing(const toml::node& table, std::string_view key, std::string_view where) {
-    Report(Severity::kError, "dialect/missing-key", RangeOf(table.source()),
+    Report(true, "dialect/missing-key", RangeOf(table.source()),
            std::string(where) + " needs '" + std::string(key) + "'");
   }
 
@@ -295,6 +331,12 @@ class DialectParser {
         }
       } else if (key == "description") {
         if (auto description = String(key, value)) variable.description = std::move(*description);
+      } else if (key == "in_common_tab") {
+        if (const auto* flag = value.as_boolean()) {
+          variable.in_common_tab = flag->get();
+        } else {
+          Error(value.source(), "'in_common_tab' must be true or false");
+        }
       } else if (key == "channel") {
         const auto* number = value.as_integer();
         if (number == nullptr || number->get() < 0 || number->get() > 3) {
@@ -355,14 +397,18 @@ class DialectParser {
     dialect_.entry_points.push_back(std::move(entry));
   }
 
-  const SourceFile& file_;
+  std::string_view text_;
+  std::string_view name_;
+  std::vector<uint32_t> line_starts_;
   HarnessDialect dialect_;
-  DialectLoadResult result_;
+  DialectParse result_;
   bool saw_name_ = false;
 };
 
 }  // namespace
 
-DialectLoadResult ParseDialect(const SourceFile& file) { return DialectParser(file).Run(); }
+DialectParse ParseDialect(std::string_view text, std::string_view name) {
+  return DialectParser(text, name).Run();
+}
 
-}  // namespace shaderport::rule
+}  // namespace shaderport::model

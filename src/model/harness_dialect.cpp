@@ -1,6 +1,6 @@
-#include "rule/harness_dialect.h"
+#include "model/harness_dialect.h"
 
-namespace shaderport::rule {
+namespace shaderport::model {
 
 bool HarnessDialect::NameMatches(std::string_view name_or_alias) const {
   if (name == name_or_alias) return true;
@@ -71,7 +71,8 @@ std::string_view DefaultPrecision(std::string_view type) {
   return "highp";
 }
 
-std::string DeclarationOf(const ProvidedVariable& variable, std::string_view type_override) {
+std::string DeclarationOf(const ProvidedVariable& variable, std::string_view type_override,
+                          PrecisionSpelling spelling) {
   const std::string_view type = type_override.empty() ? variable.type : type_override;
   // GLSL ES writes the array size after the name: `uniform float iChannelTime[4];`.
   const size_t bracket = type.find('[');
@@ -79,8 +80,9 @@ std::string DeclarationOf(const ProvidedVariable& variable, std::string_view typ
   const std::string_view array = bracket == std::string_view::npos ? "" : type.substr(bracket);
   std::string text(StorageName(variable.storage));
   text += ' ';
-  const std::string_view precision =
-      variable.precision.empty() ? DefaultPrecision(type) : std::string_view(variable.precision);
+  std::string_view precision = variable.precision;
+  if (precision.empty() && spelling == PrecisionSpelling::kExplicit)
+    precision = DefaultPrecision(type);
   if (!precision.empty()) {
     text += precision;
     text += ' ';
@@ -93,4 +95,4 @@ std::string DeclarationOf(const ProvidedVariable& variable, std::string_view typ
   return text;
 }
 
-}  // namespace shaderport::rule
+}  // namespace shaderport::model
