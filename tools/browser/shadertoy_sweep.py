@@ -441,8 +441,9 @@ def write_md(path, meta, rows, by_id):
         out.append("| %s | %s |" % (label, value))
     out += ["", "## Verdicts per pass", "",
             "Each pass is composed as the site composes it (Common compiled into every pass) and "
-            "compiled as a WebGL2 fragment shader by Chromium; check rejects a pass when it reports "
-            "an error (other than `webgl/link-*`) in the pass's tab or in Common.", "",
+            "compiled as a WebGL2 fragment shader by Chromium, and so is the Common tab alone as the "
+            "site compiles it; Chromium accepts a pass when both compile. check rejects a pass when "
+            "it reports an error (other than `webgl/link-*`) in the pass's tab or in Common.", "",
             "| passes | shaders | agree (both accept / both reject) | agreement | false rejects | "
             "false accepts | Chromium failed | check failed |", "|---|---|---|---|---|---|---|---|",
             "| %d | %d | %d (%d / %d) | %s %% | %d | %d | %d | %d |" % (
