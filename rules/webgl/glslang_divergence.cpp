@@ -630,10 +630,11 @@ void ReplaceFileMacro(std::string& text) {
   ReplaceWord(text, "__FILE__", "0       ");
 }
 
-// An integer literal past 32 bits (4294967296, 0x100000000, a long octal) or an octal
-// one with a digit 8 or 9 (`08`) on a line: glslang's scanner reports it even in a
-// skipped group (and then loses track of the group's #endif).
-bool HasIntegerLiteralGlslangScansAsError(std::string_view line) {
+// An integer literal past 32 bits (4294967296, 0x100000000, a long octal), an octal
+// one with a digit 8 or 9 (`08`) or a float with an empty exponent (`1e`) on a line:
+// glslang's scanner reports it even in a skipped group (and then loses track of the
+// group's #endif).
+bool HasLiteralGlslangScansAsError(std::string_view line) {
   const auto word_char = [](char c) {
     return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '.';
   };
@@ -649,7 +650,17 @@ bool HasIntegerLiteralGlslangScansAsError(std::string_view line) {
     if (std::isdigit(static_cast<unsigned char>(token[0])) == 0) continue;
     if (!token.empty() && (token.back() == 'u' || token.back() == 'U')) token.remove_suffix(1);
     const bool hex = token.size() > 2 && token[0] == '0' && (token[1] == 'x' || token[1] == 'X');
-    if (!hex && token.find_first_of(".eE") != std::string_view::npos) continue;  // a float
+    if (!hex && token.find_first_of(".eE") != std::string_view::npos) {
+      // A float whose exponent has no digits (`1e`, `2.5E`; `1e+5` goes on past the
+      // token): glslang's "bad character in float exponent".
+      const size_t exponent = token.find_first_of("eE");
+      if (exponent != std::string_view::npos && exponent + 1 == token.size() &&
+          !(end + 1 < line.size() && (line[end] == '+' || line[end] == '-') &&
+            std::isdigit(static_cast<unsigned char>(line[end + 1])) != 0)) {
+        return true;
+      }
+      continue;
+    }
     const unsigned base = hex ? 16 : (token.size() > 1 && token[0] == '0' ? 8 : 10);
     uint64_t value = 0;
     for (char c : token.substr(hex ? 2 : 0)) {
@@ -688,7 +699,7 @@ void EmptyInactiveLines(const BrowserContext& context, FileId part, std::string&
                         return c == '"' || c == '\'' || c == '$' || c == '@' || c == '`' ||
                                static_cast<unsigned char>(c) >= 0x80;
                       });
-      const bool oversized = !troubling && HasIntegerLiteralGlslangScansAsError(
+      const bool oversized = !troubling && HasLiteralGlslangScansAsError(
                                                std::string_view(text).substr(line, end - line));
       if ((troubling || oversized) && first < end && text[first] != '#') {
         for (size_t i = line; i < end; ++i) {

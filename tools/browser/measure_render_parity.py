@@ -88,8 +88,9 @@ def run_shaderport(args):
     if render_timeout:
         cmd += ["--timeout", "%g" % render_timeout]
     if inputs:
-        cmd += ["--time", repr(inputs["time"]), "--frame", str(inputs["frame"]),
-                "--mouse"] + [repr(v) for v in inputs["mouse"]]
+        # One argument with '=': a negative click position must not read as an option.
+        cmd += ["--time=%r" % inputs["time"], "--frame=%d" % inputs["frame"],
+                "--mouse=" + ",".join(repr(v) for v in inputs["mouse"])]
     t0 = time.time()
     try:
         proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=timeout)
@@ -329,7 +330,7 @@ def _chromium_version(chromium):
         return "unknown"
 
 
-def shown(rec, text, limit=None):
+def redacted(rec, text, limit=None):
     """Findings and logs quote the shader's own names: only for permissive records
     (sample_dataset.py marks the others `restricted`)."""
     return "(restricted licence: id only)" if rec.get("restricted") else md(text, limit)
@@ -447,7 +448,7 @@ def build_report(args, rows, total, binary, elapsed, t_sp, t_ch, causes):
         url = rec.get("url") or "https://www.shadertoy.com/view/%s" % rec["id"]
         line = "| [%s](%s) | %s | %s | %s | %.1f | %s |" % (
             rec["id"], url, md(rec.get("name"), 60), md(rec.get("author"), 30),
-            md(rec.get("license")), c.worst, shown(rec, summarize_findings(r["findings"])))
+            md(rec.get("license")), c.worst, redacted(rec, summarize_findings(r["findings"])))
         if causes:
             line += " %s |" % md(causes.get(rec["id"], ""))
         lines.append(line)
@@ -463,7 +464,7 @@ def build_report(args, rows, total, binary, elapsed, t_sp, t_ch, causes):
         url = rec.get("url") or "https://www.shadertoy.com/view/%s" % rec["id"]
         lines.append("| [%s](%s) | %s | %s | %s | %s | %s |" % (
             rec["id"], url, md(rec.get("name"), 60), md(rec.get("author"), 30), md(rec.get("license")),
-            r["ch"]["status"], shown(rec, summarize_findings(r["findings"]) if r["findings"]
+            r["ch"]["status"], redacted(rec, summarize_findings(r["findings"]) if r["findings"]
                                      else r["sp"]["output"], 200)))
     if not sp_failed:
         lines.append("| none | | | | | |")
@@ -477,8 +478,8 @@ def build_report(args, rows, total, binary, elapsed, t_sp, t_ch, causes):
         url = rec.get("url") or "https://www.shadertoy.com/view/%s" % rec["id"]
         lines.append("| [%s](%s) | %s | %s | %s | %s | %s | %s |" % (
             rec["id"], url, md(rec.get("name"), 60), md(rec.get("author"), 30), md(rec.get("license")),
-            r["ch"]["status"], shown(rec, r["ch"].get("log", ""), 200),
-            shown(rec, summarize_findings(r["findings"]))))
+            r["ch"]["status"], redacted(rec, r["ch"].get("log", ""), 200),
+            redacted(rec, summarize_findings(r["findings"]))))
     if not ch_failed:
         lines.append("| none | | | | | | |")
     lines.append("")
