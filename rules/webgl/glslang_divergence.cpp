@@ -308,6 +308,25 @@ bool BrowserAcceptsName(const BrowserContext& context, const glsl::Symbol& funct
                                     function.name) != kEs3DeclarableBuiltins.end();
 }
 
+// The text of `file` as written: one of the unit's parts (ShaderToy: Common, the pass)
+// or the user's file; empty for any other.
+std::string_view OriginalText(const BrowserContext& context, FileId file) {
+  for (const SourceFile* unit_part : context.parts) {
+    if (unit_part->Id() == file) return unit_part->Text();
+  }
+  return context.file != nullptr && file == context.file->Id() ? context.file->Text()
+                                                               : std::string_view();
+}
+
+// Every part's text, for aliases that must be new to all of them; `text` when the
+// caller named no parts.
+std::string UnitText(const BrowserContext& context, std::string_view text) {
+  if (context.parts.empty()) return std::string(text);
+  std::string unit;
+  for (const SourceFile* unit_part : context.parts) unit += unit_part->Text();
+  return unit;
+}
+
 // A name of `name`'s length that neither `text` nor `taken` contains: its last
 // characters replaced by digits (no `__`, no `gl_` prefix: both reserved), or "" if none is free.
 std::string SameLengthAlias(const std::string& text, const std::string& name,
@@ -418,16 +437,10 @@ void RenameLengthFields(const BrowserContext& context, FileId part, std::string&
       text.find("length") == std::string::npos) {
     return;
   }
-  const auto original_of = [&](FileId file) -> std::string_view {
-    for (const SourceFile* unit_part : context.parts) {
-      if (unit_part->Id() == file) return unit_part->Text();
-    }
-    return file == context.file->Id() ? context.file->Text() : std::string_view();
-  };
   std::vector<glsl::Name> names;
   bool spelled = true;
   const auto add = [&](const glsl::Name& name) {
-    const std::string_view in = original_of(name.range.file);
+    const std::string_view in = OriginalText(context, name.range.file);
     spelled =
         spelled && name.range.begin + 6 <= in.size() && in.substr(name.range.begin, 6) == "length";
     names.push_back(name);
@@ -447,10 +460,7 @@ void RenameLengthFields(const BrowserContext& context, FileId part, std::string&
     return true;
   });
   if (names.empty() || !spelled) return;
-  std::string unit_text;
-  for (const SourceFile* unit_part : context.parts) unit_text += unit_part->Text();
-  if (context.parts.empty()) unit_text = text;
-  const std::string alias = SameLengthAlias(unit_text, "length");
+  const std::string alias = SameLengthAlias(UnitText(context, text), "length");
   if (alias.empty()) return;
   for (const glsl::Name& name : names) {
     if (name.range.file == part && name.range.begin + 6 <= text.size() &&
@@ -728,12 +738,8 @@ std::set<std::string> RenameSelfNamingMacros(const BrowserContext& context, File
                                              std::string_view original, std::string& text) {
   const glsl::PreprocessResult& pp = *context.preprocessed;
   // The unit's texts as written: a macro of ShaderToy's Common may be used in the pass.
-  const auto original_of = [&](FileId file) -> std::string_view {
-    if (file == part) return original;
-    for (const SourceFile* unit_part : context.parts) {
-      if (unit_part->Id() == file) return unit_part->Text();
-    }
-    return {};
+  const auto original_of = [&](FileId file) {
+    return file == part ? original : OriginalText(context, file);
   };
   // Function-like macros of the unit whose body names the macro itself.
   std::set<std::string> self_naming;
@@ -755,10 +761,7 @@ std::set<std::string> RenameSelfNamingMacros(const BrowserContext& context, File
     if (std::regex_search(text_of_body, names_itself)) self_naming.insert(use.name);
   }
   // An alias must be new to every part, and the same in each of them.
-  std::string unit_text(original);
-  for (const SourceFile* unit_part : context.parts) {
-    if (unit_part->Id() != part) unit_text += unit_part->Text();
-  }
+  const std::string unit_text = UnitText(context, original);
   std::set<std::string> renamed;
   for (const std::string& name : self_naming) {
     bool movable = true;
