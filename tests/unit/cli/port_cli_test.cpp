@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "cli/cli_test_util.h"
+#include "scratch_dir.h"
 
 namespace shaderport::testing {
 namespace {
@@ -16,13 +17,7 @@ constexpr const char* kWebGL1 =
     "precision mediump float;\nvarying vec2 uv;\nuniform sampler2D tex;\n"
     "void main() {\n  gl_FragColor = texture2D(tex, uv);\n}\n";
 
-fs::path TempDir(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("shaderport-port-" + std::to_string(::getpid()) + "-" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path TempDir(const std::string& name) { return ScratchDir("port-" + name); }
 
 void Write(const fs::path& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;

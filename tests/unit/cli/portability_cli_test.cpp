@@ -6,19 +6,14 @@
 #include <fstream>
 
 #include "cli_test_util.h"
+#include "scratch_dir.h"
 
 namespace shaderport::testing {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path TempDir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() /
-                       ("shaderport-portability-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path TempDir(const std::string& name) { return ScratchDir("portability-" + name); }
 
 void Write(const fs::path& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;

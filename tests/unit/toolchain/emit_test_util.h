@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "scratch_dir.h"
 #include "toolchain/emit.h"
 
 namespace shaderport::toolchain::testing {
@@ -125,7 +126,7 @@ inline std::string GlslangErrors(const std::string& text, model::Stage stage) {
 
 // Runs the spirv-val command-line tool on a module; "" when it accepts it.
 inline std::string SpirvValErrors(const std::string& bytes, const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("shaderport-spirv-" + std::to_string(getpid()));
+  const fs::path dir = shaderport::testing::ScratchRoot::Path() / "spirv";
   fs::create_directories(dir);
   std::string file_name = name;
   for (char& c : file_name) {
