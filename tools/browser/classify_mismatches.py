@@ -30,6 +30,10 @@ is `unexplained` and needs a look by hand, except when shaderport's own render r
 NaN pixels (render/nan-or-inf): then `NaN (reported by render)`, since browsers draw NaN in
 a GPU-dependent colour and the render already warns about it.
 
+Every variant is drawn at the iTime, iFrame and iMouse the measurement used (from
+DIR/summary.json). Causes shown by hand (an experiment in the report's notes) come in with
+--by-hand and are not classified again.
+
 Run (from the repository root), after measure_render_parity.py --keep DIR:
   python3 tools/browser/classify_mismatches.py --keep DIR --report REPORT.md -o causes.json
 The output maps id -> cause (JSON), usable as measure_render_parity.py --causes.
@@ -94,7 +98,7 @@ def with_reduced_trig(code):
     return with_prelude(code, REDUCED_TRIG)
 
 
-def render(binary, record, png, extra=()):
+def render_once(binary, record, png, extra=()):
     with tempfile.TemporaryDirectory() as tmp:
         path = os.path.join(tmp, "record.json")
         with open(path, "w", encoding="utf-8") as f:
@@ -110,20 +114,35 @@ def differs(a, b):
     return not compare_pictures.compare_files(a, b)[0]
 
 
+def input_arguments(inputs, time_scale=1.0):
+    """render's options for the iTime, iFrame and iMouse the measurement drew with."""
+    if not inputs:
+        return ("--time=%r" % (1.0 * time_scale),) if time_scale != 1.0 else ()
+    return ("--time=%r" % (inputs["time"] * time_scale), "--frame=%d" % inputs["frame"],
+            "--mouse=" + ",".join(repr(v) for v in inputs["mouse"]))
+
+
 def classify(job):
-    binary, directory = job
+    binary, directory, inputs = job
     record_path = os.path.join(directory, "record.json")
     with open(record_path, encoding="utf-8") as f:
         record = json.load(f)
     base = os.path.join(directory, "classify-base.png")
     trig = os.path.join(directory, "classify-trig.png")
     time = os.path.join(directory, "classify-time.png")
+    # Every variant is drawn at the inputs of the measurement (a random iTime with
+    # --seed), not at render's default iTime 1, where the mismatch may not occur.
+    at = input_arguments(inputs)
+
+    def render(binary_, record_, png, extra=()):
+        return render_once(binary_, record_, png, tuple(extra) or at)
+
     render(binary, record, base)
     perturbed = json.loads(json.dumps(record))
     for p in perturbed["passes"]:
         p["code"] = with_reduced_trig(p["code"])
     render(binary, perturbed, trig)
-    render(binary, record, time, ("--time", repr(1.0 + 2.0 ** -20)))
+    render(binary, record, time, input_arguments(inputs, 1.0 + 2.0 ** -20))
     if differs(base, trig):
         return "precision (sin/cos)"
     if differs(base, time):
@@ -179,12 +198,25 @@ def main():
     ap.add_argument("--report", required=True, help="its Markdown report (the mismatch table)")
     ap.add_argument("--shaderport", default="build/release/shaderport", help="shaderport binary")
     ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--by-hand", help="JSON {id: cause} of causes shown by hand (an experiment "
+                    "written down in the report's notes); these ids are not classified again")
     ap.add_argument("-o", "--output", required=True, help="JSON {id: cause}")
     args = ap.parse_args()
     ids = mismatch_ids(args.report)
-    jobs = [(os.path.abspath(args.shaderport), os.path.join(args.keep, i)) for i in ids]
+    by_hand = {}
+    if args.by_hand:
+        with open(args.by_hand, encoding="utf-8") as f:
+            by_hand = json.load(f)
+    inputs = {}
+    summary = os.path.join(args.keep, "summary.json")
+    if os.path.isfile(summary):
+        with open(summary, encoding="utf-8") as f:
+            inputs = {entry["id"]: entry.get("inputs") for entry in json.load(f)}
+    left = [i for i in ids if i not in by_hand]
+    jobs = [(os.path.abspath(args.shaderport), os.path.join(args.keep, i), inputs.get(i)) for i in left]
     with concurrent.futures.ProcessPoolExecutor(max_workers=args.jobs) as pool:
-        causes = dict(zip(ids, pool.map(classify, jobs)))
+        causes = dict(zip(left, pool.map(classify, jobs)))
+    causes.update({i: by_hand[i] for i in ids if i in by_hand})
     with open(args.output, "w", encoding="utf-8") as f:
         json.dump(causes, f, indent=1, sort_keys=True)
         f.write("\n")

@@ -20,10 +20,10 @@ bool FoldableBuiltin(std::string_view name) {
 
 bool IsConstantTree(const Expr* expr, const SemanticModel& model,
                     const std::function<bool(const Expr& identifier, int depth)>& identifier,
-                    int depth) {
+                    int depth, const std::function<bool(const CallExpr& call)>& builtin) {
   if (expr == nullptr || depth > kMaxConstantDepth) return false;
   auto constant = [&](const Expr* operand) {
-    return IsConstantTree(operand, model, identifier, depth + 1);
+    return IsConstantTree(operand, model, identifier, depth + 1, builtin);
   };
   switch (expr->kind) {
     case NodeKind::kLiteralExpr:
@@ -55,10 +55,11 @@ bool IsConstantTree(const Expr* expr, const SemanticModel& model,
     }
     case NodeKind::kCallExpr: {
       const auto* call = expr->As<CallExpr>();
-      const bool builtin = call->call_kind == CallKind::kFunction &&
-                           model.builtin_calls.contains(call->id) &&
-                           FoldableBuiltin(call->callee.text);
-      if ((call->call_kind != CallKind::kConstructor && !builtin) || call->arguments.empty()) {
+      const bool folded_builtin = call->call_kind == CallKind::kFunction &&
+                                  model.builtin_calls.contains(call->id) &&
+                                  (builtin ? builtin(*call) : FoldableBuiltin(call->callee.text));
+      if ((call->call_kind != CallKind::kConstructor && !folded_builtin) ||
+          call->arguments.empty()) {
         return false;
       }
       for (const Expr* argument : call->arguments) {

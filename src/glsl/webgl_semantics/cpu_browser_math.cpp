@@ -112,6 +112,15 @@ class MathRewriter {
       c_.edits.Replace(name.range, CpuMathHelperName(name.builtin));
       ++c_.result.math_calls;
     }
+    for (const auto& [callee, helper] : folded_clamps_) {
+      if (!declare_at) {
+        ++c_.result.skipped;
+        continue;
+      }
+      used.insert(helper);
+      c_.edits.Replace(callee, CpuMathHelperName(helper));
+      ++c_.result.folded_clamps;
+    }
     if (!conversions_.empty() && declare_at) {
       used.insert("u2f");
       for (const SourceRange& argument : conversions_) {
@@ -234,15 +243,18 @@ class MathRewriter {
       answer = call.arguments[2];
     }
     if (answer == nullptr) return;
+    // The callee is renamed to a helper returning that bound, rather than the other
+    // arguments' text cut away: edits inside them (a division) would overlap the cut.
     const auto whole = c_.edits.Span(call);
-    const auto kept = c_.edits.Span(*answer);
-    if (!whole || !kept || kept->file != whole->file) {
+    const PpToken* name = call.HasTokens() ? &pp_.tokens[call.first_token] : nullptr;
+    if (!whole || name == nullptr || name->text != "clamp" ||
+        name->spelling.Size() != name->text.size() || name->spelling.file != whole->file ||
+        name->spelling.begin != whole->begin) {
       ++c_.result.skipped;
       return;
     }
-    c_.edits.Replace({whole->file, whole->begin, kept->begin}, "(");
-    c_.edits.Replace({whole->file, kept->end, whole->end}, ")");
-    ++c_.result.folded_clamps;
+    folded_clamps_.push_back(
+        {name->spelling, answer == call.arguments[1] ? "clamp_lo" : "clamp_hi"});
   }
 
   // The value of a float literal, possibly negated or parenthesised, or of a
@@ -360,6 +372,7 @@ class MathRewriter {
   std::map<std::pair<FileId, uint32_t>, SpelledName> names_;
   std::map<std::pair<FileId, uint32_t>, DivisionSite> divisions_;  // by the spelled `/`
   std::vector<SourceRange> conversions_;  // uint arguments of float constructors
+  std::vector<std::pair<SourceRange, std::string>> folded_clamps_;  // callee, helper
 };
 
 }  // namespace

@@ -13,8 +13,8 @@ namespace shaderport::glsl {
 // `S(name)` below is "shaderport_name", `Z` the opaque zero: subtracted from a
 // constant that the caller's constants must not be folded into (Mesa turns
 // `(x * 0.5) * 1.44` into `x * 0.72`; SwiftShader multiplies twice). One line each.
-const std::array<Helper, 33>& CpuMathHelpers() {
-  static const std::array<Helper, 33> helpers = {{
+const std::array<Helper, 36>& CpuMathHelpers() {
+  static const std::array<Helper, 36> helpers = {{
       // Sin5: A x^5 + B x^3 + C x on [-1/4, 1/4] (argument in turns).
       {"sin5",
        Shape::kInternal,
@@ -163,20 +163,36 @@ const std::array<Helper, 33>& CpuMathHelpers() {
        "= mix(x1, y1, o); float y2 = mix(y1, x1, o); bool inf_y = isinf(y2); float t = "
        "S(atan01)(y2 / x2); theta += mix(mix(0.0, 0.7853982, inf_y), mix(t, 1.5707964 - t, o), "
        "x2 != 0.0 && !inf_y); return mix(theta, -t, s && q && o && !inf_y); }"},
-      // SwiftShader's dFdx is coarse, the top row's difference for the whole 2x2 quad
-      // (v1 - v0 in every lane); llvmpipe's is per row. In the odd row, v - dFdy(v) is
-      // the even row's value, exactly when the difference is. Its dFdy is already
-      // the coarse one (measured). fwidth = |dFdx| + |dFdy| of those, and -0.0 where
-      // both are 0 (measured in Chromium: 1.0 / fwidth(c) is -inf there).
+      // SwiftShader's derivatives are coarse: dFdx is the top row's difference and dFdy
+      // the left column's for the whole 2x2 quad; llvmpipe's are per row and per column.
+      // In the odd row, v - dFdy(v) is the even row's value (in the odd column,
+      // v - dFdx(v) the even column's), exactly when the difference is. fwidth =
+      // |dFdx| + |dFdy| of those, and -0.0 where both are 0 (measured in Chromium:
+      // 1.0 / fwidth(c) is -inf there).
+      // clamp(x, lo, hi) that the optimiser answers from x and one bound (see
+      // cpu_browser_math.cpp): the call keeps every argument, and returns that bound.
+      {"clamp_lo",
+       Shape::kInternal,
+       {},
+       "float S(clamp_lo)(float x, float lo, float hi) { return lo; }"},
+      {"clamp_hi",
+       Shape::kInternal,
+       {},
+       "float S(clamp_hi)(float x, float lo, float hi) { return hi; }"},
       {"dFdx",
        Shape::kUnary,
        {},
        "float S(dFdx)(float v) { return dFdx(mod(floor(gl_FragCoord.y), 2.0) > 0.5 ? v - dFdy(v) "
        ": v); }"},
+      {"dFdy",
+       Shape::kUnary,
+       {},
+       "float S(dFdy)(float v) { return dFdy(mod(floor(gl_FragCoord.x), 2.0) > 0.5 ? v - dFdx(v) "
+       ": v); }"},
       {"fwidth",
        Shape::kUnary,
-       {"dFdx"},
-       "float S(fwidth)(float v) { float f = abs(S(dFdx)(v)) + abs(dFdy(v)); return f == 0.0 ? "
+       {"dFdx", "dFdy"},
+       "float S(fwidth)(float v) { float f = abs(S(dFdx)(v)) + abs(S(dFdy)(v)); return f == 0.0 ? "
        "-f : f; }"},
       // SwiftShader's min and max are x86's minps/maxps: the second operand when either
       // is NaN (min(1.0, NaN) is NaN, llvmpipe gives 1.0). The comparison is xored

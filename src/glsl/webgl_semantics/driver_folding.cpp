@@ -1,9 +1,24 @@
 #include "glsl/webgl_semantics/driver_folding.h"
 
+#include <algorithm>
+#include <array>
+#include <string_view>
+
 #include "glsl/webgl_semantics/semantics_context.h"
 
 namespace shaderport::glsl {
 namespace {
+
+// The GLSL.std.450 instructions that spirv-opt's constant folding evaluates (its
+// const_folding_rules), the optimiser SwiftShader runs on what ANGLE emits; every other
+// built-in (radians, abs, floor, fract, mod, length, normalize, smoothstep, ...) is
+// computed at run time unless ANGLE folded the whole call (measured in Chromium 156).
+bool OptimiserFoldsBuiltin(std::string_view name) {
+  static constexpr std::array<std::string_view, 17> kFolded = {
+      "min",  "max", "clamp", "mix",  "sin",  "cos",  "tan", "asin", "acos",
+      "atan", "exp", "log",   "exp2", "log2", "sqrt", "pow", "dot"};
+  return std::find(kFolded.begin(), kFolded.end(), name) != kFolded.end();
+}
 
 bool IsIncrementOrDecrement(UnaryOp op) {
   return op == UnaryOp::kPreIncrement || op == UnaryOp::kPreDecrement ||
@@ -32,13 +47,19 @@ const Node* DriverFolding::Parent(const Node& node) const {
 
 bool DriverFolding::IsFolded(const Expr* expr) const { return IsFolded(expr, 0); }
 
+// Folded by ANGLE (a constant expression, built-in calls included) or by the optimiser
+// after ANGLE: what reaches it through variables and parameters folds only through the
+// operators, constructors and built-ins it evaluates.
 bool DriverFolding::IsFolded(const Expr* expr, int depth) const {
   return IsConstantTree(
       expr, model_,
       [this](const Expr& identifier, int at) {
         return SymbolIsFolded(model_.SymbolAt(identifier.id), at);
       },
-      depth);
+      depth,
+      [this](const CallExpr& call) {
+        return OptimiserFoldsBuiltin(call.callee.text) || IsConstantExpression(&call, model_);
+      });
 }
 
 bool DriverFolding::SymbolIsFolded(uint32_t symbol_id, int depth) const {

@@ -73,10 +73,12 @@ struct SemanticsContext {
 // operators, constructors and built-in calls (not texture or derivative ones) on them.
 bool IsConstantExpression(const Expr* expr, const SemanticModel& model);
 // The walk under both: literals, operators, constructors and foldable built-ins on
-// constants, with `identifier` deciding for each name (`depth` grows along the walk).
+// constants, with `identifier` deciding for each name (`depth` grows along the walk)
+// and `builtin`, when given, for each built-in call (whose arguments must fold too).
 bool IsConstantTree(const Expr* expr, const SemanticModel& model,
                     const std::function<bool(const Expr& identifier, int depth)>& identifier,
-                    int depth = 0);
+                    int depth = 0,
+                    const std::function<bool(const CallExpr& call)>& builtin = nullptr);
 // True when `node` is inside the body of a function (not in a global initializer).
 bool InsideFunctionBody(const SemanticsContext& context, const Node& node);
 

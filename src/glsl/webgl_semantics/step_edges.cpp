@@ -2,7 +2,9 @@
 // SwiftShader in Chromium) compute (x - a) / 0 = +-inf and clamp it, i.e. a step,
 // but llvmpipe folds the division under fast-math assumptions and draws garbage.
 // Calls of the built-in are renamed to shaderport_smoothstep, whose a == b case is
-// the step a browser draws (0 where x <= a, 1 where x > a; measured in Chromium).
+// the step a browser draws (0 where x <= a, 1 where x > a; measured in Chromium),
+// turned round when b - a is -0.0 (a = +0.0, b = -0.0, as `0.5 * fwidth(d)` can give):
+// (x - a) / -0.0 is -inf where x > a.
 // The name is also renamed inside macro bodies (`#define S(x, w) smoothstep(-w, w, x)`):
 // there it can only mean the built-in. Nothing is renamed when a call is outside a
 // function body (a constant initializer may call the built-in, not a function).
@@ -27,10 +29,12 @@ constexpr std::string_view kName = "shaderport_smoothstep";
 // which Mesa's front end compiles as branches (a large part of a call-heavy pass's compile).
 constexpr std::string_view kScalarHelper =
     "float shaderport_smoothstep(float a, float b, float x) { float t = clamp((x - a) / (b - a), "
-    "0.0, 1.0); return mix(t * t * (3.0 - 2.0 * t), float(x > a), a == b); } ";
+    "0.0, 1.0); return mix(t * t * (3.0 - 2.0 * t), mix(float(x > a), float(x < a), "
+    "floatBitsToInt(b - a) < 0), a == b); } ";
 constexpr std::string_view kVectorHelpers =
     "@ shaderport_smoothstep(@ a, @ b, @ x) { @ t = clamp((x - a) / (b - a), 0.0, 1.0); t = t * "
-    "t * (3.0 - 2.0 * t); return mix(t, @(greaterThan(x, a)), equal(a, b)); } "
+    "t * (3.0 - 2.0 * t); return mix(t, mix(@(greaterThan(x, a)), @(lessThan(x, a)), "
+    "lessThan(floatBitsToInt(b - a), i@(0))), equal(a, b)); } "
     "@ shaderport_smoothstep(float a, float b, @ x) { return shaderport_smoothstep(@(a), @(b), "
     "x); } ";
 
@@ -40,11 +44,13 @@ constexpr std::string_view kOpaqueZero = "shaderport_edge_zero";
 constexpr std::string_view kOpaqueScalarHelper =
     "float shaderport_smoothstep(float a, float b, float x) { a = mix(a, -a, Z < 0.0); b = mix(b, "
     "-b, Z < 0.0); x = mix(x, -x, Z < 0.0); float t = clamp((x - a) / (b - a), 0.0, 1.0); return "
-    "mix((t * t * (3.0 - 2.0 * t)) - Z, float(x > a), a == b); } ";
+    "mix((t * t * (3.0 - 2.0 * t)) - Z, mix(float(x > a), float(x < a), floatBitsToInt(b - a) < "
+    "0), a == b); } ";
 constexpr std::string_view kOpaqueVectorHelpers =
     "@ shaderport_smoothstep(@ a, @ b, @ x) { a = mix(a, -a, b@(Z < 0.0)); b = mix(b, -b, b@(Z < "
     "0.0)); x = mix(x, -x, b@(Z < 0.0)); @ t = clamp((x - a) / (b - a), 0.0, 1.0); t = t * t * "
-    "(3.0 - 2.0 * t); return mix(t, @(greaterThan(x, a)), equal(a, b)) - Z; } "
+    "(3.0 - 2.0 * t); return mix(t, mix(@(greaterThan(x, a)), @(lessThan(x, a)), "
+    "lessThan(floatBitsToInt(b - a), i@(0))), equal(a, b)) - Z; } "
     "@ shaderport_smoothstep(float a, float b, @ x) { return shaderport_smoothstep(@(a), @(b), "
     "x); } ";
 

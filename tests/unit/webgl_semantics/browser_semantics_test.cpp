@@ -214,7 +214,9 @@ TEST(BrowserSemantics, SmoothstepIsRenamedInCallsAndMacroBodies) {
                 "shaderport_b, highp float shaderport_x) { highp float shaderport_t = "
                 "clamp((shaderport_x - shaderport_a) / (shaderport_b - shaderport_a), 0.0, 1.0); "
                 "return mix(shaderport_t * shaderport_t * (3.0 - 2.0 * shaderport_t), "
-                "float(shaderport_x > shaderport_a), shaderport_a == shaderport_b); }"),
+                "mix(float(shaderport_x > shaderport_a), float(shaderport_x < shaderport_a), "
+                "floatBitsToInt(shaderport_b - shaderport_a) < 0), shaderport_a == "
+                "shaderport_b); }"),
       std::string::npos);
 }
 

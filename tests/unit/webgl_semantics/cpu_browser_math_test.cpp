@@ -150,6 +150,22 @@ TEST(CpuBrowserMath, ValuesTheDriverPropagatesAsConstantsKeepTheBuiltIn) {
                        "r(gl_FragCoord.y) + r(1.0) + gl_FragCoord.x * (1.0 / (a))); }\n"));
 }
 
+TEST(CpuBrowserMath, BuiltinsTheOptimiserCannotFoldKeepValuesRunTime) {
+  // f's parameter is 45.0 at every call: the optimiser folds tan of a constant but not
+  // radians, so tan(radians(fov)) is computed at run time (with SwiftShader's tan),
+  // unlike tan(radians(45.0)), which ANGLE folds whole.
+  const auto result = Apply(
+      "float f(float fov) { return tan(radians(fov)) + tan(fov) + sin(abs(fov)); }\n"
+      "void main() { o = vec4(f(45.0), tan(radians(45.0)), 0.0, 1.0); }\n",
+      MathOnly());
+  const std::string body = Body(result);
+  EXPECT_TRUE(Contains(body,
+                       "float f(float fov) { return shaderport_tan(radians(fov)) + tan(fov) + "
+                       "shaderport_sin(abs(fov)); }"))
+      << body;
+  EXPECT_TRUE(Contains(body, "o = vec4(f(45.0), tan(radians(45.0)), 0.0, 1.0); }")) << body;
+}
+
 TEST(CpuBrowserMath, BooleanMixIsASelectionAndStays) {
   const auto result = Apply(
       "void main() { vec2 p = gl_FragCoord.xy; o = vec4(mix(p, -p, lessThan(p, vec2(3.0))), "
@@ -256,9 +272,24 @@ TEST(CpuBrowserMath, ClampOfAConstantIsAnsweredFromOneBound) {
       MathOnly());
   EXPECT_EQ(result.folded_clamps, 2U);
   EXPECT_TRUE(Contains(Body(result),
-                       "o = vec4((2.0), (-1.0), clamp(h, 0.0, 1.0), "
-                       "clamp(0.5, 0.0, h)); }"))
+                       "o = vec4(shaderport_clamp_lo(0.02, 2.0, h), shaderport_clamp_hi(k, h, "
+                       "-1.0), clamp(h, 0.0, 1.0), clamp(0.5, 0.0, h)); }"))
       << Body(result);
+}
+
+TEST(CpuBrowserMath, FoldedClampKeepsTheEditsInsideItsArguments) {
+  // The division in the unused bound is rewritten as well; cutting that bound's text
+  // away would overlap its edit, and every edit of the part would be lost.
+  const auto result = Apply(
+      "void main() { float h = gl_FragCoord.x; float l = clamp(0.0, 1.0, (h - 1.0) / 0.5);\n"
+      "o = vec4(l, sin(h), 0.0, 1.0); }\n",
+      MathOnly());
+  EXPECT_EQ(result.folded_clamps, 1U);
+  EXPECT_EQ(result.divisions, 1U);
+  EXPECT_TRUE(
+      Contains(Body(result), "float l = shaderport_clamp_lo(0.0, 1.0, (h - 1.0) * (1.0 / (0.5)));"))
+      << Body(result);
+  EXPECT_TRUE(Contains(Body(result), "shaderport_sin(h)")) << Body(result);
 }
 
 TEST(CpuBrowserMath, MacroBodiesAreRenamedOnlyWhenEveryUseMayBe) {
@@ -306,17 +337,21 @@ TEST(CpuBrowserMath, OffByDefaultAndForGlslEs100) {
 }
 
 TEST(CpuBrowserMath, DerivativesAreCoarseAsInChromium) {
-  // dFdx and fwidth take the quad's first row (the odd row reads it through dFdy, which
-  // llvmpipe already computes from the first column); dFdy itself stays.
+  // dFdx takes the quad's first row (the odd row reads it through dFdy), dFdy its first
+  // column (the odd column reads it through dFdx): llvmpipe's are per row and column.
   const auto result = Apply(
       "void main() { float v = gl_FragCoord.x * gl_FragCoord.y;\n"
       "o = vec4(dFdx(v), dFdy(v), fwidth(vec2(v)).x, 1.0); }\n",
       MathOnly());
-  EXPECT_EQ(result.math_calls, 2U);
+  EXPECT_EQ(result.math_calls, 3U);
   const std::string body = Body(result);
   EXPECT_TRUE(Contains(body,
-                       "o = vec4(shaderport_dFdx(v), dFdy(v), shaderport_fwidth(vec2(v)).x, "
-                       "1.0); }"))
+                       "o = vec4(shaderport_dFdx(v), shaderport_dFdy(v), "
+                       "shaderport_fwidth(vec2(v)).x, 1.0); }"))
+      << body;
+  EXPECT_TRUE(Contains(body,
+                       "return (dFdy(mod(floor(gl_FragCoord.x), 2.0) > 0.5 ? shaderport_v - "
+                       "dFdx(shaderport_v) : shaderport_v)) - shaderport_zero; }"))
       << body;
   EXPECT_TRUE(Contains(body,
                        "return (dFdx(mod(floor(gl_FragCoord.y), 2.0) > 0.5 ? shaderport_v - "
