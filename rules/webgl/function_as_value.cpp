@@ -5,7 +5,9 @@
 //
 //   float t = floor;           // error: floor(x)
 //   uniform int abs;  ... abs(x)   // error: the variable hides abs()
+#include <map>
 #include <string>
+#include <string_view>
 
 #include "glsl/sema/builtins.h"
 #include "glsl/syntax/visit.h"
@@ -43,18 +45,21 @@ class FunctionAsValueRule final : public rule::Rule {
         });
     // Calls of a built-in whose name a global variable declared before them hides.
     const glsl::SemanticModel& model = context.Model();
+    std::multimap<std::string_view, const glsl::Symbol*> hiding;  // by name, in symbol order
+    for (const glsl::Symbol& variable : model.symbols) {
+      if (variable.kind == glsl::SymbolKind::kVariable && variable.scope == 0 &&
+          !variable.predeclared && variable.declaration != glsl::kNoNode &&
+          glsl::IsBuiltinFunctionName(variable.name)) {
+        hiding.emplace(variable.name, &variable);
+      }
+    }
+    if (hiding.empty()) return;
     glsl::ForEachNodeOf(context.Tree(), {glsl::NodeKind::kCallExpr}, [&](const glsl::Node& node) {
       const auto& call = *node.As<glsl::CallExpr>();
-      if (call.call_kind != glsl::CallKind::kFunction ||
-          !glsl::IsBuiltinFunctionName(call.callee.text)) {
-        return;
-      }
-      for (uint32_t symbol : model.FindSymbols(call.callee.text)) {
-        const glsl::Symbol& variable = model.symbols[symbol];
-        if (variable.kind != glsl::SymbolKind::kVariable || variable.scope != 0 ||
-            variable.predeclared || variable.declaration == glsl::kNoNode) {
-          continue;
-        }
+      if (call.call_kind != glsl::CallKind::kFunction) return;
+      const auto [begin, end] = hiding.equal_range(call.callee.text);
+      for (auto found = begin; found != end; ++found) {
+        const glsl::Symbol& variable = *found->second;
         const SourceRange& declared = context.Tree().NodeAt(variable.declaration).range;
         if (declared.file != call.callee.range.file || declared.begin > call.callee.range.begin) {
           continue;

@@ -4,9 +4,9 @@
 #include <array>
 #include <cctype>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
-#include <regex>
 #include <set>
 #include <string>
 #include <utility>
@@ -15,6 +15,7 @@
 #include "glsl/sema/builtins.h"
 #include "glsl/syntax/visit.h"
 #include "rules/webgl/constant_expression.h"
+#include "rules/webgl/directive_text.h"
 #include "rules/webgl/glslang_only_functions.h"
 #include "rules/webgl/webgl_support.h"
 
@@ -373,13 +374,12 @@ bool SpelledIn(const glsl::Name& name, FileId part, const std::string& text) {
 // name anywhere (ANGLE's `identifier: IDENTIFIER | TYPE_NAME`), glslang only right
 // after a type, so `, d1` is its syntax error. In the same scope both call it a
 // redefinition.
-bool HidesStructName(const glsl::SemanticModel& model, const glsl::Symbol& variable) {
+// `structs`: the scopes of the unit's struct types, by name.
+bool HidesStructName(const std::multimap<std::string_view, uint32_t>& structs,
+                     const glsl::Symbol& variable) {
   if (variable.kind != glsl::SymbolKind::kVariable || variable.scope == 0) return false;
-  const auto ids = model.FindSymbols(variable.name);
-  return std::any_of(ids.begin(), ids.end(), [&](uint32_t other) {
-    return model.symbols[other].kind == glsl::SymbolKind::kStruct &&
-           model.symbols[other].scope != variable.scope;
-  });
+  const auto [begin, end] = structs.equal_range(variable.name);
+  return std::any_of(begin, end, [&](const auto& other) { return other.second != variable.scope; });
 }
 
 // Renames, in `text` (the user's file), every function browsers let the shader declare
@@ -391,6 +391,10 @@ void RenameDeclarableBuiltins(const BrowserContext& context, FileId part, std::s
   const glsl::SemanticModel& model = *context.model;
   std::set<uint32_t> renamed;
   std::set<uint32_t> hiding_struct;  // renamed only when every name of them is in `text`
+  std::multimap<std::string_view, uint32_t> structs;
+  for (const glsl::Symbol& symbol : model.symbols) {
+    if (symbol.kind == glsl::SymbolKind::kStruct) structs.emplace(symbol.name, symbol.scope);
+  }
   for (uint32_t i = 0; i < model.symbols.size(); ++i) {
     const glsl::Symbol& symbol = model.symbols[i];
     if (symbol.predeclared) continue;
@@ -402,7 +406,7 @@ void RenameDeclarableBuiltins(const BrowserContext& context, FileId part, std::s
                         ((context.version >= 300 && glsl::IsBuiltinFunctionName(symbol.name)) ||
                          GlslangOnlyFunctionName(context, symbol.name));
     if (function || global) renamed.insert(i);
-    if (HidesStructName(model, symbol)) renamed.insert(i), hiding_struct.insert(i);
+    if (HidesStructName(structs, symbol)) renamed.insert(i), hiding_struct.insert(i);
   }
   if (!hiding_struct.empty()) {
     VisitNames(context, [&](const glsl::Name& name, uint32_t symbol) {
@@ -586,8 +590,8 @@ void ReplaceLineMacro(const BrowserContext& context, FileId part, std::string& t
       line_start = i + 1;
       continue;
     }
-    if (in_define || text.compare(i, 8, "__LINE__") != 0 || (i > 0 && IsWordChar(text[i - 1])) ||
-        (i + 8 < text.size() && IsWordChar(text[i + 8]))) {
+    if (in_define || !directive_text::StartsAt(text, i, "__LINE__") ||
+        (i > 0 && IsWordChar(text[i - 1])) || (i + 8 < text.size() && IsWordChar(text[i + 8]))) {
       continue;
     }
     std::string number = std::to_string(line);
@@ -734,6 +738,25 @@ void EmptyInactiveLines(const BrowserContext& context, FileId part, std::string&
 // directive there: the macro and its uses get a same-length alias, so that glslang,
 // like a browser, reads the name in the body as the function it is (a built-in or the
 // shader's own) and never as the macro again. Returns the macros renamed.
+// Whether the name at `at` in a directive line means the macro: after `#undef`,
+// `#ifdef`, `#ifndef` or `defined`, or called (`NAME (`) in another macro's body.
+bool NamesTheMacro(std::string_view directive, size_t at, size_t length) {
+  size_t after = at + length;
+  while (after < directive.size() && (directive[after] == ' ' || directive[after] == '\t')) ++after;
+  if (after < directive.size() && directive[after] == '(') return true;
+  size_t keyword_end = at;
+  while (keyword_end > 0 &&
+         (directive[keyword_end - 1] == ' ' || directive[keyword_end - 1] == '\t' ||
+          directive[keyword_end - 1] == '(')) {
+    --keyword_end;
+  }
+  size_t keyword_begin = keyword_end;
+  while (keyword_begin > 0 && directive_text::IsWordChar(directive[keyword_begin - 1]))
+    --keyword_begin;
+  const std::string_view keyword = directive.substr(keyword_begin, keyword_end - keyword_begin);
+  return keyword == "undef" || keyword == "ifdef" || keyword == "ifndef" || keyword == "defined";
+}
+
 std::set<std::string> RenameSelfNamingMacros(const BrowserContext& context, FileId part,
                                              std::string_view original, std::string& text) {
   const glsl::PreprocessResult& pp = *context.preprocessed;
@@ -743,11 +766,12 @@ std::set<std::string> RenameSelfNamingMacros(const BrowserContext& context, File
   };
   // Function-like macros of the unit whose body names the macro itself.
   std::set<std::string> self_naming;
+  std::set<std::pair<FileId, uint32_t>> definitions_read;
   for (const glsl::MacroUse& use : pp.macro_uses) {
     const SourceRange& at = use.definition;
     const std::string_view defined_in = original_of(at.file);
     if (at.end >= defined_in.size() || defined_in[at.end] != '(' ||
-        self_naming.contains(use.name)) {
+        self_naming.contains(use.name) || !definitions_read.insert({at.file, at.begin}).second) {
       continue;
     }
     size_t end = at.end;
@@ -756,9 +780,9 @@ std::set<std::string> RenameSelfNamingMacros(const BrowserContext& context, File
     }
     const size_t body = defined_in.find(')', at.end);
     if (body == std::string_view::npos || body >= end) continue;
-    const std::regex names_itself("\\b" + use.name + "\\b");
-    const std::string text_of_body(defined_in.substr(body + 1, end - body - 1));
-    if (std::regex_search(text_of_body, names_itself)) self_naming.insert(use.name);
+    if (directive_text::ContainsWord(defined_in.substr(body + 1, end - body - 1), use.name)) {
+      self_naming.insert(use.name);
+    }
   }
   // An alias must be new to every part, and the same in each of them.
   const std::string unit_text = UnitText(context, original);
@@ -791,23 +815,18 @@ std::set<std::string> RenameSelfNamingMacros(const BrowserContext& context, File
     // The directives that name the macro name the alias: `#undef NAME`, `#ifdef NAME`,
     // `#ifndef NAME`, `defined(NAME)`, and calls of it in other macros' bodies (its own
     // body calls the function, which keeps the name).
-    static const std::regex kDirective(R"(^[ \t]*#[ \t]*([a-z]+)[^\n]*)", std::regex::multiline);
-    const std::regex named("\\b(undef|ifdef|ifndef|defined)([ \\t(]*)" + name + "\\b|\\b" + name +
-                           "(?=[ \\t]*\\()");
-    const std::regex own_definition("^[ \\t]*#[ \\t]*define[ \\t]+" + name + "\\(");
-    for (auto line = std::sregex_iterator(whole.begin(), whole.end(), kDirective);
-         line != std::sregex_iterator(); ++line) {
-      const std::string directive = line->str(0);
-      if (std::regex_search(directive, own_definition)) continue;  // renamed above
-      for (auto use = std::sregex_iterator(directive.begin(), directive.end(), named);
-           use != std::sregex_iterator(); ++use) {
-        const size_t at = static_cast<size_t>(line->position(0) + use->position(0)) +
-                          (use->str(1).empty() ? 0 : use->length(1) + use->length(2));
+    directive_text::ForEachLine(whole, [&](std::string_view directive, size_t line_begin) {
+      if (directive_text::DirectiveKeyword(directive).empty()) return;
+      const auto define = directive_text::ParseDefine(directive);
+      if (define && define->function_like && define->name == name) return;  // renamed above
+      directive_text::ForEachIdentifier(directive, [&](std::string_view word, size_t at) {
+        if (word != name || !NamesTheMacro(directive, at, name.size())) return;
+        at += line_begin;
         if (at + name.size() <= text.size() && text.compare(at, name.size(), name) == 0) {
           text.replace(at, alias.size(), alias);
         }
-      }
-    }
+      });
+    });
     renamed.insert(name);
   }
   return renamed;
@@ -821,9 +840,15 @@ void ExpandMacroUses(const BrowserContext& context, FileId part, std::string_vie
   const std::set<std::string> renamed = RenameSelfNamingMacros(context, part, original, text);
   // `F()`, and any use with an empty argument (`M(h, 2, )`): glslang also trips on the
   // empty argument once the macro's body passes it on to another macro.
-  static const std::regex kEmptyUse(R"(^[A-Za-z_][A-Za-z0-9_]*[ \t]*\([ \t]*\)$)");
-  static const std::regex kEmptyArgument(R"(\([ \t]*,|,[ \t]*,|,[ \t]*\))");
   const glsl::PreprocessResult& pp = *context.preprocessed;
+  // The tokens of each top-level macro use of the part, by where the use is spelled.
+  std::map<std::pair<uint32_t, uint32_t>, std::vector<std::string_view>> expansions;
+  for (const glsl::PpToken& token : pp.tokens) {
+    if (token.macro_use != glsl::kNoMacroUse && token.expansion.file == part &&
+        token.kind != glsl::TokenKind::kEndOfFile) {
+      expansions[{token.expansion.begin, token.expansion.end}].push_back(token.text);
+    }
+  }
   struct Replacement {
     SourceRange range;
     std::vector<std::string_view> tokens;
@@ -841,15 +866,15 @@ void ExpandMacroUses(const BrowserContext& context, FileId part, std::string_vie
       continue;
     }
     Replacement replacement{use.use, {}, {}};
-    for (const glsl::PpToken& token : pp.tokens) {
-      if (token.expansion.file == use.use.file && token.expansion.begin == use.use.begin &&
-          token.expansion.end == use.use.end && token.kind != glsl::TokenKind::kEndOfFile) {
-        replacement.tokens.push_back(token.text);
-        if (token.text == use.name) replacement.self = use.name;
+    if (const auto tokens = expansions.find({use.use.begin, use.use.end});
+        tokens != expansions.end()) {
+      replacement.tokens = tokens->second;
+      for (const std::string_view token : replacement.tokens) {
+        if (token == use.name) replacement.self = use.name;
       }
     }
-    if (replacement.self.empty() && !std::regex_match(spelled, kEmptyUse) &&
-        !std::regex_search(spelled, kEmptyArgument)) {
+    if (replacement.self.empty() && !directive_text::IsEmptyCall(spelled) &&
+        !directive_text::HasEmptyArgument(spelled)) {
       continue;
     }
     if (!replacement.self.empty() && !aliases.contains(use.name)) {
@@ -904,12 +929,12 @@ TextLines LinesOf(const std::string& text) {
   TextLines lines{{0}, {false}};
   bool block = false;
   for (size_t i = 0; i < text.size(); ++i) {
-    if (!block && text.compare(i, 2, "//") == 0) {
+    if (!block && directive_text::StartsAt(text, i, "//")) {
       while (i + 1 < text.size() && text[i + 1] != '\n') ++i;
-    } else if (!block && text.compare(i, 2, "/*") == 0) {
+    } else if (!block && directive_text::StartsAt(text, i, "/*")) {
       block = true;
       ++i;
-    } else if (block && text.compare(i, 2, "*/") == 0) {
+    } else if (block && directive_text::StartsAt(text, i, "*/")) {
       block = false;
       ++i;
     } else if (text[i] == '\n') {
@@ -918,6 +943,45 @@ TextLines LinesOf(const std::string& text) {
     }
   }
   return lines;
+}
+
+// `#define NAME(PARAMETER) BODY`: NAME and BODY.
+struct OneParameterMacro {
+  std::string_view name;
+  std::string_view body;
+};
+std::optional<OneParameterMacro> OneParameterDefine(std::string_view line) {
+  const auto define = directive_text::ParseDefine(line);
+  if (!define || !define->function_like) return std::nullopt;
+  const auto blank = [&](size_t at) {
+    while (at < line.size() && (line[at] == ' ' || line[at] == '\t')) ++at;
+    return at;
+  };
+  const size_t parameter = blank(define->name_end + 1);
+  if (parameter >= line.size() || directive_text::IsWordChar(line[parameter]) == false ||
+      (line[parameter] >= '0' && line[parameter] <= '9')) {
+    return std::nullopt;
+  }
+  size_t parameter_end = parameter;
+  while (parameter_end < line.size() && directive_text::IsWordChar(line[parameter_end])) {
+    ++parameter_end;
+  }
+  const size_t close = blank(parameter_end);
+  if (close >= line.size() || line[close] != ')') return std::nullopt;
+  return OneParameterMacro{define->name, line.substr(close + 1)};
+}
+
+// Calls `call(name, begin, end)` for each `NAME()` (blanks allowed) in `text`.
+template <typename Callback>
+void ForEachEmptyCall(std::string_view text, Callback&& call) {
+  directive_text::ForEachIdentifier(text, [&](std::string_view name, size_t at) {
+    size_t next = at + name.size();
+    while (next < text.size() && (text[next] == ' ' || text[next] == '\t')) ++next;
+    if (next >= text.size() || text[next] != '(') return;
+    ++next;
+    while (next < text.size() && (text[next] == ' ' || text[next] == '\t')) ++next;
+    if (next < text.size() && text[next] == ')') call(name, at, next + 1);
+  });
 }
 
 // `F()` in the body of a `#define`, F a one-parameter macro of this part: browsers pass
@@ -932,8 +996,6 @@ void PassEmptyArgumentsInMacroBodies(const BrowserContext& context, FileId part,
       text.find("()") == std::string::npos) {
     return;
   }
-  static const std::regex kOneParameterDefine(
-      R"(^[ \t]*#[ \t]*define[ \t]+([A-Za-z_][A-Za-z0-9_]*)\([ \t]*[A-Za-z_][A-Za-z0-9_]*[ \t]*\)(.*)$)");
   const TextLines lines = LinesOf(text);
   const auto line_text = [&](size_t line) {
     const size_t begin = lines.starts[line];
@@ -951,11 +1013,10 @@ void PassEmptyArgumentsInMacroBodies(const BrowserContext& context, FileId part,
   for (size_t line = 0; line < lines.starts.size(); ++line) {
     const std::string first = line_text(line);
     if (lines.in_comment[line] || first.find("#") == std::string::npos) continue;
-    std::smatch match;
-    const bool define = std::regex_match(first, match, kOneParameterDefine);
-    static const std::regex kDefine(R"(^[ \t]*#[ \t]*define\b.*$)");
-    if (!define && !std::regex_match(first, kDefine)) continue;
-    std::string body = define ? match[2].str() : first;
+    const auto one = OneParameterDefine(first);
+    const bool define = one.has_value();
+    if (!define && !directive_text::IsDirective(first, "define")) continue;
+    std::string body = define ? std::string(one->body) : first;
     size_t last = line;
     define_body[line] = true;
     while (continued(last) && last + 1 < lines.starts.size()) {
@@ -963,22 +1024,19 @@ void PassEmptyArgumentsInMacroBodies(const BrowserContext& context, FileId part,
       define_body[last] = true;
       body += line_text(last);
     }
-    if (define && body.find("##") == std::string::npos) one_parameter.insert(match[1].str());
+    if (define && body.find("##") == std::string::npos)
+      one_parameter.insert(std::string(one->name));
     line = last;
   }
   if (one_parameter.empty()) return;
-  static const std::regex kEmptyCall(R"(\b([A-Za-z_][A-Za-z0-9_]*)[ \t]*\([ \t]*\))");
   std::vector<size_t> with_empty_calls;
   for (size_t line = 0; line < lines.starts.size(); ++line) {
     if (!define_body[line]) continue;
-    const std::string body = line_text(line);
-    for (auto it = std::sregex_iterator(body.begin(), body.end(), kEmptyCall);
-         it != std::sregex_iterator(); ++it) {
-      if (one_parameter.contains((*it)[1].str())) {
-        with_empty_calls.push_back(line);
-        break;
-      }
-    }
+    bool found = false;
+    ForEachEmptyCall(line_text(line), [&](std::string_view name, size_t, size_t) {
+      found = found || one_parameter.contains(std::string(name));
+    });
+    if (found) with_empty_calls.push_back(line);
   }
   if (with_empty_calls.empty()) return;
   // A blank line before them, outside comments, skipped groups and continued lines.
@@ -1011,13 +1069,11 @@ void PassEmptyArgumentsInMacroBodies(const BrowserContext& context, FileId part,
     const std::string body = line_text(*line);
     std::string rewritten;
     size_t copied = 0;
-    for (auto it = std::sregex_iterator(body.begin(), body.end(), kEmptyCall);
-         it != std::sregex_iterator(); ++it) {
-      if (!one_parameter.contains((*it)[1].str())) continue;
-      rewritten +=
-          body.substr(copied, it->position(0) - copied) + (*it)[1].str() + "(" + empty + ")";
-      copied = it->position(0) + it->length(0);
-    }
+    ForEachEmptyCall(body, [&](std::string_view name, size_t begin, size_t end) {
+      if (!one_parameter.contains(std::string(name))) return;
+      rewritten += body.substr(copied, begin - copied) + std::string(name) + "(" + empty + ")";
+      copied = end;
+    });
     rewritten += body.substr(copied);
     text.replace(lines.starts[*line], body.size(), rewritten);
   }
@@ -1038,15 +1094,15 @@ void BlankContinuedLineComments(std::string& text) {
   bool block = false;
   for (size_t i = 0; i < text.size(); ++i) {
     if (block) {
-      if (text.compare(i, 2, "*/") == 0) block = false, ++i;
+      if (directive_text::StartsAt(text, i, "*/")) block = false, ++i;
       continue;
     }
-    if (text.compare(i, 2, "/*") == 0) {
+    if (directive_text::StartsAt(text, i, "/*")) {
       block = true;
       ++i;
       continue;
     }
-    if (text.compare(i, 2, "//") != 0) continue;
+    if (!directive_text::StartsAt(text, i, "//")) continue;
     // To the end of the comment: line breaks after a backslash do not end it.
     size_t end = i;
     bool continued = false;
@@ -1104,9 +1160,6 @@ std::string JoinContinuedLines(const BrowserContext& context, const std::string&
 // glslang's `#if` takes it ("64"); a name defined with two values is left out.
 std::map<std::string, std::string> UnsignedLiteralMacros(const BrowserContext& context,
                                                          const SourceFile& part) {
-  static const std::regex kUnsignedDefine(
-      R"(^[ \t]*#[ \t]*define[ \t]+([A-Za-z_][A-Za-z0-9_]*)[ \t]+\(?[ \t]*(0[xX][0-9a-fA-F]+|[0-9]+)[uU][ \t]*\)?[ \t]*(//.*)?\r?$)",
-      std::regex::multiline);
   std::map<std::string, std::string> values;
   std::set<std::string> ambiguous;
   const auto skipped = [&](FileId file, size_t at) {
@@ -1117,14 +1170,14 @@ std::map<std::string, std::string> UnsignedLiteralMacros(const BrowserContext& c
                        });
   };
   const auto scan = [&](const SourceFile& file) {
-    const std::string text(file.Text());
-    if (text.find("define") == std::string::npos) return;
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), kUnsignedDefine);
-         it != std::sregex_iterator(); ++it) {
-      if (skipped(file.Id(), static_cast<size_t>(it->position()))) continue;
-      const auto [at, added] = values.emplace((*it)[1].str(), (*it)[2].str());
-      if (!added && at->second != (*it)[2].str()) ambiguous.insert(at->first);
-    }
+    const std::string_view text = file.Text();
+    if (text.find("define") == std::string_view::npos) return;
+    directive_text::ForEachLine(text, [&](std::string_view line, size_t line_begin) {
+      auto define = directive_text::ParseUnsignedDefine(line);
+      if (!define || skipped(file.Id(), line_begin)) return;
+      const auto [at, added] = values.emplace(define->name, define->value);
+      if (!added && at->second != define->value) ambiguous.insert(at->first);
+    });
   };
   scan(part);
   for (const SourceFile* unit_part : context.parts) {
@@ -1134,53 +1187,52 @@ std::map<std::string, std::string> UnsignedLiteralMacros(const BrowserContext& c
   return values;
 }
 
-std::string RepairDefines(const std::string& text,
-                          const std::map<std::string, std::string>& unsigned_macros) {
-  static const std::regex kCondition(R"(^[ \t]*#[ \t]*(el)?if\b.*$)");
-  static const std::regex kUnsignedLiteral(R"(\b(0[xX][0-9a-fA-F]+|[0-9]+)[uU]\b)");
-  static const std::regex kWord(R"(\b[A-Za-z_][A-Za-z0-9_]*\b)");
-  static const std::regex kDefine(R"(^([ \t]*#[ \t]*define[ \t]+[A-Za-z_][A-Za-z0-9_]*)(.*)$)");
+// `unsigned_macros` is called at the first `#if` or `#elif` line, if any.
+std::string RepairDefines(
+    const std::string& text,
+    const std::function<std::map<std::string, std::string>()>& unsigned_macros) {
+  std::optional<std::map<std::string, std::string>> macros;
   std::string out;
   out.reserve(text.size() + 16);
-  size_t begin = 0;
-  while (begin <= text.size()) {
-    size_t end = text.find('\n', begin);
-    if (end == std::string::npos) end = text.size();
-    std::string line = text.substr(begin, end - begin);
-    std::smatch match;
-    if (line.find("if") != std::string::npos && std::regex_match(line, kCondition)) {
+  directive_text::ForEachLine(text, [&](std::string_view spelled, size_t line_begin) {
+    if (line_begin > 0) out += '\n';
+    if (spelled.find('#') == std::string_view::npos) {
+      out += spelled;
+      return;
+    }
+    if (directive_text::IsIfOrElif(spelled)) {
       // `#if N % 2u`: browsers take unsigned literals in #if, glslang does not; nor
       // through a macro (`#define N 64u`, `#if N == 64u`), whose value goes in its place.
-      line = std::regex_replace(line, kUnsignedLiteral, "$1");
-      if (!unsigned_macros.empty()) {
-        std::string replaced;
-        size_t copied = 0;
-        for (auto it = std::sregex_iterator(line.begin(), line.end(), kWord);
-             it != std::sregex_iterator(); ++it) {
-          const auto value = unsigned_macros.find(it->str());
-          if (value == unsigned_macros.end()) continue;
-          replaced += line.substr(copied, it->position() - copied) + value->second;
-          copied = it->position() + it->length();
-        }
-        line = replaced + line.substr(copied);
-      }
-    } else if (line.find("define") != std::string::npos && std::regex_match(line, match, kDefine)) {
-      std::string rest = match[2].str();
-      if (!rest.empty() && rest[0] == '(') {
-        const size_t close = rest.find(')');
-        const size_t last =
-            close == std::string::npos ? close : rest.find_last_not_of(" \t", close - 1);
-        if (last != std::string::npos && last > 0 && rest[last] == ',') rest[last] = ' ';
-      } else if (!rest.empty() && rest[0] != ' ' && rest[0] != '\t' && rest[0] != '\r') {
-        rest.insert(0, " ");
-      }
-      line = match[1].str() + rest;
+      const std::string line = directive_text::WithoutUnsignedSuffixes(spelled);
+      if (!macros) macros = unsigned_macros();
+      size_t copied = 0;
+      directive_text::ForEachIdentifier(line, [&](std::string_view word, size_t at) {
+        const auto value = macros->find(std::string(word));
+        if (value == macros->end()) return;
+        out.append(line, copied, at - copied);
+        out += value->second;
+        copied = at + word.size();
+      });
+      out.append(line, copied);
+      return;
     }
-    out += line;
-    if (end == text.size()) break;
-    out += '\n';
-    begin = end + 1;
-  }
+    const auto define = directive_text::ParseDefine(spelled);
+    if (!define) {
+      out += spelled;
+      return;
+    }
+    std::string rest(spelled.substr(define->name_end));
+    if (!rest.empty() && rest[0] == '(') {
+      const size_t close = rest.find(')');
+      const size_t last =
+          close == std::string::npos ? close : rest.find_last_not_of(" \t", close - 1);
+      if (last != std::string::npos && last > 0 && rest[last] == ',') rest[last] = ' ';
+    } else if (!rest.empty() && rest[0] != ' ' && rest[0] != '\t' && rest[0] != '\r') {
+      rest.insert(0, " ");
+    }
+    out += spelled.substr(0, define->name_end);
+    out += rest;
+  });
   return out;
 }
 
@@ -1212,7 +1264,8 @@ GlslangText TextForGlslang(const BrowserContext& context, const SourceFile& part
   EmptyInactiveLines(context, part.Id(), text);
   ExpandMacroUses(context, part.Id(), part.Text(), text);
   PassEmptyArgumentsInMacroBodies(context, part.Id(), part.Text(), text, prelude);
-  text = RepairDefines(JoinContinuedLines(context, text), UnsignedLiteralMacros(context, part));
+  text = RepairDefines(JoinContinuedLines(context, text),
+                       [&] { return UnsignedLiteralMacros(context, part); });
   if (text == part.Text()) text.clear();
   return {std::move(text), std::move(prelude)};
 }

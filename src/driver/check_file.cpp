@@ -288,7 +288,7 @@ FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceMana
     });
   }
   // What `shaderport fix` would repair, so that every format can say so.
-  if (!report.diagnostics.empty() && FixOffersAnEdit(file, front, decision)) {
+  if (AnyFindingWithoutFix(report.diagnostics) && FixOffersAnEdit(file, front, decision)) {
     AttachRepairs(PortSource(file, common, FixOptionsFor(decision), sources), sources,
                   report.diagnostics);
   }

@@ -64,6 +64,12 @@ bool FixOffersAnEdit(const SourceFile& file, const FrontEndResult& front,
   return false;
 }
 
+bool AnyFindingWithoutFix(const DiagnosticList& findings) {
+  return std::any_of(findings.begin(), findings.end(), [](const Diagnostic& finding) {
+    return !IsFixable(finding) && finding.range.file != kNoFile;
+  });
+}
+
 void AttachRepairs(const PortResult& fixed, const SourceManager& sources,
                    DiagnosticList& findings) {
   if (!fixed.HasOutput() || fixed.fixed.empty() || fixed.file == nullptr) return;

@@ -21,6 +21,10 @@ PortOptions FixOptionsFor(const FileDecision& decision);
 bool FixOffersAnEdit(const SourceFile& file, const FrontEndResult& front,
                      const FileDecision& decision);
 
+// Whether AttachRepairs could give `findings` anything: some finding in a file carries
+// no safe fix of its own. Without one, check need not run fix at all.
+bool AnyFindingWithoutFix(const DiagnosticList& findings);
+
 // Attaches to `findings` (check's, located in the original files) the fixes of the
 // findings `fixed` repaired. Findings that already carry a safe fix are left alone.
 void AttachRepairs(const PortResult& fixed, const SourceManager& sources, DiagnosticList& findings);
