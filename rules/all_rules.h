@@ -46,6 +46,7 @@ const rule::Rule& WebglInvariantRule();  // webgl/invariant
 const rule::Rule& WebglLoopFormRule();  // webgl/loop-form
 const rule::Rule& WebglLoopIndexWriteRule();  // webgl/loop-index-write
 const rule::Rule& WebglMissingMainRule();  // webgl/missing-main
+const rule::Rule& WebglParameterRedefinitionRule();  // webgl/parameter-redefinition
 const rule::Rule& WebglRecursionRule();  // webgl/recursion
 const rule::Rule& WebglRepeatedLayoutRule();  // webgl/repeated-layout
 const rule::Rule& WebglReservedNameRule();  // webgl/reserved-name

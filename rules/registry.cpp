@@ -46,6 +46,7 @@ std::vector<const rule::Rule*> BuildRegistry() {
       &WebglLoopFormRule(),  // webgl/loop-form
       &WebglLoopIndexWriteRule(),  // webgl/loop-index-write
       &WebglMissingMainRule(),  // webgl/missing-main
+      &WebglParameterRedefinitionRule(),  // webgl/parameter-redefinition
       &WebglRecursionRule(),  // webgl/recursion
       &WebglRepeatedLayoutRule(),  // webgl/repeated-layout
       &WebglReservedNameRule(),  // webgl/reserved-name

@@ -4,9 +4,14 @@
 //   WebGL 2 also forbids `?:` on void.
 // - `,` with a void, array or struct-containing-array operand (WebGL 2 section 5.26).
 // glslang follows plain GLSL ES 3.00 and accepts both.
+// - unary `+` on anything but int, uint and float scalars, vectors and matrices (a
+//   struct, bool, bvec, array or sampler): GLSL ES 1.00 and 3.00 section 5.9 define it
+//   on numbers only; browsers reject it ("wrong operand type"), glslang lets `+`
+//   through unchecked (it rejects `-` on the same operands).
 //
 //   S s = b ? s1 : s2;          // error: ternary on a struct
 //   float a[2] = (x, arr);      // error in WebGL 2: sequence on an array
+//   S t = +s;                   // error: unary plus on a struct
 #include <string>
 
 #include "glsl/syntax/visit.h"
@@ -27,7 +32,9 @@ class ForbiddenOperatorRule final : public rule::Rule {
  public:
   const rule::RuleInfo& Info() const override {
     static const rule::RuleInfo info{
-        kId, "`?:` on arrays, structs or void, or `,` on void, arrays or structs with arrays",
+        kId,
+        "`?:` on arrays, structs or void, `,` on void, arrays or structs with arrays, or unary "
+        "`+` on what is not a number",
         "S s = b ? s1 : s2;", "", rule::RuleScope::kCheck};
     return info;
   }
@@ -35,10 +42,12 @@ class ForbiddenOperatorRule final : public rule::Rule {
   void Run(rule::RuleContext& context) const override {
     const bool strict_ternary = webgl::IsEssl100(context) || webgl::InWebgl2(context);
     // Only the two kinds are looked at: the test stays inline in the walk, the rest not.
-    constexpr glsl::NodeKinds kOperators = {glsl::NodeKind::kConditionalExpr,
-                                            glsl::NodeKind::kBinaryExpr};
+    constexpr glsl::NodeKinds kOperators = {
+        glsl::NodeKind::kConditionalExpr, glsl::NodeKind::kBinaryExpr, glsl::NodeKind::kUnaryExpr};
     glsl::ForEachNodeOf(context.Tree(), kOperators, [&](const glsl::Node& node) {
-      if (node.kind == glsl::NodeKind::kConditionalExpr) {
+      if (node.kind == glsl::NodeKind::kUnaryExpr) {
+        CheckUnaryPlus(context, *node.As<glsl::UnaryExpr>());
+      } else if (node.kind == glsl::NodeKind::kConditionalExpr) {
         CheckConditional(context, *node.As<glsl::ConditionalExpr>(), strict_ternary);
       } else if (node.As<glsl::BinaryExpr>()->op == glsl::BinaryOp::kComma) {
         CheckSequence(context, *node.As<glsl::BinaryExpr>());
@@ -63,6 +72,27 @@ class ForbiddenOperatorRule final : public rule::Rule {
                          std::string("the ternary operator '?:' is not allowed on ") + what +
                              " in WebGL; use an if statement");
     }
+  }
+
+  [[gnu::noinline]] static void CheckUnaryPlus(rule::RuleContext& context,
+                                               const glsl::UnaryExpr& unary) {
+    if (unary.op != glsl::UnaryOp::kPlus || unary.operand == nullptr) return;
+    const glsl::Type& type = context.Model().TypeOf(unary.operand->id);
+    const char* what = nullptr;
+    if (type.IsArray()) {
+      what = "an array";
+    } else if (type.base == glsl::BaseType::kStruct) {
+      what = "a struct";
+    } else if (type.base == glsl::BaseType::kBool) {
+      what = type.IsScalar() ? "a bool" : "a bool vector";
+    } else if (type.base == glsl::BaseType::kSampler) {
+      what = "a sampler";
+    }
+    if (what == nullptr) return;
+    webgl::ReportError(context, kId, unary.range,
+                       std::string("unary '+' is defined on int, uint and float scalars, vectors "
+                                   "and matrices, not on ") +
+                           what + "; browsers reject it (\"wrong operand type\")");
   }
 
   [[gnu::noinline]] static void CheckSequence(rule::RuleContext& context,

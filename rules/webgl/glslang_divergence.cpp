@@ -101,12 +101,25 @@ bool AlignGlobalInitializer(const BrowserContext& context, Diagnostic& diagnosti
   }
   if (AllFolded(context, diagnostic)) return true;
   if (context.version >= 300) return false;
-  // Only uniforms, other globals and constants: a built-in input such as gl_FragCoord
-  // or a call of the shader's own function is an error there too ("global variable
-  // initializers must be constant expressions (uniforms and globals are allowed)").
+  // Only uniforms, other globals and constants, with operators and math built-ins: a
+  // built-in input such as gl_FragCoord, an attribute or varying, a call of the shader's
+  // own function or of a texture or derivative built-in, an assignment or ++/-- is an
+  // error there too ("global variable initializers must be constant expressions
+  // (uniforms and globals are allowed)").
   const uint32_t line = LineOf(context, diagnostic.range.begin);
   bool found = false;
   bool allowed = true;
+  std::set<uint32_t> inputs;  // declarators of attributes and varyings
+  for (const glsl::Node* node : context.tree->Root()->declarations) {
+    const auto* declaration = node->As<glsl::VariableDeclaration>();
+    if (declaration == nullptr || (!declaration->qualifiers.Has(glsl::QualifierKind::kAttribute) &&
+                                   !declaration->qualifiers.Has(glsl::QualifierKind::kVarying))) {
+      continue;
+    }
+    for (const glsl::Declarator* declarator : declaration->declarators) {
+      inputs.insert(declarator->id);
+    }
+  }
   for (const glsl::Node* node : context.tree->Root()->declarations) {
     const auto* declaration = node->As<glsl::VariableDeclaration>();
     if (declaration == nullptr) continue;
@@ -119,12 +132,31 @@ bool AlignGlobalInitializer(const BrowserContext& context, Diagnostic& diagnosti
       found = true;
       glsl::ForEachNodeOf(
           *context.tree, *declarator->initializer,
-          {glsl::NodeKind::kIdentifierExpr, glsl::NodeKind::kCallExpr}, [&](const glsl::Node& use) {
+          {glsl::NodeKind::kIdentifierExpr, glsl::NodeKind::kCallExpr,
+           glsl::NodeKind::kAssignmentExpr, glsl::NodeKind::kUnaryExpr},
+          [&](const glsl::Node& use) {
+            if (use.kind == glsl::NodeKind::kAssignmentExpr) allowed = false;
+            if (const auto* unary = use.As<glsl::UnaryExpr>()) {
+              allowed = allowed && unary->op != glsl::UnaryOp::kPreIncrement &&
+                        unary->op != glsl::UnaryOp::kPreDecrement &&
+                        unary->op != glsl::UnaryOp::kPostIncrement &&
+                        unary->op != glsl::UnaryOp::kPostDecrement;
+              return;
+            }
+            if (const auto* call = use.As<glsl::CallExpr>();
+                call != nullptr && call->call_kind == glsl::CallKind::kFunction) {
+              const std::string& name = call->callee.text;
+              if (name.starts_with("texture") || name.starts_with("shadow") ||
+                  name.starts_with("dFd") || name == "fwidth") {
+                allowed = false;
+              }
+            }
             const uint32_t symbol = context.model->SymbolAt(use.id);
             if (symbol == glsl::kNoSymbol) return;
             const glsl::Symbol& used = context.model->symbols[symbol];
             if (used.kind == glsl::SymbolKind::kFunction ||
-                (used.kind == glsl::SymbolKind::kBuiltinVariable && !used.is_const)) {
+                (used.kind == glsl::SymbolKind::kBuiltinVariable && !used.is_const) ||
+                inputs.contains(used.declaration)) {
               allowed = false;
             }
           });
@@ -135,6 +167,32 @@ bool AlignGlobalInitializer(const BrowserContext& context, Diagnostic& diagnosti
          "browsers accept non-constant global initialisers in GLSL ES 1.00 for legacy content "
          "and only warn (WebGL 1.0 spec, 'GLSL ES Global Variable Initialization'); glslang and "
          "GLSL ES 3.00 reject them");
+  return true;
+}
+
+// `case 0: ;`, `case 0: {}` or `default: int;` at the end of a switch: browsers count
+// the empty statement, block or declaration as the statement the last label needs
+// (GLSL ES 3.00 section 6.2); glslang drops it first and reports the label bare.
+bool AlignSwitchLastLabel(const BrowserContext& context, Diagnostic& diagnostic) {
+  if (diagnostic.message.find("last case/default label not followed by statements") ==
+      std::string::npos) {
+    return false;
+  }
+  bool followed = false;
+  glsl::VisitPreorder(*context.tree, [&](const glsl::Node& node, uint32_t) {
+    const auto* statement = node.As<glsl::SwitchStatement>();
+    if (statement == nullptr || statement->body == nullptr ||
+        node.range.file != diagnostic.range.file || node.range.begin != diagnostic.range.begin) {
+      return true;
+    }
+    const std::vector<glsl::Node*>& body = statement->body->statements;
+    followed = !body.empty() && body.back()->kind != glsl::NodeKind::kCaseLabel;
+    return false;
+  });
+  if (!followed) return false;
+  Demote(diagnostic, Severity::kNote,
+         "not an error in browsers: an empty statement, block or declaration after the last "
+         "label is the statement it needs; glslang does not count it");
   return true;
 }
 
@@ -694,10 +752,10 @@ bool HasLiteralGlslangScansAsError(std::string_view line) {
 
 // Lines inside #if groups our preprocessor skipped that hold what glslang's scanner
 // trips on even there (an unterminated '"', `$`, `@`, non-ASCII bytes, an integer
-// literal past 32 bits) are emptied, but for the directives: browsers read nothing
-// else in a skipped group. Only such lines: glslang defines some extension macros that
-// browsers do not (say GL_OES_standard_derivatives in GLSL ES 3.00), so it may take a
-// group we skip.
+// literal past 32 bits) are emptied, but for the conditional directives: browsers
+// read nothing else in a skipped group (`#"` or `#define X "` there included). Only such lines:
+// glslang defines some extension macros that browsers do not (say GL_OES_standard_derivatives in
+// GLSL ES 3.00), so it may take a group we skip.
 void EmptyInactiveLines(const BrowserContext& context, FileId part, std::string& text) {
   if (context.preprocessed == nullptr) return;
   for (const SourceRange& region : context.preprocessed->inactive_regions) {
@@ -715,7 +773,13 @@ void EmptyInactiveLines(const BrowserContext& context, FileId part, std::string&
                       });
       const bool oversized = !troubling && HasLiteralGlslangScansAsError(
                                                std::string_view(text).substr(line, end - line));
-      if ((troubling || oversized) && first < end && text[first] != '#') {
+      // Conditional directives stay: glslang follows them to find the group's end.
+      const std::string_view keyword =
+          directive_text::DirectiveKeyword(std::string_view(text).substr(line, end - line));
+      const bool conditional =
+          text[first] == '#' && (keyword == "if" || keyword == "ifdef" || keyword == "ifndef" ||
+                                 keyword == "elif" || keyword == "else" || keyword == "endif");
+      if ((troubling || oversized) && first < end && !conditional) {
         for (size_t i = line; i < end; ++i) {
           if (text[i] != '\r' && text[i] != '\\') text[i] = ' ';
         }
@@ -1244,6 +1308,7 @@ void AlignWithBrowser(const BrowserContext& context, Diagnostic& diagnostic) {
   if (!InFile(context, diagnostic) || context.tree == nullptr) return;
   if (AlignLenientMessages(context, diagnostic)) return;
   if (AlignNamelessArrayDeclaration(context, diagnostic)) return;
+  if (AlignSwitchLastLabel(context, diagnostic)) return;
   if (context.model == nullptr) return;
   if (AlignGlobalInitializer(context, diagnostic)) return;
   AlignConstantExpression(context, diagnostic);
