@@ -5,6 +5,8 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace shaderport::rules {
@@ -21,6 +23,7 @@ struct Global {
   bool invariant = false;
   bool used = false;
   SourceRange where;
+  std::string members;  // struct types: every member's name, type and precision, nested
 };
 
 struct StageInterface {
@@ -28,6 +31,7 @@ struct StageInterface {
   std::map<std::string, std::vector<Global>> blocks;  // uniform block name -> members
   bool invariant_all = false;                         // #pragma STDGL invariant(all)
   std::map<std::string, bool> builtin_invariant;      // `invariant gl_Position;`
+  std::map<std::string, std::string> struct_members;  // struct name -> Global::members
 };
 
 bool HasPrecision(const glsl::Type& type) {
@@ -76,6 +80,38 @@ Role RoleOf(const glsl::QualifierList& qualifiers, bool vertex) {
   return Role::kOther;
 }
 
+// `name type precision;` for each member of `specifier`, a nested struct's members in
+// braces after its name: two stages' structs of one name must agree on all of it.
+std::string MembersOf(const glsl::StructSpecifier& specifier, const Defaults& defaults,
+                      const StageInterface& known) {
+  std::string members;
+  for (const glsl::VariableDeclaration* field : specifier.fields) {
+    for (const glsl::Declarator* declarator : field->declarators) {
+      // Fields are not symbols: a built-in type is read from its name (a struct has no
+      // precision of its own).
+      const std::optional<glsl::Type> builtin =
+          field->type != nullptr && field->type->name_kind == glsl::TypeNameKind::kBuiltin
+              ? glsl::BuiltinTypeByName(field->type->name.text)
+              : std::nullopt;
+      const glsl::Type type = builtin.value_or(glsl::Type::Unknown());
+      std::string dimensions;
+      for (const glsl::ArrayDimension& dimension : declarator->array) {
+        const auto* literal =
+            dimension.size != nullptr ? dimension.size->As<glsl::LiteralExpr>() : nullptr;
+        dimensions += "[" + (literal != nullptr ? std::to_string(literal->int_value) : "?") + "]";
+      }
+      std::string spelled = field->type != nullptr ? field->type->name.text : "";
+      if (const auto nested = known.struct_members.find(spelled);
+          nested != known.struct_members.end()) {
+        spelled += "{" + nested->second + "}";
+      }
+      members += declarator->name.text + " " + spelled + dimensions + " " +
+                 glsl::PrecisionSpelling(Effective(field->type, type, defaults)) + ";";
+    }
+  }
+  return members;
+}
+
 StageInterface Collect(const LinkStage& stage, bool vertex) {
   StageInterface result;
   for (const glsl::PragmaDirective& pragma : stage.preprocessed->pragmas) {
@@ -88,6 +124,11 @@ StageInterface Collect(const LinkStage& stage, bool vertex) {
       defaults.Apply(*precision);
     } else if (const auto* variable = node->As<glsl::VariableDeclaration>()) {
       const Role role = RoleOf(variable->qualifiers, vertex);
+      if (variable->type != nullptr && variable->type->struct_def != nullptr &&
+          !variable->type->struct_def->name.Empty()) {
+        result.struct_members[variable->type->struct_def->name.text] =
+            MembersOf(*variable->type->struct_def, defaults, result);
+      }
       for (const glsl::Declarator* declarator : variable->declarators) {
         const uint32_t symbol = model.SymbolAt(declarator->id);
         if (symbol == glsl::kNoSymbol || declarator->name.Empty()) continue;
@@ -100,6 +141,10 @@ StageInterface Collect(const LinkStage& stage, bool vertex) {
         global.invariant = variable->qualifiers.Has(glsl::QualifierKind::kInvariant);
         global.used = !model.UsesOf(symbol).empty();
         global.where = declarator->name.range;
+        if (variable->type != nullptr) {
+          const auto members = result.struct_members.find(variable->type->name.text);
+          if (members != result.struct_members.end()) global.members = members->second;
+        }
         result.globals[global.name] = global;
       }
     } else if (const auto* qualifiers = node->As<glsl::QualifierDeclaration>()) {
@@ -199,6 +244,44 @@ const Footprint* Pack(std::vector<Footprint>& varyings, int max_rows) {
   return nullptr;
 }
 
+// The vectors a uniform takes in Chromium's count (ANGLE's register count, no packing):
+// one per scalar or vector, one per matrix column, each member of a struct, times the
+// array size.
+int64_t UniformVectors(const glsl::Type& type, const glsl::SemanticModel& model, int depth = 0) {
+  if (depth > 16) return 0;
+  const int64_t count = type.IsArray() ? std::max(1, type.array_size) : 1;
+  const glsl::Type element = type.Element();
+  if (element.base == glsl::BaseType::kSampler) return 0;
+  if (element.base == glsl::BaseType::kStruct) {
+    int64_t members = 0;
+    if (element.struct_id < model.structs.Size()) {
+      for (const glsl::StructField& field : model.structs.Get(element.struct_id).fields) {
+        members += UniformVectors(field.type, model, depth + 1);
+      }
+    }
+    return count * members;
+  }
+  return count * element.columns;
+}
+
+// The first used uniform with which the stage's count passes `limit`, if any.
+std::optional<std::pair<const Global*, int64_t>> UniformOverflow(const StageInterface& stage,
+                                                                 const glsl::SemanticModel& model,
+                                                                 int limit) {
+  int64_t vectors = 0;
+  std::vector<const Global*> uniforms;
+  for (const auto& [name, global] : stage.globals) {
+    if (global.role == Role::kUniform && global.used) uniforms.push_back(&global);
+  }
+  std::sort(uniforms.begin(), uniforms.end(),
+            [](const Global* a, const Global* b) { return a->where.begin < b->where.begin; });
+  for (const Global* uniform : uniforms) {
+    vectors += UniformVectors(uniform->type, model);
+    if (vectors > limit) return std::make_pair(uniform, vectors);
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 DiagnosticList CheckProgramLink(const LinkStage& vertex, const LinkStage& fragment,
@@ -206,6 +289,17 @@ DiagnosticList CheckProgramLink(const LinkStage& vertex, const LinkStage& fragme
   DiagnosticList found;
   if (vertex.tree == nullptr || fragment.tree == nullptr || vertex.model == nullptr ||
       fragment.model == nullptr) {
+    return found;
+  }
+  if ((vertex.version >= 300) != (fragment.version >= 300)) {
+    found.push_back(LinkError(
+        "webgl/link-version", {},
+        "the vertex shader is GLSL ES " + std::string(vertex.version >= 300 ? "3.00" : "1.00") +
+            " and the fragment shader GLSL ES " +
+            std::string(fragment.version >= 300 ? "3.00" : "1.00") +
+            "; browsers link only stages of one version (\"Fragment shader version does not "
+            "match other shader versions\")",
+        {}, ""));
     return found;
   }
   const StageInterface vs = Collect(vertex, true);
@@ -253,6 +347,13 @@ DiagnosticList CheckProgramLink(const LinkStage& vertex, const LinkStage& fragme
                                   "uniform '" + name + "' is " + input.type_name + " here but " +
                                       other.type_name + " in the vertex shader",
                                   other.where, "declared here in the vertex shader"));
+      } else if (other.members != input.members) {
+        found.push_back(
+            LinkError("webgl/link-uniform", input.where,
+                      "uniform '" + name + "' is a struct " + input.type_name +
+                          " whose members differ from the vertex shader's (names, order, types or "
+                          "precisions)",
+                      other.where, "declared here in the vertex shader"));
       } else if (other.precision != input.precision) {
         found.push_back(LinkError(
             "webgl/link-uniform", input.where,
@@ -297,6 +398,19 @@ DiagnosticList CheckProgramLink(const LinkStage& vertex, const LinkStage& fragme
             std::string(input) + " is invariant but the vertex shader's " + output + " is not", {},
             ""));
       }
+    }
+  }
+  for (const auto& [stage, model, limit, which] :
+       {std::tuple{&vs, vertex.model, limits.max_vertex_uniform_vectors, "vertex"},
+        std::tuple{&fs, fragment.model, limits.max_fragment_uniform_vectors, "fragment"}}) {
+    if (const auto overflow = UniformOverflow(*stage, *model, limit)) {
+      found.push_back(LinkError(
+          "webgl/link-uniform-vectors", overflow->first->where,
+          "with uniform '" + overflow->first->name + "' the " + which + " shader's uniforms take " +
+              std::to_string(overflow->second) + " vectors, more than the context's " +
+              std::to_string(limit) + " (MAX_" +
+              (std::string(which) == "vertex" ? "VERTEX" : "FRAGMENT") + "_UNIFORM_VECTORS)",
+          {}, ""));
     }
   }
   if (const Footprint* overflow = Pack(packed, limits.max_varying_vectors)) {

@@ -1,7 +1,9 @@
 // WebGL's link rules for a vertex + fragment program, on our own trees: the
-// interface the two stages share must agree (varyings: type, presence, ES 1.00
-// invariance; uniforms and uniform blocks: type and precision), and the varyings
-// must fit the context's varying vectors by GLSL ES 1.00 Appendix A.7 packing.
+// stages must be of one GLSL ES version; the interface they share must agree
+// (varyings: type, presence, ES 1.00 invariance; uniforms and uniform blocks: type and
+// precision, a struct's members too); the varyings must fit the context's varying
+// vectors by GLSL ES 1.00 Appendix A.7 packing, each stage's used uniforms its uniform
+// vectors as Chromium counts them.
 #pragma once
 
 #include "diag/diagnostic.h"
@@ -21,10 +23,13 @@ struct LinkStage {
 struct LinkLimits {
   // Chromium's limits as the conformance cases were sized (WebGL requires at least 8).
   int max_varying_vectors = 31;
+  int max_vertex_uniform_vectors = 4096;  // Chromium 156 on SwiftShader
+  int max_fragment_uniform_vectors = 4096;
 };
 
-// Errors of rule ids webgl/link-varying, webgl/link-uniform, webgl/link-invariant and
-// webgl/varying-packing, placed on the declarations in either stage.
+// Errors of rule ids webgl/link-version, webgl/link-varying, webgl/link-uniform,
+// webgl/link-invariant, webgl/varying-packing and webgl/link-uniform-vectors, placed on the
+// declarations in either stage.
 DiagnosticList CheckProgramLink(const LinkStage& vertex, const LinkStage& fragment,
                                 const LinkLimits& limits = {});
 
