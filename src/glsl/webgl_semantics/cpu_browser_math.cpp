@@ -83,6 +83,7 @@ class MathRewriter {
         CollectCall(*call);
         CollectUintConversions(*call);
         CollectFoldedClamp(*call);
+        CollectModDivisor(*call);
       }
       if (const auto* binary = node.As<BinaryExpr>()) {
         if (binary->op == BinaryOp::kDiv) {
@@ -180,6 +181,16 @@ class MathRewriter {
       ++c_.result.divisions;
       opaque = opaque || division.opaque;
     }
+    // After the divisions: a division inside mod's divisor ends where it ends, and its
+    // closing text must come first there.
+    for (const auto& [divisor, type] : mod_divisors_) {
+      const std::string select = OpaqueSelect(type, zero, "(@)", type + "(1.0)");
+      const size_t hole = select.find('@');
+      c_.edits.Insert(divisor.file, divisor.begin, select.substr(0, hole));
+      c_.edits.Insert(divisor.file, divisor.end, select.substr(hole + 1));
+      ++c_.result.opaque_divisors;
+      opaque = true;
+    }
     return opaque;
   }
 
@@ -255,6 +266,27 @@ class MathRewriter {
     }
     folded_clamps_.push_back(
         {name->spelling, answer == call.arguments[1] ? "clamp_lo" : "clamp_hi"});
+  }
+
+  // mod(x, y) is x - y * floor(x / y) in both compilers, and Mesa folds it where y is
+  // a constant 0 (in a component of a vector too) to x; the browser computes it at run
+  // time and gets NaN (x / 0 is inf, 0 * inf NaN). So y is hidden from Mesa's folding
+  // like a divisor, whatever its value: a hidden non-zero constant gives Chromium's
+  // bits as well (measured, ShaderToy MstSDB and ldBBWm).
+  void CollectModDivisor(const CallExpr& call) {
+    if (call.call_kind != CallKind::kFunction || call.callee.text != "mod" ||
+        call.arguments.size() != 2 || !c_.model.builtin_calls.contains(call.id) ||
+        !c_.model.TypeOf(call.id).IsFloating() || c_.folding->IsFolded(&call) ||
+        !InsideFunctionBody(c_, call)) {
+      return;
+    }
+    const Expr* divisor = call.arguments[1];
+    const auto span = c_.edits.Span(*divisor);
+    if (!span) {
+      ++c_.result.skipped;
+      return;
+    }
+    mod_divisors_.emplace_back(*span, Spell(c_.model.TypeOf(divisor->id)));
   }
 
   // The value of a float literal, possibly negated or parenthesised, or of a
@@ -373,6 +405,7 @@ class MathRewriter {
   std::map<std::pair<FileId, uint32_t>, DivisionSite> divisions_;  // by the spelled `/`
   std::vector<SourceRange> conversions_;  // uint arguments of float constructors
   std::vector<std::pair<SourceRange, std::string>> folded_clamps_;  // callee, helper
+  std::vector<std::pair<SourceRange, std::string>> mod_divisors_;   // span, spelled type
 };
 
 }  // namespace
