@@ -88,12 +88,18 @@ class MathRewriter {
       if (const auto* binary = node.As<BinaryExpr>()) {
         if (binary->op == BinaryOp::kDiv) {
           CollectDivision(*binary, binary->lhs, binary->rhs);
+          CollectPartlyZeroVector(*binary, binary->lhs);
+        }
+        if (binary->op == BinaryOp::kMul) {
+          CollectPartlyZeroVector(*binary, binary->lhs);
+          CollectPartlyZeroVector(*binary, binary->rhs);
         }
       }
       if (const auto* assignment = node.As<AssignmentExpr>()) {
         if (assignment->op == AssignOp::kDiv) {
           CollectDivision(*assignment, assignment->lhs, assignment->rhs);
         }
+        if (assignment->op == AssignOp::kMul) CollectPartlyZeroVector(*assignment, assignment->rhs);
       }
       return true;
     });
@@ -182,8 +188,8 @@ class MathRewriter {
       opaque = opaque || division.opaque;
     }
     // After the divisions: a division inside mod's divisor ends where it ends, and its
-    // closing text must come first there.
-    for (const auto& [divisor, type] : mod_divisors_) {
+    // closing text must come first there. (CollectModDivisor, CollectPartlyZeroVector)
+    for (const auto& [divisor, type] : hidden_operands_) {
       const std::string select = OpaqueSelect(type, zero, "(@)", type + "(1.0)");
       const size_t hole = select.find('@');
       c_.edits.Insert(divisor.file, divisor.begin, select.substr(0, hole));
@@ -286,7 +292,42 @@ class MathRewriter {
       ++c_.result.skipped;
       return;
     }
-    mod_divisors_.emplace_back(*span, Spell(c_.model.TypeOf(divisor->id)));
+    hidden_operands_.emplace_back(*span, Spell(c_.model.TypeOf(divisor->id)));
+  }
+
+  // A vector of literals with some components 0 and some not (`vec3(0, .03, .06)`), as
+  // a factor or a dividend of what is computed at run time: Mesa folds 0 * y and 0 / y
+  // to 0 component by component, the browser computes them (NaN where y is inf or 0;
+  // measured: ShaderToy fdcSWH's centre is black in Chromium). A vector all 0 or a
+  // scalar 0 the browser folds as Mesa does, and it is left alone.
+  void CollectPartlyZeroVector(const Expr& operation, const Expr* operand) {
+    const CallExpr* constructor = UnparenthesizedCall(operand);
+    if (constructor == nullptr || constructor->call_kind != CallKind::kConstructor ||
+        !c_.model.TypeOf(constructor->id).IsVector() ||
+        c_.model.TypeOf(constructor->id).base != BaseType::kFloat ||
+        c_.folding->IsFolded(&operation) || !InsideFunctionBody(c_, operation)) {
+      return;
+    }
+    bool zero = false;
+    bool other = false;
+    for (const Expr* argument : constructor->arguments) {
+      const auto* literal = argument->As<LiteralExpr>();
+      if (literal == nullptr || (literal->literal_kind != LiteralKind::kFloat &&
+                                 literal->literal_kind != LiteralKind::kInt)) {
+        return;
+      }
+      const double value = literal->literal_kind == LiteralKind::kFloat
+                               ? literal->float_value
+                               : static_cast<double>(literal->int_value);
+      (value == 0.0 ? zero : other) = true;
+    }
+    if (!zero || !other || constructor->arguments.size() < 2) return;
+    const auto span = c_.edits.Span(*operand);
+    if (!span) {
+      ++c_.result.skipped;
+      return;
+    }
+    hidden_operands_.emplace_back(*span, Spell(c_.model.TypeOf(constructor->id)));
   }
 
   // The value of a float literal, possibly negated or parenthesised, or of a
@@ -405,7 +446,8 @@ class MathRewriter {
   std::map<std::pair<FileId, uint32_t>, DivisionSite> divisions_;  // by the spelled `/`
   std::vector<SourceRange> conversions_;  // uint arguments of float constructors
   std::vector<std::pair<SourceRange, std::string>> folded_clamps_;  // callee, helper
-  std::vector<std::pair<SourceRange, std::string>> mod_divisors_;   // span, spelled type
+  // mod's divisors and partly zero vectors, hidden from Mesa: span, spelled type
+  std::vector<std::pair<SourceRange, std::string>> hidden_operands_;
 };
 
 }  // namespace
