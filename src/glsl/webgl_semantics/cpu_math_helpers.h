@@ -36,7 +36,7 @@ struct Helper {
 };
 
 // Every helper, each after nothing in particular (definitions order them).
-const std::array<Helper, 36>& CpuMathHelpers();
+const std::array<Helper, 37>& CpuMathHelpers();
 // The helper for a built-in or internal name, or nullptr.
 const Helper* FindCpuMathHelper(std::string_view name);
 

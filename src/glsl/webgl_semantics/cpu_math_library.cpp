@@ -13,8 +13,8 @@ namespace shaderport::glsl {
 // `S(name)` below is "shaderport_name", `Z` the opaque zero: subtracted from a
 // constant that the caller's constants must not be folded into (Mesa turns
 // `(x * 0.5) * 1.44` into `x * 0.72`; SwiftShader multiplies twice). One line each.
-const std::array<Helper, 36>& CpuMathHelpers() {
-  static const std::array<Helper, 36> helpers = {{
+const std::array<Helper, 37>& CpuMathHelpers() {
+  static const std::array<Helper, 37> helpers = {{
       // Sin5: A x^5 + B x^3 + C x on [-1/4, 1/4] (argument in turns).
       {"sin5",
        Shape::kInternal,
@@ -194,6 +194,18 @@ const std::array<Helper, 36>& CpuMathHelpers() {
        {"dFdx", "dFdy"},
        "float S(fwidth)(float v) { float f = abs(S(dFdx)(v)) + abs(S(dFdy)(v)); return f == 0.0 ? "
        "-f : f; }"},
+      // SwiftShader's fract is min(x - floor(x), 0x3F7FFFFF): never 1.0, and with
+      // minps's rule 0.99999994 for a NaN (llvmpipe gives NaN, which then blackens
+      // what a browser draws; measured, ShaderToy 7ttGDn). The comparison is xored with
+      // an opaque false, as in min below.
+      {"fract",
+       Shape::kUnary,
+       {},
+       "float S(fract)(float x) { float f = x - floor(x); float c = intBitsToFloat(1065353215); "
+       "return mix(c, f, (f < c) != (Z < 0.0)); }",
+       {},
+       "@ S(fract)(@ x) { @ f = x - floor(x); @ c = @(intBitsToFloat(1065353215)); return mix(c, "
+       "f, notEqual(lessThan(f, c), b@(Z < 0.0))); }"},
       // SwiftShader's min and max are x86's minps/maxps: the second operand when either
       // is NaN (min(1.0, NaN) is NaN, llvmpipe gives 1.0). The comparison is xored
       // with an opaque false: Mesa turns `a < b ? a : b` back into its own fmin. A
