@@ -789,6 +789,37 @@ void EmptyInactiveLines(const BrowserContext& context, FileId part, std::string&
   }
 }
 
+// A `#define` whose body holds a number glslang's scanner rejects (`1e`, `08`, a
+// literal past 32 bits) and that nothing uses: browsers read a macro's body only where
+// it is expanded, glslang scans it at the definition. The body is emptied (a used macro
+// stays, and both report the number where it is used). One line bodies only.
+void EmptyUnusedMacroBodiesGlslangRejects(const BrowserContext& context, FileId part,
+                                          std::string& text) {
+  if (context.preprocessed == nullptr) return;
+  const glsl::PreprocessResult& pp = *context.preprocessed;
+  directive_text::ForEachLine(std::string_view(text), [&](std::string_view line, size_t begin) {
+    const auto define = directive_text::ParseDefine(line);
+    if (!define) return;
+    size_t body = define->name_end;
+    if (define->function_like) {
+      body = line.find(')', body);
+      if (body == std::string_view::npos) return;
+      ++body;
+    }
+    std::string_view rest = line.substr(body);
+    if (!rest.empty() && rest.back() == '\r') rest.remove_suffix(1);
+    if (rest.empty() || rest.back() == '\\' || !HasLiteralGlslangScansAsError(rest)) return;
+    const bool used =
+        std::any_of(pp.macro_uses.begin(), pp.macro_uses.end(),
+                    [&](const glsl::MacroUse& use) { return use.name == define->name; });
+    const bool skipped = std::any_of(
+        pp.inactive_regions.begin(), pp.inactive_regions.end(),
+        [&](const SourceRange& r) { return r.file == part && r.begin <= begin && begin < r.end; });
+    if (used || skipped) return;
+    for (size_t i = begin + body; i < begin + body + rest.size(); ++i) text[i] = ' ';
+  });
+}
+
 // Macro uses that glslang expands differently from browsers, replaced on their line
 // by the expansion our preprocessor (which follows the browser) made: `F()` passes one
 // empty argument in browsers, where glslang stops with "Too few args in Macro"; a
@@ -1327,6 +1358,7 @@ GlslangText TextForGlslang(const BrowserContext& context, const SourceFile& part
   HideUnofferedExtensions(context, part.Id(), text);
   BlankContinuedLineComments(text);
   EmptyInactiveLines(context, part.Id(), text);
+  EmptyUnusedMacroBodiesGlslangRejects(context, part.Id(), text);
   ExpandMacroUses(context, part.Id(), part.Text(), text);
   PassEmptyArgumentsInMacroBodies(context, part.Id(), part.Text(), text, prelude);
   text = RepairDefines(JoinContinuedLines(context, text),
