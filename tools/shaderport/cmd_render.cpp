@@ -15,6 +15,7 @@
 #include "driver/check_file.h"
 #include "driver/check_projects.h"
 #include "driver/input_files.h"
+#include "driver/port/output_files.h"
 #include "driver/project/folder_project.h"
 #include "driver/render_check/render_file.h"
 #include "driver/render_check/render_multipass.h"
@@ -126,7 +127,8 @@ int RunRender(const RenderArgs& args) {
     }
     std::vector<std::filesystem::path> read{args.path, args.common};
     read.insert(read.end(), args.channels.begin(), args.channels.end());
-    if (const std::string clash = OutputReplacesInput("-o", args.output, read); !clash.empty()) {
+    if (const std::string clash = driver::OutputReplacesInput("-o", args.output, read);
+        !clash.empty()) {
       return UsageError(clash);
     }
   }
