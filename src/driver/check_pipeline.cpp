@@ -13,6 +13,7 @@
 #include "driver/check_shard.h"
 #include "driver/config/config_lookup.h"
 #include "driver/input_files.h"
+#include "driver/input_selection.h"
 #include "driver/largest_first.h"
 #include "driver/parallel_for.h"
 #include "render/isolated_render.h"
@@ -70,25 +71,16 @@ CheckRun RunCheck(const CheckOptions& options) {
   SourceManager& sources = *run.sources;
 
   ConfigLookup configs(options.use_config, options.config, sources);
-  if (!configs.ExplicitConfigError().empty()) {
-    run.usage_errors.push_back(configs.ExplicitConfigError());  // nothing is checked
-    return run;
-  }
-  InputSet inputs;
-  if (options.in_memory) {
-    // --stdin-filename counts as a named file: excluded, nothing is checked (ruff).
-    if (options.force_exclude && !configs.Includes(options.in_memory->name)) {
-      inputs.dropped = 1;
-    } else {
-      inputs.files.push_back({options.in_memory->name, options.in_memory->name, true});
-    }
-  } else {
-    inputs = WalkInputs(
-        options.paths, [&](const fs::path& file) { return configs.Includes(file); },
-        options.force_exclude);
-  }
+  InputSelectionOptions selection_options;
+  selection_options.paths = options.paths;
+  if (options.in_memory) selection_options.stdin_name = options.in_memory->name;
+  selection_options.config = options.config;
+  selection_options.use_config = options.use_config;
+  selection_options.force_exclude = options.force_exclude;
+  InputSelection inputs = SelectInputs(selection_options, configs);
   run.usage_errors = std::move(inputs.errors);
-  run.found_nothing = inputs.files.empty() && inputs.dropped == 0;
+  if (!configs.ExplicitConfigError().empty()) return run;  // nothing is checked
+  run.found_nothing = inputs.FoundNothing();
   run.excluded = inputs.dropped;
   run.unmatched = std::move(inputs.unmatched);
 
@@ -114,7 +106,10 @@ CheckRun RunCheck(const CheckOptions& options) {
     ApplyFolderTab(job);
     jobs.push_back(std::move(job));
   }
-  for (FileReport& problem : configs.TakeProblems()) {
+  // Those read while walking, then those first read for a job (a named file's).
+  std::vector<FileReport> config_problems = std::move(inputs.config_problems);
+  for (FileReport& problem : configs.TakeProblems()) config_problems.push_back(std::move(problem));
+  for (FileReport& problem : config_problems) {
     problem.role = FileRole::kInput;  // a .shaderport.toml is not a checked file
     run.report.files.push_back(std::move(problem));
   }

@@ -33,7 +33,7 @@ struct InputFile {
   std::filesystem::path relative;
   bool named = false;  // named on the command line, not found by walking
   // What the file's .shaderport.toml [[files]] entries say about it (fix, port: the
-  // same overrides `check` applies; SelectInputFiles fills them in).
+  // same overrides `check` applies; SelectConfiguredInputs fills them in).
   std::optional<Dialect> dialect{};
   std::optional<model::Stage> stage{};
 };

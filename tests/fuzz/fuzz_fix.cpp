@@ -1,5 +1,5 @@
 // libFuzzer target for `shaderport fix` through the library (driver::PortInput in
-// fix mode, as tools/shaderport/cmd_fix.cpp calls it for --stdin): fixing twice
+// fix mode, as driver::RunFixOnText calls it for --stdin): fixing twice
 // changes nothing, the fixed text never gets more glslang errors than the input,
 // and the source map leads every byte of the result back inside the input
 // (copied bytes unchanged). Mutated by token_mutator.cpp.

@@ -1,5 +1,5 @@
 // libFuzzer target for `shaderport port` through the library (driver::PortInput
-// in port mode, as tools/shaderport/cmd_port.cpp reaches it through PortFile):
+// in port mode, as driver::RunPort (port_run.h) reaches it through PortFile):
 // whenever glslang compiles the input in its own dialect, it compiles the WebGL2
 // output too, and the source map stays inside the input. Mutated by token_mutator.cpp.
 #include <cstdint>

@@ -3,7 +3,6 @@
 #include <cstdio>
 
 #include "base/did_you_mean.h"
-#include "base/file_io/same_file.h"
 #include "base/printable.h"
 #include "commands.h"
 
@@ -30,14 +29,6 @@ void PrintUnwritten(std::span<const std::filesystem::path> unwritten) {
 int UsageError(std::string_view message) {
   PrintError(message);
   return kExitUsage;
-}
-
-std::string OutputReplacesInput(std::string_view option, const std::filesystem::path& output,
-                                std::span<const std::filesystem::path> inputs) {
-  const std::optional<std::filesystem::path> input = file_io::InputReplacedBy(output, inputs);
-  if (!input) return "";
-  return std::string(option) + " " + output.string() + " is the input " + input->string() +
-         ": writing would replace it; nothing was written";
 }
 
 std::string DidYouMean(std::string_view typed, std::span<const std::string> names) {

@@ -24,12 +24,6 @@ int UsageError(std::string_view message);
 std::string UnknownName(std::string_view what, std::string_view typed,
                         std::span<const std::string> names);
 
-// "" when `output` is none of `inputs`; else "OPTION OUTPUT is the input INPUT: writing
-// would replace it; nothing was written". Compared by file identity (device and
-// inode), so another spelling, a symlink or a hard link of an input is caught too.
-std::string OutputReplacesInput(std::string_view option, const std::filesystem::path& output,
-                                std::span<const std::filesystem::path> inputs);
-
 // "; did you mean 'NAME'?" for the nearest of `names`, or "" when none is near.
 std::string DidYouMean(std::string_view typed, std::span<const std::string> names);
 

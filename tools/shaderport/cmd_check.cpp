@@ -144,7 +144,8 @@ int RunCheckCommand(const CheckArgs& args) {
   }
   if (!args.write_baseline.empty()) {
     const std::vector<std::filesystem::path> named(args.paths.begin(), args.paths.end());
-    const std::string clash = OutputReplacesInput("--write-baseline", args.write_baseline, named);
+    const std::string clash =
+        driver::OutputReplacesInput("--write-baseline", args.write_baseline, named);
     if (!clash.empty()) return UsageError(clash);
   }
   std::optional<Baseline> baseline;
@@ -231,7 +232,8 @@ int RunCheckCommand(const CheckArgs& args) {
     for (const FileReport& file : run.report.files) {
       if (file.file != nullptr) checked.emplace_back(file.file->Name());
     }
-    const std::string clash = OutputReplacesInput("--write-baseline", args.write_baseline, checked);
+    const std::string clash =
+        driver::OutputReplacesInput("--write-baseline", args.write_baseline, checked);
     if (!clash.empty()) return UsageError(clash);
   }
   if (!args.write_baseline.empty() && run.usage_errors.empty()) {

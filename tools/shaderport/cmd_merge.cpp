@@ -8,6 +8,7 @@
 #include "base/limits.h"
 #include "cli_errors.h"
 #include "commands.h"
+#include "driver/port/output_files.h"
 #include "option_names.h"
 #include "report/merge.h"
 
@@ -35,7 +36,8 @@ int RunMergeCommand(const MergeArgs& args) {
   if (args.files.empty()) return UsageError("no reports to merge");
   if (!args.output.empty()) {
     const std::vector<std::filesystem::path> read(args.files.begin(), args.files.end());
-    if (const std::string clash = OutputReplacesInput("-o", args.output, read); !clash.empty()) {
+    if (const std::string clash = driver::OutputReplacesInput("-o", args.output, read);
+        !clash.empty()) {
       return UsageError(clash);
     }
   }

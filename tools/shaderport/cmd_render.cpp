@@ -13,10 +13,8 @@
 #include "cli_errors.h"
 #include "commands.h"
 #include "driver/check_file.h"
-#include "driver/check_projects.h"
 #include "driver/input_files.h"
-#include "driver/project/folder_project.h"
-#include "driver/render_check/render_file.h"
+#include "driver/port/output_files.h"
 #include "driver/render_check/render_multipass.h"
 #include "option_names.h"
 #include "port_arguments.h"
@@ -126,7 +124,8 @@ int RunRender(const RenderArgs& args) {
     }
     std::vector<std::filesystem::path> read{args.path, args.common};
     read.insert(read.end(), args.channels.begin(), args.channels.end());
-    if (const std::string clash = OutputReplacesInput("-o", args.output, read); !clash.empty()) {
+    if (const std::string clash = driver::OutputReplacesInput("-o", args.output, read);
+        !clash.empty()) {
       return UsageError(clash);
     }
   }
@@ -136,15 +135,7 @@ int RunRender(const RenderArgs& args) {
     options.common = driver::LoadSharedFile(args.common, sources, error);
     if (options.common == nullptr) return UsageError(error);
   }
-  // A ShaderToy project (JSON export or record, .jsonl, a project folder) is drawn
-  // with all its passes; anything else is one shader.
-  const std::filesystem::path path(args.path);
-  std::error_code directory_error;
-  const bool project =
-      driver::IsProjectDocument(path) || (std::filesystem::is_directory(path, directory_error) &&
-                                          driver::project::IsProjectFolder(path));
-  driver::RenderFileResult result = project ? driver::RenderProject(path, sources, options)
-                                            : driver::RenderFile(args.path, sources, options);
+  driver::RenderFileResult result = driver::RenderInput(args.path, sources, options);
   int code = kExitOk;
   if (result.image && !args.output.empty()) {
     const std::string png = render::EncodePng(*result.image);

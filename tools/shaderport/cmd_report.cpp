@@ -38,7 +38,7 @@ int RunReport(const ReportArgs& args) {
   }
   driver::HtmlReportOptions options;
   for (const std::string& path : args.paths) options.paths.emplace_back(path);
-  if (const std::string clash = OutputReplacesInput("--html", args.html, options.paths);
+  if (const std::string clash = driver::OutputReplacesInput("--html", args.html, options.paths);
       !clash.empty()) {
     return UsageError(clash);
   }
@@ -63,7 +63,8 @@ int RunReport(const ReportArgs& args) {
   // A file found in a directory argument is an input too.
   std::vector<std::filesystem::path> read;
   for (const driver::ReportEntry& entry : run.report.entries) read.emplace_back(entry.path);
-  if (const std::string clash = OutputReplacesInput("--html", args.html, read); !clash.empty()) {
+  if (const std::string clash = driver::OutputReplacesInput("--html", args.html, read);
+      !clash.empty()) {
     return UsageError(clash);
   }
   const std::string html = driver::FormatHtmlReport(run.report);

@@ -8,9 +8,9 @@
 #include <filesystem>
 
 #include "cli_errors.h"
-#include "driver/config/config_lookup.h"
 #include "driver/dialect.h"
 #include "driver/harness_dialects.h"
+#include "driver/input_selection.h"
 #include "empty_input.h"
 #include "option_names.h"
 #include "report/output_format.h"
@@ -99,6 +99,31 @@ bool ApplyPortArguments(const PortArguments& arguments, driver::PortOptions& opt
   return true;
 }
 
+namespace {
+
+driver::InputSelectionOptions SelectionOptions(const InputArguments& arguments) {
+  driver::InputSelectionOptions options;
+  options.paths.assign(arguments.paths.begin(), arguments.paths.end());
+  if (!arguments.config.empty()) options.config = arguments.config;
+  options.use_config = !arguments.no_config;
+  options.force_exclude = !arguments.no_force_exclude;
+  return options;
+}
+
+void PrintConfigProblems(std::vector<FileReport> problems, const SourceManager& sources) {
+  if (problems.empty()) return;
+  CheckReport report;
+  report.sources = &sources;
+  report.files = std::move(problems);
+  SortReport(report);
+  ReportOptions options;
+  options.color = ::isatty(STDERR_FILENO) != 0 && std::getenv("NO_COLOR") == nullptr;
+  options.summary_line = false;
+  std::fputs(FormatReport(report, OutputFormat::kText, options).c_str(), stderr);
+}
+
+}  // namespace
+
 std::optional<std::vector<driver::InputFile>> SelectInputFiles(const InputArguments& arguments,
                                                                const std::string& verb,
                                                                bool& config_failed) {
@@ -106,48 +131,21 @@ std::optional<std::vector<driver::InputFile>> SelectInputFiles(const InputArgume
     PrintError("no files or directories given");
     return std::nullopt;
   }
-  SourceManager config_sources;
-  std::optional<std::filesystem::path> explicit_config;
-  if (!arguments.config.empty()) explicit_config = arguments.config;
-  driver::ConfigLookup configs(!arguments.no_config, explicit_config, config_sources);
-  if (!configs.ExplicitConfigError().empty()) {
-    PrintError(configs.ExplicitConfigError());
-    return std::nullopt;
-  }
-  std::vector<std::filesystem::path> paths(arguments.paths.begin(), arguments.paths.end());
-  driver::InputSet inputs = driver::WalkInputs(
-      paths, [&](const std::filesystem::path& file) { return configs.Includes(file); },
-      !arguments.no_force_exclude);
+  driver::ConfiguredInputs inputs = driver::SelectConfiguredInputs(SelectionOptions(arguments));
+  driver::InputSelection& selection = inputs.selection;
+  config_failed = selection.ConfigFailed();
+  PrintConfigProblems(std::move(selection.config_problems), *inputs.config_sources);
   if (!arguments.allow_empty) {
-    inputs.errors.insert(inputs.errors.end(), inputs.unmatched.begin(), inputs.unmatched.end());
+    selection.errors.insert(selection.errors.end(), selection.unmatched.begin(),
+                            selection.unmatched.end());
   }
-  CheckReport problems;
-  problems.sources = &config_sources;
-  problems.files = configs.TakeProblems();
-  config_failed = false;
-  if (!problems.files.empty()) {
-    for (const FileReport& file : problems.files) config_failed |= HasErrors(file.diagnostics);
-    SortReport(problems);
-    ReportOptions options;
-    options.color = ::isatty(STDERR_FILENO) != 0 && std::getenv("NO_COLOR") == nullptr;
-    options.summary_line = false;
-    std::fputs(FormatReport(problems, OutputFormat::kText, options).c_str(), stderr);
-  }
-  for (const std::string& error : inputs.errors) PrintError(error);
-  if (!inputs.errors.empty()) return std::nullopt;
-  for (driver::InputFile& input : inputs.files) {
-    if (const driver::Config* config = configs.For(input.path)) {
-      const driver::FileSettings settings =
-          driver::SettingsFor(*config, std::filesystem::absolute(input.path));
-      input.dialect = settings.dialect;
-      input.stage = settings.stage;
-    }
-  }
-  if (inputs.files.empty() && inputs.dropped == 0 && !arguments.allow_empty) {
+  for (const std::string& error : selection.errors) PrintError(error);
+  if (!selection.errors.empty()) return std::nullopt;
+  if (selection.FoundNothing() && !arguments.allow_empty) {
     PrintError(NothingToDo(arguments.paths, verb));
     return std::nullopt;
   }
-  return std::move(inputs.files);
+  return std::move(selection.files);
 }
 
 bool ResolveKindOptions(const KindArguments& arguments, SourceManager& sources,
@@ -172,20 +170,11 @@ bool ResolveKindOptions(const KindArguments& arguments, SourceManager& sources,
   return true;
 }
 
-driver::PortOptions OptionsFor(const driver::PortOptions& options, const driver::InputFile& input) {
-  driver::PortOptions for_input = options;
-  if (!for_input.dialect && for_input.harness == nullptr) for_input.dialect = input.dialect;
-  if (!for_input.stage) for_input.stage = input.stage;
-  return for_input;
-}
-
 bool ExcludedByConfig(const InputArguments& arguments, const std::filesystem::path& name) {
-  if (arguments.no_force_exclude || arguments.no_config) return false;
-  SourceManager config_sources;
-  std::optional<std::filesystem::path> explicit_config;
-  if (!arguments.config.empty()) explicit_config = arguments.config;
-  driver::ConfigLookup configs(true, explicit_config, config_sources);
-  return configs.ExplicitConfigError().empty() && !configs.Includes(name);
+  driver::InputSelectionOptions options = SelectionOptions(arguments);
+  options.paths.clear();
+  options.stdin_name = name;
+  return driver::SelectConfiguredInputs(options).selection.dropped > 0;
 }
 
 void AddFailOnOption(CLI::App& command, std::string& fail_on) {

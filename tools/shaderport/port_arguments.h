@@ -15,7 +15,6 @@
 #include "model/channel_kind.h"
 #include "model/harness_dialect.h"
 #include "source/source_manager.h"
-#include "validate/shadertoy_contract.h"
 
 namespace shaderport::cli {
 
@@ -57,10 +56,6 @@ bool ResolveKindOptions(const KindArguments& arguments, SourceManager& sources,
 // false on a bad value (a usage error).
 bool ApplyPortArguments(const PortArguments& arguments, driver::PortOptions& options,
                         SourceManager& sources, std::optional<model::HarnessDialect>& harness);
-
-// `options` for one input: its .shaderport.toml [[files]] dialect and stage apply
-// where no flag gave them, as in `check`.
-driver::PortOptions OptionsFor(const driver::PortOptions& options, const driver::InputFile& input);
 
 // The files named by `paths` (directories walked for shader extensions, hidden
 // directories skipped, the include/exclude globs of each file's .shaderport.toml

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <vector>
 
 #include "base/file_io/same_file.h"
@@ -229,6 +230,20 @@ std::string UnifiedDiff(std::string_view before, std::string_view after, const s
     k = stop;
   }
   return out;
+}
+
+std::string OutputReplacesInput(std::string_view option, const std::filesystem::path& output,
+                                std::span<const std::filesystem::path> inputs) {
+  const std::optional<std::filesystem::path> input = file_io::InputReplacedBy(output, inputs);
+  if (!input) return "";
+  return std::string(option) + " " + output.string() + " is the input " + input->string() +
+         ": writing would replace it; nothing was written";
+}
+
+std::string WriteOutput(const std::filesystem::path& target, std::string_view text) {
+  std::error_code error;  // a directory that cannot be made fails the write, which says why
+  if (target.has_parent_path()) std::filesystem::create_directories(target.parent_path(), error);
+  return file_io::WriteFileAtomically(target, text);
 }
 
 }  // namespace shaderport::driver

@@ -1,8 +1,10 @@
-// Output paths of `port --out-dir` (OutDirPath, OutputClash) and unified diffs;
-// files are written by WriteFileAtomically (atomic_write.h).
+// Output paths of `port --out-dir` (OutDirPath, OutputClash), outputs that would
+// replace an input, and unified diffs; files are written by WriteFileAtomically
+// (atomic_write.h).
 #pragma once
 
 #include <filesystem>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -31,6 +33,16 @@ void RelativeToCommonRoot(std::vector<InputFile>& inputs);
 // to write) are ignored; `targets[i]` is written from `inputs[i]`.
 std::string OutputClash(const std::vector<std::filesystem::path>& inputs,
                         const std::vector<std::filesystem::path>& targets);
+
+// "" when `output` is none of `inputs`; else "OPTION OUTPUT is the input INPUT: writing
+// would replace it; nothing was written". Compared by file identity (device and
+// inode), so another spelling, a symlink or a hard link of an input is caught too.
+std::string OutputReplacesInput(std::string_view option, const std::filesystem::path& output,
+                                std::span<const std::filesystem::path> inputs);
+
+// Writes `text` to `target` atomically, making its directory first (an --out-dir
+// layout); "" on success, else why not.
+std::string WriteOutput(const std::filesystem::path& target, std::string_view text);
 
 // A unified diff (3 lines of context) from `before` to `after`, with
 // `a/NAME` and `b/NAME` headers; "" when they are equal.

@@ -257,4 +257,11 @@ PortResult PortInput(const std::filesystem::path& path, InputText input, const P
   return result;
 }
 
+PortOptions OptionsFor(const PortOptions& options, const InputFile& input) {
+  PortOptions for_input = options;
+  if (!for_input.dialect && for_input.harness == nullptr) for_input.dialect = input.dialect;
+  if (!for_input.stage) for_input.stage = input.stage;
+  return for_input;
+}
+
 }  // namespace shaderport::driver

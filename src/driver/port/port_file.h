@@ -11,6 +11,7 @@
 #include "diag/diagnostic.h"
 #include "driver/dialect.h"
 #include "driver/file_decision.h"
+#include "driver/input_files.h"
 #include "driver/read_input.h"
 #include "rule/rule.h"
 #include "source/edit.h"
@@ -69,6 +70,10 @@ PortResult PortFile(const std::filesystem::path& path, const PortOptions& option
 // which need not exist; a rejected input is reported on `path`.
 PortResult PortInput(const std::filesystem::path& path, InputText input, const PortOptions& options,
                      SourceManager& sources);
+
+// `options` for one input: its .shaderport.toml [[files]] dialect and stage apply
+// where no flag gave them, as in `check`.
+PortOptions OptionsFor(const PortOptions& options, const InputFile& input);
 
 // The fix-mode shorthand.
 inline PortResult FixFile(const std::filesystem::path& path, PortOptions options,

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "driver/check_projects.h"
 #include "driver/project/folder_project.h"
 #include "driver/project/json_project_reader.h"
 #include "driver/project/record_json.h"
@@ -253,6 +254,15 @@ RenderFileResult RenderProject(const std::filesystem::path& path, SourceManager&
   }
   return RenderShaderToyJson(name, project::ToRecordJson(document.projects.front()), sources,
                              options);
+}
+
+RenderFileResult RenderInput(const std::filesystem::path& path, SourceManager& sources,
+                             const RenderFileOptions& options) {
+  std::error_code directory_error;
+  const bool project =
+      IsProjectDocument(path) ||
+      (std::filesystem::is_directory(path, directory_error) && project::IsProjectFolder(path));
+  return project ? RenderProject(path, sources, options) : RenderFile(path, sources, options);
 }
 
 }  // namespace shaderport::driver

@@ -21,4 +21,9 @@ RenderFileResult RenderShaderToyJson(std::string_view name, std::string_view jso
 RenderFileResult RenderProject(const std::filesystem::path& path, SourceManager& sources,
                                const RenderFileOptions& options);
 
+// `shaderport render PATH`: a ShaderToy project (RenderProject) is drawn with all its
+// passes; anything else is one shader (RenderFile).
+RenderFileResult RenderInput(const std::filesystem::path& path, SourceManager& sources,
+                             const RenderFileOptions& options);
+
 }  // namespace shaderport::driver
