@@ -284,7 +284,10 @@ void AddCheckCommand(CLI::App& app, int& exit_code) {
       ->add_option("--link", args->link,
                    "VS FS: check these two files as one program (repeatable; default: "
                    "link NAME.vert with NAME.frag in the same directory)")
-      ->expected(2);
+      ->type_size(2)
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+      ->allow_extra_args(false);  // `--link VS FS file.glsl` checks the file too
   command->add_option("--common", args->common,
                       "ShaderToy Common code compiled before every ShaderToy pass "
                       "(default: common.glsl beside the pass)");

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "cli_test_util.h"
+#include "scratch_dir.h"
 
 namespace shaderport::testing {
 namespace {
@@ -81,6 +82,34 @@ TEST(CheckCliTest, DialectAndStageOverrides) {
   const CommandResult result = RunShaderport("check --stage fragment webgl1/bad.vert", kProject);
   EXPECT_NE(result.out.find("gl_Position"), std::string::npos) << result.out;
   EXPECT_EQ(RunShaderport("check --dialect nonsense webgl1/ok.frag", kProject).exit_code, 2);
+}
+
+}  // namespace
+}  // namespace shaderport::testing
+
+namespace shaderport::testing {
+namespace {
+
+// `--link VS FS` may be given more than once (docs/cli.md), and a file after a pair is
+// checked as one more input.
+TEST(CheckCliTest, LinkIsRepeatable) {
+  const std::filesystem::path dir = ScratchDir("link-repeatable");
+  std::ofstream(dir / "a.vert") << "attribute vec4 p;\nvarying vec2 v;\n"
+                                   "void main() { v = p.xy; gl_Position = p; }\n";
+  std::ofstream(dir / "a.frag") << "precision mediump float;\nvarying vec3 v;\n"
+                                   "void main() { gl_FragColor = vec4(v, 1.0); }\n";
+  std::ofstream(dir / "b.vert") << "attribute vec4 p;\nvarying float w;\n"
+                                   "void main() { w = p.x; gl_Position = p; }\n";
+  std::ofstream(dir / "b.frag") << "precision mediump float;\nvarying vec2 w;\n"
+                                   "void main() { gl_FragColor = vec4(w, 0.0, 1.0); }\n";
+  std::ofstream(dir / "c.frag") << "precision mediump float;\n"
+                                   "void main() { gl_FragColor = vec4(1.0); }\n";
+  const CommandResult both = RunShaderport(
+      "check --no-config --no-cache --link a.vert a.frag --link b.vert b.frag c.frag", dir);
+  EXPECT_EQ(both.exit_code, 1) << both.err;
+  EXPECT_NE(both.out.find("a.frag:2:14"), std::string::npos) << both.out;
+  EXPECT_NE(both.out.find("b.frag:2:14"), std::string::npos) << both.out;
+  EXPECT_NE(both.out.find("(5 files checked)"), std::string::npos) << both.out;
 }
 
 }  // namespace
