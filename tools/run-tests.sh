@@ -51,7 +51,8 @@ if [[ -f tests/fuzz/CMakeLists.txt ]]; then
   echo "== fuzz build (clang, libFuzzer)"
   cmake --preset fuzz >/dev/null
   cmake --build --preset fuzz -j "$jobs" --target fuzz_frontend fuzz_webgl_semantics fuzz_fix \
-    fuzz_port fuzz_config fuzz_shadertoy_json fuzz_project_json fuzz_suppressions fuzz_formatters fuzz_lsp
+    fuzz_port fuzz_check fuzz_config fuzz_shadertoy_json fuzz_project_json fuzz_suppressions \
+    fuzz_formatters fuzz_lsp
   run_ctest build/fuzz fuzz
 fi
 

@@ -776,9 +776,9 @@ void EmptyInactiveLines(const BrowserContext& context, FileId part, std::string&
       // Conditional directives stay: glslang follows them to find the group's end.
       const std::string_view keyword =
           directive_text::DirectiveKeyword(std::string_view(text).substr(line, end - line));
-      const bool conditional =
-          text[first] == '#' && (keyword == "if" || keyword == "ifdef" || keyword == "ifndef" ||
-                                 keyword == "elif" || keyword == "else" || keyword == "endif");
+      const bool conditional = first < end && text[first] == '#' &&
+                               (keyword == "if" || keyword == "ifdef" || keyword == "ifndef" ||
+                                keyword == "elif" || keyword == "else" || keyword == "endif");
       if ((troubling || oversized) && first < end && !conditional) {
         for (size_t i = line; i < end; ++i) {
           if (text[i] != '\r' && text[i] != '\\') text[i] = ' ';

@@ -20,7 +20,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 
-all_targets="fuzz_frontend fuzz_webgl_semantics fuzz_fix fuzz_port fuzz_config
+all_targets="fuzz_frontend fuzz_webgl_semantics fuzz_fix fuzz_port fuzz_check fuzz_config
   fuzz_shadertoy_json fuzz_suppressions fuzz_formatters"
 seconds=""
 jobs=$(nproc)
@@ -79,7 +79,7 @@ target_args() {
     fuzz_frontend) echo "-max_len=65536 -dict=$dict ${text_seeds[*]}" ;;
     fuzz_webgl_semantics)
       echo "-max_len=16384 -dict=$dict ${text_seeds[*]} $root/tests/render-parity/shaders" ;;
-    fuzz_fix | fuzz_port) echo "-max_len=8192 -dict=$dict ${text_seeds[*]}" ;;
+    fuzz_fix | fuzz_port | fuzz_check) echo "-max_len=8192 -dict=$dict ${text_seeds[*]}" ;;
     fuzz_config) echo "-max_len=4096 $root/tests/data/check-project $root/rules/dialects" ;;
     fuzz_shadertoy_json)
       echo "-max_len=65536 $root/tests/fuzz/seeds/shadertoy_json $([[ -d $json_seeds ]] && echo "$json_seeds")" ;;
