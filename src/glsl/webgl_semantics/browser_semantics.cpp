@@ -1,5 +1,7 @@
 #include "glsl/webgl_semantics/browser_semantics.h"
 
+#include <algorithm>
+#include <cctype>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -77,6 +79,85 @@ std::vector<uint32_t> ParentsOf(const SyntaxTree& tree) {
   return parent;
 }
 
+// One-line `#define NAME...` lines of `text`: where each starts and ends, by name.
+struct DefineLine {
+  std::string_view name;
+  uint32_t begin = 0;
+  uint32_t body = 0;  // just after the name
+  uint32_t end = 0;   // at the '\n' (or the text's end)
+};
+
+std::vector<DefineLine> DefineLines(std::string_view text) {
+  std::vector<DefineLine> lines;
+  const auto blank = [&](size_t at) {
+    while (at < text.size() && (text[at] == ' ' || text[at] == '\t')) ++at;
+    return at;
+  };
+  for (size_t begin = 0; begin < text.size();) {
+    size_t end = text.find('\n', begin);
+    if (end == std::string_view::npos) end = text.size();
+    size_t at = blank(begin);
+    if (at < end && text[at] == '#') {
+      at = blank(at + 1);
+      if (text.compare(at, 6, "define") == 0 && blank(at + 6) > at + 6) {
+        const size_t name = blank(at + 6);
+        size_t name_end = name;
+        while (name_end < end && (std::isalnum(static_cast<unsigned char>(text[name_end])) != 0 ||
+                                  text[name_end] == '_')) {
+          ++name_end;
+        }
+        const bool continued = end > begin && text[end - (text[end - 1] == '\r' ? 2 : 1)] == '\\';
+        if (name_end > name && !continued) {
+          lines.push_back({text.substr(name, name_end - name), static_cast<uint32_t>(begin),
+                           static_cast<uint32_t>(name_end), static_cast<uint32_t>(end)});
+        }
+      }
+    }
+    begin = end + 1;
+  }
+  return lines;
+}
+
+// An edit inside a macro's body (a built-in renamed there) changes the definition the
+// uses expand from; a shader may define the macro again, identically, which is legal
+// until the two differ, and then Mesa refuses the redefinition (ShaderToy tlXfDS). The
+// same edit goes into every identical definition of that macro in the part.
+// Only definitions our preprocessor read (outside skipped groups, whose lines other
+// edits empty), and only edits inside a body.
+void MirrorEditsIntoIdenticalDefinitions(std::string_view text, FileId part,
+                                         const PreprocessResult& preprocessed,
+                                         std::vector<Edit>& edits) {
+  std::vector<DefineLine> defines = DefineLines(text);
+  std::erase_if(defines, [&](const DefineLine& line) {
+    return std::any_of(preprocessed.inactive_regions.begin(), preprocessed.inactive_regions.end(),
+                       [&](const SourceRange& r) {
+                         return r.file == part && r.begin <= line.begin && line.begin < r.end;
+                       });
+  });
+  if (defines.size() < 2) return;
+  std::vector<Edit> added;
+  for (const Edit& edit : edits) {
+    for (const DefineLine& line : defines) {
+      if (edit.begin < line.body || edit.end > line.end) continue;
+      const std::string_view spelled = text.substr(line.begin, line.end - line.begin);
+      for (const DefineLine& other : defines) {
+        if (other.begin == line.begin || other.name != line.name ||
+            text.substr(other.begin, other.end - other.begin) != spelled) {
+          continue;
+        }
+        const Edit mirrored{edit.begin - line.begin + other.begin,
+                            edit.end - line.begin + other.begin, edit.text};
+        if (std::find(edits.begin(), edits.end(), mirrored) == edits.end() &&
+            std::find(added.begin(), added.end(), mirrored) == added.end()) {
+          added.push_back(mirrored);
+        }
+      }
+      break;
+    }
+  }
+  edits.insert(edits.end(), added.begin(), added.end());
+}
+
 }  // namespace
 
 BrowserSemanticsResult ApplyBrowserSemantics(std::span<const SourceFile* const> parts,
@@ -139,9 +220,11 @@ BrowserSemanticsResult ApplyBrowserSemantics(std::span<const SourceFile* const> 
   for (size_t i = 0; i < parts.size(); ++i) {
     const auto found = edits.Edits().find(parts[i]->Id());
     if (found == edits.Edits().end()) continue;
-    auto edited = ApplyEdits(parts[i]->Text(), found->second);
+    std::vector<Edit> part_edits = found->second;
+    MirrorEditsIntoIdenticalDefinitions(parts[i]->Text(), parts[i]->Id(), preprocessed, part_edits);
+    auto edited = ApplyEdits(parts[i]->Text(), part_edits);
     if (!edited) {
-      result.skipped += static_cast<uint32_t>(found->second.size());
+      result.skipped += static_cast<uint32_t>(part_edits.size());
       continue;
     }
     result.texts[i] = std::move(edited->text);
