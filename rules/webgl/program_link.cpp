@@ -105,8 +105,9 @@ std::string MembersOf(const glsl::StructSpecifier& specifier, const Defaults& de
           nested != known.struct_members.end()) {
         spelled += "{" + nested->second + "}";
       }
-      members += declarator->name.text + " " + spelled + dimensions + " " +
-                 glsl::PrecisionSpelling(Effective(field->type, type, defaults)) + ";";
+      members.append(declarator->name.text).append(" ").append(spelled).append(dimensions);
+      members.append(" ").append(glsl::PrecisionSpelling(Effective(field->type, type, defaults)));
+      members += ";";
     }
   }
   return members;

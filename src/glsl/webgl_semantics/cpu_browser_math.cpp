@@ -270,8 +270,8 @@ class MathRewriter {
       ++c_.result.skipped;
       return;
     }
-    folded_clamps_.push_back(
-        {name->spelling, answer == call.arguments[1] ? "clamp_lo" : "clamp_hi"});
+    folded_clamps_.emplace_back(name->spelling,
+                                answer == call.arguments[1] ? "clamp_lo" : "clamp_hi");
   }
 
   // mod(x, y) is x - y * floor(x / y) in both compilers, and Mesa folds it where y is
