@@ -570,15 +570,12 @@ constexpr std::array<std::string_view, 26> kEs3Names = {"devicecoherent",
                                                         "usamplerCubeArray",
                                                         "workgroupcoherent"};
 
-bool IsWordChar(char c) {
-  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
-}
-
 // Replaces every whole word `word` of `text` by `with` (of the same length).
 void ReplaceWord(std::string& text, std::string_view word, std::string_view with) {
   for (size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1)) {
-    const bool starts = at == 0 || !IsWordChar(text[at - 1]);
-    const bool ends = at + word.size() >= text.size() || !IsWordChar(text[at + word.size()]);
+    const bool starts = at == 0 || !directive_text::IsWordChar(text[at - 1]);
+    const bool ends =
+        at + word.size() >= text.size() || !directive_text::IsWordChar(text[at + word.size()]);
     if (starts && ends) text.replace(at, word.size(), with);
   }
 }
@@ -649,7 +646,8 @@ void ReplaceLineMacro(const BrowserContext& context, FileId part, std::string& t
       continue;
     }
     if (in_define || !directive_text::StartsAt(text, i, "__LINE__") ||
-        (i > 0 && IsWordChar(text[i - 1])) || (i + 8 < text.size() && IsWordChar(text[i + 8]))) {
+        (i > 0 && directive_text::IsWordChar(text[i - 1])) ||
+        (i + 8 < text.size() && directive_text::IsWordChar(text[i + 8]))) {
       continue;
     }
     std::string number = std::to_string(line);
