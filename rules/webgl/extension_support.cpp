@@ -1,9 +1,10 @@
 // webgl/extension-support: `#extension` lines for extensions the WebGL context does
-// not offer (rules/data/webgl_context_extensions.def: OES_standard_derivatives exists
-// in WebGL 1 only, OVR_multiview2 in WebGL 2 only, and so on), and `all` with `enable`
-// or `require`. `require` of a missing extension and `all : enable|require` are
-// errors in browsers, `enable` and `warn` a warning; either way the extension's
-// functions and variables stay unavailable (`check` hides such lines from glslang).
+// not offer (src/model/webgl_context_extensions.def: OES_standard_derivatives exists
+// in WebGL 1 only, OVR_multiview2 in WebGL 2 only, and so on) or the page did not
+// enable (`--enabled-extensions`), and `all` with `enable` or `require`. `require` of a missing
+// extension and `all : enable|require` are errors in browsers, `enable` and `warn` a warning;
+// either way the extension's functions and variables stay unavailable (`check` hides such lines
+// from glslang).
 //
 //   #extension GL_OES_standard_derivatives : require   // error in a WebGL 2 context
 #include <string>
@@ -38,11 +39,18 @@ class ExtensionSupportRule final : public rule::Rule {
         }
         continue;
       }
-      if (webgl::ContextOffersExtension(name, context.Settings().target) || behavior == "disable")
+      const model::Target target = context.Settings().target;
+      if (behavior == "disable" ||
+          model::ExtensionAvailable(name, target, context.Settings().extensions)) {
         continue;
-      const std::string message = "'" + name + "' is not an extension a " +
-                                  (webgl2 ? "WebGL 2" : "WebGL 1") +
-                                  " context offers; its functions and variables are not there";
+      }
+      const std::string message =
+          model::ContextOffersExtension(name, target)
+              ? "'" + name +
+                    "' is not enabled by the page (--enabled-extensions); its functions and "
+                    "variables are not there"
+              : "'" + name + "' is not an extension a " + (webgl2 ? "WebGL 2" : "WebGL 1") +
+                    " context offers; its functions and variables are not there";
       if (behavior == "require") {
         webgl::ReportError(context, kId, directive.range, message);
       } else {

@@ -303,7 +303,7 @@ bool AlignLenientMessages(const BrowserContext& context, Diagnostic& diagnostic)
   }
   if (const size_t at = message.find("extension not supported: "); at != std::string::npos) {
     const std::string name = message.substr(at + 25);
-    if (webgl::ContextOffersExtension(name, context.target)) {
+    if (model::ExtensionAvailable(name, context.target, context.extensions)) {
       Demote(diagnostic, Severity::kNote,
              "not an error in browsers: the WebGL context offers " + name +
                  " and a page enables it for this shader; glslang does not know it");
@@ -604,7 +604,7 @@ void HideUnofferedExtensions(const BrowserContext& context, FileId part, std::st
   for (const glsl::ExtensionDirective& directive : context.preprocessed->extensions) {
     if (directive.name == "all" || directive.range.file != part ||
         directive.range.end > text.size() ||
-        webgl::ContextOffersExtension(directive.name, context.target)) {
+        model::ExtensionAvailable(directive.name, context.target, context.extensions)) {
       continue;
     }
     for (uint32_t i = directive.range.begin; i < directive.range.end; ++i) {

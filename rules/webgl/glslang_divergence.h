@@ -15,13 +15,15 @@
 #include "glsl/syntax/ast.h"
 #include "model/stage.h"
 #include "model/target.h"
+#include "model/webgl_extensions.h"
 #include "source/source_file.h"
 
 namespace shaderport::rules {
 
 struct BrowserContext {
   model::Target target = model::Target::kWebGL2;
-  int version = 100;  // the code's GLSL ES version
+  model::EnabledExtensions extensions;  // what the page enabled
+  int version = 100;                    // the code's GLSL ES version
   model::Stage stage = model::Stage::kFragment;
   const SourceFile* file = nullptr;  // the user's file
   const glsl::LexedFile* lexed = nullptr;

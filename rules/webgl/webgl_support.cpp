@@ -25,24 +25,6 @@ const glsl::Expr* Unparenthesized(const glsl::Expr* expr) {
   return expr;
 }
 
-bool ContextOffersExtension(std::string_view name, model::Target target) {
-  struct Offered {
-    std::string_view name;
-    bool webgl1;
-    bool webgl2;
-  };
-  static constexpr Offered kOffered[] = {
-#define WEBGL_EXTENSION(name, in_webgl1, in_webgl2) {#name, in_webgl1, in_webgl2},
-#include "rules/data/webgl_context_extensions.def"
-#undef WEBGL_EXTENSION
-  };
-  for (const Offered& offered : kOffered) {
-    if (offered.name == name)
-      return target == model::Target::kWebGL2 ? offered.webgl2 : offered.webgl1;
-  }
-  return false;
-}
-
 std::optional<int64_t> LayoutLocation(const glsl::QualifierList& qualifiers) {
   for (const glsl::Qualifier& qualifier : qualifiers.items) {
     if (qualifier.kind != glsl::QualifierKind::kLayout) continue;

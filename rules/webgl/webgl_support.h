@@ -34,10 +34,6 @@ const glsl::Symbol* SymbolOf(const rule::RuleContext& context, const glsl::Node&
 // Strips parentheses: `((a))` is `a`.
 const glsl::Expr* Unparenthesized(const glsl::Expr* expr);
 
-// Whether a WebGL 1 or 2 context offers the #extension `name`
-// (rules/data/webgl_context_extensions.def).
-bool ContextOffersExtension(std::string_view name, model::Target target);
-
 // The value of `layout(location = N)` among `qualifiers`, when written as an integer.
 std::optional<int64_t> LayoutLocation(const glsl::QualifierList& qualifiers);
 

@@ -18,9 +18,14 @@ inline constexpr size_t kMaxCompiledTokens = 1'000'000;
 // Syntax-tree depth given to glslang's SPIR-V generator, which recurses once per level (a
 // chain of 400,000 terms overflowed its 256 MiB stack). Browsers stop at 256 levels.
 inline constexpr uint32_t kMaxSpirvTreeDepth = 10'000;
-inline constexpr uint32_t kMaxMacroDepth = 200;         // nested macro expansions
-inline constexpr uint32_t kMaxConditionalDepth = 200;   // nested #if groups
-inline constexpr uint32_t kMaxSyntaxDepth = 256;        // nested expressions/statements
+inline constexpr uint32_t kMaxMacroDepth = 200;        // nested macro expansions
+inline constexpr uint32_t kMaxConditionalDepth = 200;  // nested #if groups
+// Browsers' GLSL parsers (ANGLE's, made by bison) keep at most 10,000 entries on their
+// stack and reject deeper code with "memory exhausted": about 9,990 nested parentheses,
+// 3,330 nested `?:` or 1,665 nested `if`s. Our parser estimates that stack per construct
+// (glsl/syntax/browser_stack.h) and stops where they do; its own recursion stays below
+// this many levels too.
+inline constexpr uint32_t kBrowserParserStack = 10'000;
 inline constexpr size_t kMaxDiagnosticsPerFile = 1000;  // further ones are dropped with a note
 // Files read besides inputs (docs/limits.md, "Other files"): larger ones are refused
 // before a byte is read.

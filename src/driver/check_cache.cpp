@@ -24,6 +24,10 @@ CacheKey RunKey(const CheckOptions& options) {
       .Add(Value(options.dialect))
       .Add(Value(options.stage))
       .Add(Value(options.target));
+  // Only when given, so that entries written before the option existed still match.
+  if (!options.enabled_extensions.EnablesAll()) {
+    hasher.Add(std::string_view("extensions=")).Add(options.enabled_extensions.Describe());
+  }
   for (size_t i = 0; i < options.channels.size(); ++i) {
     // Hashed as a kind (2D when not given) and a given flag, as before the flag and
     // the kind were one optional: cache entries written then still match.

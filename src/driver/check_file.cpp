@@ -246,6 +246,7 @@ FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceMana
   webgl.stage = decision.kind.stage;
   webgl.shadertoy = decision.IsShaderToy();
   webgl.target = decision.target;
+  webgl.extensions = options.enabled_extensions;
   webgl.forced_version = decision.ForcedVersion();
   webgl.behind_header = decision.IsShaderToy();
   validate::ValidationRequest request = ComposeForGlslang(decision, file, common, sources);

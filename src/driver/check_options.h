@@ -16,6 +16,7 @@
 #include "driver/shard.h"
 #include "model/channel_kind.h"
 #include "model/harness_dialect.h"
+#include "model/webgl_extensions.h"
 #include "validate/shadertoy_contract.h"
 
 namespace shaderport::driver {
@@ -25,6 +26,9 @@ struct CheckOptions {
   std::optional<Dialect> dialect;     // --dialect: overrides detection and config
   std::optional<model::Stage> stage;  // --stage
   std::optional<model::Target> target;
+  // --enabled-extensions: the #extension names the page enabled (default: all the
+  // context offers).
+  model::EnabledExtensions enabled_extensions;
   // --link VS FS: programs to link; when empty, vertex and fragment files with the
   // same stem in the same directory are linked.
   std::vector<std::pair<std::filesystem::path, std::filesystem::path>>

@@ -29,6 +29,7 @@ rules::BrowserContext ToBrowserContext(const FrontEndResult& front,
                                        const WebglCheckSettings& settings) {
   rules::BrowserContext context;
   context.target = settings.target;
+  context.extensions = settings.extensions;
   context.version = VersionOf(front, settings);
   context.stage = settings.stage;
   context.file = nullptr;
@@ -58,6 +59,7 @@ DiagnosticList RunWebglChecks(const SourceFile& file, const FrontEndResult& fron
   port_settings.written_version =
       front.preprocessed.version.present ? front.preprocessed.version.number : 0;
   port_settings.target = settings.target;
+  port_settings.extensions = settings.extensions;
   port_settings.behind_site_header = settings.behind_header;
   for (const rule::Rule* check : rules::CheckRules()) {
     rule::RuleContext context(file, front.lexed, front.preprocessed, front.parsed.tree,

@@ -14,6 +14,7 @@ namespace shaderport::driver {
 
 struct WebglCheckSettings {
   model::Target target = model::Target::kWebGL2;
+  model::EnabledExtensions extensions;  // --enabled-extensions
   model::Stage stage = model::Stage::kFragment;
   bool shadertoy = false;
   // The version a host forces on the code (FileDecision::ForcedVersion), 0: its own.

@@ -15,6 +15,7 @@
 #include "model/harness_dialect.h"
 #include "model/stage.h"
 #include "model/target.h"
+#include "model/webgl_extensions.h"
 #include "rule/macro_fixes.h"
 #include "source/source_file.h"
 
@@ -36,6 +37,7 @@ struct PortSettings {
   // infer it from how the code samples the channel.
   model::GivenChannelKinds channels{};
   model::Target target = model::Target::kWebGL2;
+  model::EnabledExtensions extensions;  // what the page enabled (--enabled-extensions)
   // The #version line as written (0 when absent), for rules about the line itself.
   int written_version = 0;
   // The code is one of the harness's off-screen buffer passes (a ShaderToy Buffer tab).

@@ -18,13 +18,16 @@ sources recorded are the very strings the harness passes to wtu.loadShader. The 
 itself is injected before any page script with Page.addScriptToEvaluateOnNewDocument; it
 also wraps shaderSource on WebGLRenderingContext and WebGL2RenderingContext, to note
 whether the harness really passed each recorded source to the GL during that case (it
-does not when the harness reuses an identical shader it compiled for an earlier case).
+does not when the harness reuses an identical shader it compiled for an earlier case),
+and getExtension on both, to keep per context the WebGL extensions the page enabled.
 
 Once the harness has chosen its vertex source, and before it compiles anything, the
 observer compiles both sources itself in the same context (the page's own extensions
 enabled, nothing else; the fragment source by the harness's own expression, checked
 against the harness's `fSource` later), binds vPosition/texCoord0 as the harness does and
-links, to record Chromium's verdict and logs. (Compiled after the harness, an identical
+links, to record Chromium's verdict and logs, and the GLSL #extension names that the
+WebGL extensions enabled on that context by then turn on (`extensions`, from
+browser_compile.WEBGL_EXTENSIONS). (Compiled after the harness, an identical
 text can come back from Chromium's cache with an empty info log.) It also counts the
 testPassed/testFailed calls the harness made for the case.
 
@@ -50,7 +53,7 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import cdp_pipe  # noqa: E402
-from browser_compile import find_chromium  # noqa: E402
+from browser_compile import WEBGL_EXTENSIONS, find_chromium  # noqa: E402
 
 DEFAULT_REPO = "/work/.mirror/KhronosGroup+WebGL/repo"
 DEFAULT_COMMIT = "f15a73f727d8ee66a3ec6d0bed9f02f08cacc2c1"
@@ -77,11 +80,22 @@ _PATCHES = [
      "  window.__spHarness.fragment(fSource);\n"),
 ]
 
+
+def _glsl_names():
+    """{WebGL extension name in lower case: [GLSL #extension names it enables]}."""
+    names = {}
+    for glsl, webgl in WEBGL_EXTENSIONS.items():
+        names.setdefault(webgl.lower(), []).append(glsl)
+    return {webgl: sorted(glsl) for webgl, glsl in names.items()}
+
+
 # Runs in every document before its own scripts.
 _OBSERVER = r"""
 (function() {
   if (window.__spHarness) return;
   const state = {cases: [], current: null, harnessLoaded: false, errors: []};
+  const glslNames = __SP_GLSL_NAMES__;
+  const enabled = new WeakMap();  // context -> Set of the WebGL extensions it returned
   window.addEventListener("error", e => {
     if (state.errors.length < 5) state.errors.push(String(e.message));
   });
@@ -92,6 +106,26 @@ _OBSERVER = r"""
       if (state.current && !state.verdict) state.current.passed.push(String(source));
       return original.call(this, shader, source);
     };
+    const getExtension = proto.prototype.getExtension;
+    proto.prototype.getExtension = function(name) {
+      const result = getExtension.apply(this, arguments);
+      if (result !== null && result !== undefined) {
+        // Names match case-insensitively: keep the one the context lists.
+        const wanted = String(name).toLowerCase();
+        const listed = (this.getSupportedExtensions() || []).find(n => n.toLowerCase() === wanted);
+        if (!enabled.has(this)) enabled.set(this, new Set());
+        enabled.get(this).add(listed || String(name));
+      }
+      return result;
+    };
+  }
+  // The GLSL #extension names the page has turned on in `gl` so far, sorted.
+  function glslExtensions(gl) {
+    const out = new Set();
+    for (const name of (gl && enabled.get(gl)) || []) {
+      for (const glsl of glslNames[name.toLowerCase()] || []) out.add(glsl);
+    }
+    return Array.from(out).sort();
   }
   function expectation(value) {
     return value === undefined || value === null ? null : !!value;
@@ -182,6 +216,7 @@ _OBSERVER = r"""
       c.pageContextVersion = (window.WebGL2RenderingContext &&
                               c.gl instanceof WebGL2RenderingContext) ? 2 : 1;
       c.chromium = safeVerdict(c.gl, c.vertex, c.fragment);
+      c.extensions = glslExtensions(c.gl);  // those Chromium compiled with
     },
     fragment(fSource) {
       const c = state.current;
@@ -191,6 +226,7 @@ _OBSERVER = r"""
         c.fragmentPrepDiffered = true;
         c.fragment = fSource;
         c.chromium = safeVerdict(c.gl, c.vertex, c.fragment);
+        c.extensions = glslExtensions(c.gl);
       }
     },
     end(gl, info) {
@@ -205,7 +241,7 @@ _OBSERVER = r"""
     },
   };
 })();
-"""
+""".replace("__SP_GLSL_NAMES__", json.dumps(_glsl_names(), sort_keys=True))
 
 # The limits that pages sizing their shaders from the context read.
 _LIMITS = r"""
@@ -449,6 +485,10 @@ def to_record(page, index, case, lists):
         "capture": {"vPassedToGL": case.get("vPassedToGL"), "fPassedToGL": case.get("fPassedToGL"),
                     "fragmentByHarness": case.get("fragmentByHarness"),
                     "fragmentPrepDiffered": case.get("fragmentPrepDiffered", False)},
+        # not in webgl-cts.jsonl: the GLSL #extension names turned on by the WebGL extensions
+        # the page had enabled on its context when Chromium compiled the case (getExtension
+        # returned an object), sorted; for `check --enabled-extensions`.
+        "extensions": case.get("extensions", []),
     }
     return record
 

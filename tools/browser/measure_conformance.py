@@ -20,23 +20,33 @@ for the public part:
   then does not link (GLSL ES 1.00.17 section 10.27); linkSuccess is compared when both
   stages compile; a null expectation is not checked. Cases with ignoreResults ("should not
   crash") are left out, as the suite enforces nothing for them.
+* --page-extensions: a case with an `extensions` field (conformance_pages.py records the
+  GLSL #extension names the page's own getExtension calls turned on) is checked, stages
+  and program, with `--enabled-extensions` set to that list (`none` when empty), as the
+  page's context compiled it; cases without the field, and every case without the flag,
+  get check's default (every extension the context offers). The flag needs a shaderport
+  that has the option.
 
 Python 3 standard library only.
 
   measure_conformance.py /tmp/heldout-conf/cases.jsonl --shaderport /tmp/sp-bin/shaderport \
       --out-md tests/reports/webgl-conformance-heldout.md
+  measure_conformance.py /tmp/heldout-conf/cases.jsonl --page-extensions --out-md /tmp/h.md
 """
 import argparse
 import collections
 import concurrent.futures
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
 import tempfile
 
 CONTEXTS = {1: "webgl1", 2: "webgl2"}
+# `none` is worth showing on a case only where a source asks for an extension.
+_EXTENSION_LINE = re.compile(r"^[ \t]*#[ \t]*extension\b", re.M)
 
 
 def is_link_rule(rule):
@@ -82,37 +92,54 @@ def write(path, text):
         f.write(text)
 
 
-def measure(cases, shaderport, jobs, link_each):
+def enabled_extensions(case, page_extensions):
+    """The --enabled-extensions value for a case, None for check's default."""
+    if not page_extensions or case.get("extensions") is None:
+        return None
+    return ",".join(case["extensions"]) or "none"
+
+
+def measure(cases, shaderport, jobs, link_each, page_extensions=False):
     work = tempfile.mkdtemp(prefix="sp-measure-conformance-")
     try:
+        # One directory per --enabled-extensions value, as check takes one per run; the
+        # default's keeps the old paths.
+        values = [enabled_extensions(c, page_extensions) for c in cases]
+        prefixes = {None: ""}
+        for value in sorted(set(v for v in values if v is not None)):
+            prefixes[value] = "x%d/" % len(prefixes)
         stage_files, pair_files = {}, {}
         for i, case in enumerate(cases):
             target = CONTEXTS[case.get("contextVersion", 1)]
             name = "c%05d" % i
-            stage_files[i] = ("stage/%s/%s-v.vert" % (target, name),
-                              "stage/%s/%s-f.frag" % (target, name))
-            pair_files[i] = ("program/%s/%s.vert" % (target, name),
-                             "program/%s/%s.frag" % (target, name))
+            prefix = prefixes[values[i]]
+            stage_files[i] = ("%sstage/%s/%s-v.vert" % (prefix, target, name),
+                              "%sstage/%s/%s-f.frag" % (prefix, target, name))
+            pair_files[i] = ("%sprogram/%s/%s.vert" % (prefix, target, name),
+                             "%sprogram/%s/%s.frag" % (prefix, target, name))
             for (vs, fs) in (stage_files[i], pair_files[i]):
                 write(os.path.join(work, vs), case["vertex"])
                 write(os.path.join(work, fs), case["fragment"])
         stage_findings, pair_findings = {}, {}
-        for target in CONTEXTS.values():
-            if os.path.isdir(os.path.join(work, "stage", target)):
-                stage_findings.update(run_check(shaderport, target, ["stage/" + target], work,
-                                                jobs))
-            pairs = [pair_files[i] for i, c in enumerate(cases)
-                     if CONTEXTS[c.get("contextVersion", 1)] == target]
-            if not pairs:
-                continue
-            if link_each:  # one `check --link VS FS` per case
-                with concurrent.futures.ThreadPoolExecutor(jobs) as pool:
-                    for found in pool.map(lambda pair: run_check(
-                            shaderport, target, ["--link", pair[0], pair[1]], work, 1), pairs):
-                        pair_findings.update(found)
-            else:  # NAME.vert and NAME.frag in one directory: linked as by --link
-                pair_findings.update(run_check(shaderport, target, ["program/" + target], work,
-                                               jobs))
+        for value, prefix in prefixes.items():
+            option = [] if value is None else ["--enabled-extensions", value]
+            for target in CONTEXTS.values():
+                if os.path.isdir(os.path.join(work, prefix + "stage", target)):
+                    stage_findings.update(run_check(
+                        shaderport, target, option + [prefix + "stage/" + target], work, jobs))
+                pairs = [pair_files[i] for i, c in enumerate(cases) if values[i] == value and
+                         CONTEXTS[c.get("contextVersion", 1)] == target]
+                if not pairs:
+                    continue
+                if link_each:  # one `check --link VS FS` per case
+                    with concurrent.futures.ThreadPoolExecutor(jobs) as pool:
+                        for found in pool.map(lambda pair: run_check(
+                                shaderport, target, option + ["--link", pair[0], pair[1]], work,
+                                1), pairs):
+                            pair_findings.update(found)
+                else:  # NAME.vert and NAME.frag in one directory: linked as by --link
+                    pair_findings.update(run_check(
+                        shaderport, target, option + [prefix + "program/" + target], work, jobs))
         results = []
         for i, case in enumerate(cases):
             missing = [p for p in stage_files[i] + pair_files[i]
@@ -229,10 +256,15 @@ def chromium_text(chromium):
                                                 one(chromium.get("linked")))
 
 
-def case_header(case):
-    return ("* page: `%s` (WebGL %d)\n* test: %s\n* expected: %s; Chromium: %s\n" % (
+def case_header(case, page_extensions=False):
+    text = ("* page: `%s` (WebGL %d)\n* test: %s\n* expected: %s; Chromium: %s\n" % (
         case["file"], case.get("contextVersion", 1), case.get("passMsg") or "(none)",
         expectation_text(case.get("expected") or {}), chromium_text(case.get("chromium") or {})))
+    value = enabled_extensions(case, page_extensions)
+    if value is not None and (value != "none" or any(
+            _EXTENSION_LINE.search(case[k]) for k in ("vertex", "fragment"))):
+        text += "* checked with `--enabled-extensions %s` (what the page enabled)\n" % value
+    return text
 
 
 MAX_SOURCE_CHARS = 20000
@@ -307,6 +339,12 @@ def report(args, cases, stats, stage_rows, case_rows, meta):
                "harness's rule (a stage expected to fail may fail at link instead), "
                "ignoreResults cases left out. A stage fails when check reports an error "
                "whose rule is not `webgl/link-*` or `webgl/varying-packing`.\n")
+    told = [enabled_extensions(c, args.page_extensions) for c in cases]
+    if any(v is not None for v in told):
+        out.append("With `--page-extensions`: %d cases were checked with `--enabled-extensions` "
+                   "set to the GLSL extensions their page's getExtension calls turned on "
+                   "(%d of them `none`), the others with every extension the context offers.\n"
+                   % (sum(1 for v in told if v is not None), told.count("none")))
     out.append("The shader sources below are from the Khronos WebGL conformance suite "
                "(github.com/KhronosGroup/WebGL, sdk/tests), under the MIT license (see "
                "LICENSE.txt in that repository); this notice stays with them.\n")
@@ -361,7 +399,7 @@ def report(args, cases, stats, stage_rows, case_rows, meta):
             out.append("### %s, %s stage: check %s, Chromium %s\n" % (
                 case["id"], row["stage"], "accepts" if row["ours"] else "rejects",
                 "rejects" if row["ours"] else "accepts"))
-            out.append(case_header(case))
+            out.append(case_header(case, args.page_extensions))
             out.append("Chromium's %s log:\n\n%s" % (row["stage"], fence(row["log"] or "(empty)")))
             out.append("check's findings on the %s stage alone:\n\n%s" % (
                 row["stage"], fence(findings_text(row["findings"]))))
@@ -377,7 +415,7 @@ def report(args, cases, stats, stage_rows, case_rows, meta):
             chromium_passes = (case.get("agree") or {}).get("harness")
             out.append("### %s%s\n" % (case["id"], "" if chromium_passes is not False else
                                         " (Chromium fails this case too)"))
-            out.append(case_header(case))
+            out.append(case_header(case, args.page_extensions))
             out.append("* check (`--link`): vertex %s, fragment %s, link %s\n" % (
                 "ok" if v else "error", "ok" if f else "error", "ok" if linked else "error"))
             out.append("Chromium's logs:\n\n%s" % fence(
@@ -400,6 +438,11 @@ def main(argv=None):
                         help="link each case with its own `check --link VS FS` process "
                              "(default: one run over a directory of NAME.vert/NAME.frag "
                              "pairs per context, which check links the same way)")
+    parser.add_argument("--page-extensions", action="store_true",
+                        help="check each case that has an `extensions` field with "
+                             "`--enabled-extensions` set to it (`none` when empty): only the "
+                             "extensions its page enabled (default: check's own default, "
+                             "every extension the context offers)")
     parser.add_argument("--meta", default="", help="a paragraph for the top of the report "
                         "(default: where the cases come from, read from JSONL.pages.json, "
                         "which conformance_pages.py writes)")
@@ -410,7 +453,7 @@ def main(argv=None):
     with open(args.jsonl, encoding="utf-8") as f:
         cases = [json.loads(line) for line in f if line.strip()]
     shaderport = find_shaderport(args.shaderport)
-    results = measure(cases, shaderport, args.jobs, args.link_each)
+    results = measure(cases, shaderport, args.jobs, args.link_each, args.page_extensions)
     stats, stage_rows, case_rows = evaluate(cases, results)
     text = report(args, cases, stats, stage_rows, case_rows, args.meta)
     os.makedirs(os.path.dirname(os.path.abspath(args.out_md)), exist_ok=True)

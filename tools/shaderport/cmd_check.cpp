@@ -24,6 +24,7 @@
 #include "driver/port/rule_reference.h"
 #include "driver/read_input.h"
 #include "empty_input.h"
+#include "model/webgl_extensions.h"
 #include "option_names.h"
 #include "port_arguments.h"
 #include "progress_line.h"
@@ -46,6 +47,7 @@ struct CheckArgs {
   std::string dialect;
   std::string stage;
   std::string target;
+  std::optional<std::string> enabled_extensions;  // --enabled-extensions
   std::vector<std::string> link;
   std::string common;
   std::vector<std::string> channels;
@@ -99,6 +101,12 @@ int RunCheckCommand(const CheckArgs& args) {
   if (!ResolveKindOptions({args.dialect, args.stage, args.target}, dialect_sources, options,
                           harness)) {
     return kExitUsage;
+  }
+  if (args.enabled_extensions) {
+    std::string error;
+    const auto enabled = model::ParseEnabledExtensions(*args.enabled_extensions, error);
+    if (!enabled) return UsageError(error);
+    options.enabled_extensions = *enabled;
   }
   if (!args.link.empty()) {
     if (args.link.size() % 2 != 0) return UsageError("--link takes a vertex and a fragment shader");
@@ -280,6 +288,9 @@ void AddCheckCommand(CLI::App& app, int& exit_code) {
   command->add_option("--target", args->target,
                       "webgl1 | webgl2: the WebGL context the shader runs in (default: webgl2 "
                       "for GLSL ES 3.00 and ShaderToy code, webgl1 for GLSL ES 1.00)");
+  command->add_option("--enabled-extensions", args->enabled_extensions,
+                      "NAME,NAME... | none: the #extension names the page enabled with "
+                      "getExtension (default: every one the WebGL context offers)");
   command
       ->add_option("--link", args->link,
                    "VS FS: check these two files as one program (repeatable; default: "

@@ -41,10 +41,20 @@ class Evaluator {
     state_.Report(Severity::kError, "preprocessor/invalid-if-expression", at, std::move(message));
   }
 
-  // Guards the recursion against deeply nested input such as 100,000 '('.
+  // Guards the recursion against deeply nested input such as 100,000 '('. A level of
+  // parentheses enters twice (Conditional and Unary); browsers' preprocessors stop at
+  // 9,996 levels ("memory exhausted", the same 10,000-entry parser stack).
+  static constexpr uint32_t kMaxDepth = 2 * (limits::kBrowserParserStack - 3);
+  // Past it the shader is rejected as the parser rejects deep code (a limit breach: glslang
+  // evaluates any depth).
   bool Enter() {
-    if (++depth_ > limits::kMaxSyntaxDepth) {
-      Fail(At(), "#if expression nested too deeply");
+    if (++depth_ > kMaxDepth) {
+      if (!failed_) {
+        failed_ = true;
+        state_.Report(Severity::kError, "syntax/nesting-too-deep", At(),
+                      "#if expression nested too deeply: browsers' preprocessors give up here "
+                      "('memory exhausted', after about 9,996 nested parentheses)");
+      }
       return false;
     }
     return true;

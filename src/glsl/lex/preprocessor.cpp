@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "base/large_stack.h"
 #include "base/limits.h"
 #include "diag/limit_breach.h"
 #include "glsl/lex/macro_definitions.h"
@@ -199,12 +200,17 @@ void PpDriver::ReportOutputTooLarge() {
 PreprocessResult Preprocess(std::span<const SourceFile* const> files,
                             const PreprocessOptions& options) {
   PreprocessResult result;
-  PpDriver driver(result, options);
-  for (size_t i = 0; i < files.size(); ++i) {
-    driver.RunFile(*files[i], i, i < options.lexed.size() ? options.lexed[i] : nullptr,
-                   i < options.first_lines.size() ? options.first_lines[i] : 0);
-  }
-  driver.Finish(files.empty() ? nullptr : files.back());
+  // `#if` expressions nest as deep as browsers allow (9,996 parentheses), past what a
+  // default thread stack holds: run on a large stack (in place when already on one).
+  const auto preprocess = [&] {
+    PpDriver driver(result, options);
+    for (size_t i = 0; i < files.size(); ++i) {
+      driver.RunFile(*files[i], i, i < options.lexed.size() ? options.lexed[i] : nullptr,
+                     i < options.first_lines.size() ? options.first_lines[i] : 0);
+    }
+    driver.Finish(files.empty() ? nullptr : files.back());
+  };
+  if (!RunOnLongLivedLargeStack(preprocess)) preprocess();
   return result;
 }
 

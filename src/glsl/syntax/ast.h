@@ -58,7 +58,7 @@ enum class NodeKind : uint8_t {
   kErrorExpr,  // a missing or unparsable expression
 };
 
-/// Tree height: recursion in the parser is bounded by limits::kMaxSyntaxDepth, but
+/// Tree height: recursion in the parser is bounded by limits::kBrowserParserStack, but
 /// left-associative chains (`a+b+c+...`, `a.x.y[0]...`) build trees of any height
 /// iteratively; valid WebGL shaders have chains of thousands of operators. Walk
 /// trees with VisitPreorder/VisitPostorder (visit.h), not with unbounded recursion.

@@ -146,7 +146,10 @@ void Parser::ParseArrayDimensions(std::vector<ArrayDimension>& out) {
     ArrayDimension dim;
     uint32_t first = Index();
     Advance();
-    if (!AtPunct(Punct::kRightBracket)) dim.size = ParseConditional();
+    if (!AtPunct(Punct::kRightBracket)) {
+      BrowserStackGuard stack(*this, browser_stack::kArraySize);
+      dim.size = ParseConditional();
+    }
     if (!Expect(Punct::kRightBracket, "to close the array size")) {
       SkipBalanced(false);
       Accept(Punct::kRightBracket);
@@ -192,6 +195,7 @@ StructSpecifier* Parser::ParseStruct() {
     return Finish(node);
   }
   if (!Expect(Punct::kLeftBrace, "in struct definition")) return Finish(node);
+  BrowserStackGuard stack(*this, browser_stack::kStructBody);
   while (!AtPunct(Punct::kRightBrace) && !AtEnd()) {
     uint32_t before = pos_;
     node->fields.push_back(ParseMemberDeclaration());
@@ -275,7 +279,10 @@ Node* Parser::ParseDeclaratorList(VariableDeclaration* decl) {
       d->name = TakeName();
       DeclareOrdinaryName(d->name.text);
       ParseArrayDimensions(d->array);
-      if (Accept(Punct::kEqual)) d->initializer = ParseAssignment();
+      if (Accept(Punct::kEqual)) {
+        BrowserStackGuard stack(*this, browser_stack::kInitializer);
+        d->initializer = ParseAssignment();
+      }
       decl->declarators.push_back(Finish(d));
       if (!Accept(Punct::kComma)) break;
     }
@@ -327,6 +334,7 @@ Node* Parser::ParseFunction(const QualifierList& qualifiers, TypeSpecifier* type
     Accept(Punct::kRightParen);
   }
   if (AtPunct(Punct::kLeftBrace)) {
+    BrowserStackGuard stack(*this, browser_stack::kFunctionBody);
     fn->body = ParseCompound(false);
   } else {
     ExpectSemicolon("after function prototype");

@@ -168,6 +168,7 @@ Expr* Parser::ParseAssignment() {
   node->op_range = Tok().expansion;
   node->lhs = lhs;
   Advance();
+  BrowserStackGuard stack(*this, browser_stack::kAssignedValue);
   node->rhs = ParseAssignment();
   return Finish(node);
 }
@@ -180,8 +181,12 @@ Expr* Parser::ParseConditional() {
   node->first_token = first;
   node->condition = condition;
   Advance();
-  node->if_true = ParseExpression();
+  {
+    BrowserStackGuard stack(*this, browser_stack::kConditionalTrue);
+    node->if_true = ParseExpression();
+  }
   Expect(Punct::kColon, "in conditional expression");
+  BrowserStackGuard stack(*this, browser_stack::kConditionalFalse);
   node->if_false = ParseAssignment();
   return Finish(node);
 }
@@ -198,6 +203,7 @@ Expr* Parser::ParseBinary(int min_precedence) {
     node->op_range = Tok().expansion;
     node->lhs = lhs;
     Advance();
+    BrowserStackGuard stack(*this, browser_stack::kRightOperand);
     node->rhs = ParseBinary(info->precedence + 1);
     lhs = Finish(node);
   }
@@ -207,6 +213,7 @@ Expr* Parser::ParseUnary() {
   std::optional<UnaryOp> op = PrefixOf(Tok());
   if (!op) return ParsePostfix();
   DepthGuard guard(*this);
+  BrowserStackGuard stack(*this, browser_stack::kPrefixOperator);
   auto* node = Start<UnaryExpr>();
   node->op = *op;
   node->op_range = Tok().expansion;
@@ -230,7 +237,10 @@ Expr* Parser::ParsePostfix() {
       node->first_token = first;
       node->base = expr;
       Advance();
-      node->index = ParseExpression();
+      {
+        BrowserStackGuard stack(*this, browser_stack::kIndex);
+        node->index = ParseExpression();
+      }
       if (!Expect(Punct::kRightBracket, "to close the index")) {
         SkipBalanced(false);
         Accept(Punct::kRightBracket);
@@ -282,7 +292,10 @@ Expr* Parser::ParsePrimary() {
   if (AtPunct(Punct::kLeftParen)) {
     auto* node = Start<ParenExpr>();
     Advance();
-    node->inner = ParseExpression();
+    {
+      BrowserStackGuard stack(*this, browser_stack::kParenthesis);
+      node->inner = ParseExpression();
+    }
     if (!Expect(Punct::kRightParen, "to match '('")) {
       SkipBalanced(false);
       Accept(Punct::kRightParen);
@@ -356,6 +369,8 @@ void Parser::ParseArguments(CallExpr* call) {
     Advance();
   } else if (!AtPunct(Punct::kRightParen)) {
     while (true) {
+      BrowserStackGuard stack(*this, call->arguments.empty() ? browser_stack::kFirstArgument
+                                                             : browser_stack::kLaterArgument);
       call->arguments.push_back(ParseAssignment());
       if (!Accept(Punct::kComma)) break;
     }

@@ -17,7 +17,10 @@ Node* Parser::ParseStatement() {
     SkipBalanced(true);
     return Finish(error);
   }
-  if (AtPunct(Punct::kLeftBrace)) return ParseCompound(true);
+  if (AtPunct(Punct::kLeftBrace)) {
+    BrowserStackGuard stack(*this, browser_stack::kBlock);
+    return ParseCompound(true);
+  }
   if (AtPunct(Punct::kSemicolon)) {
     auto* empty = Start<EmptyStatement>();
     Advance();
@@ -74,14 +77,21 @@ Node* Parser::ParseIf() {
   auto* node = Start<IfStatement>();
   Advance();
   Expect(Punct::kLeftParen, "after 'if'");
-  node->condition = ParseExpression();
+  {
+    BrowserStackGuard stack(*this, browser_stack::kCondition);
+    node->condition = ParseExpression();
+  }
   if (!Expect(Punct::kRightParen, "after the 'if' condition")) {
     SkipBalanced(false);
     Accept(Punct::kRightParen);
   }
-  node->then_branch = ParseStatement();
+  {
+    BrowserStackGuard stack(*this, browser_stack::kThenBranch);
+    node->then_branch = ParseStatement();
+  }
   if (AtKeyword("else")) {
     Advance();
+    BrowserStackGuard stack(*this, browser_stack::kElseBranch);
     node->else_branch = ParseStatement();
   }
   return Finish(node);
@@ -96,7 +106,10 @@ Node* Parser::ParseConditionOrDeclaration() {
   auto* d = Start<Declarator>();
   d->name = ExpectName("a name in the condition");
   DeclareOrdinaryName(d->name.text);
-  if (Expect(Punct::kEqual, "in a condition declaration")) d->initializer = ParseAssignment();
+  if (Expect(Punct::kEqual, "in a condition declaration")) {
+    BrowserStackGuard stack(*this, browser_stack::kInitializer);
+    d->initializer = ParseAssignment();
+  }
   decl->declarators.push_back(Finish(d));
   return Finish(decl);
 }
@@ -106,6 +119,7 @@ Node* Parser::ParseFor() {
   Advance();
   Expect(Punct::kLeftParen, "after 'for'");
   PushScope();
+  BrowserStackGuard header(*this, browser_stack::kLoopHeader);
   if (AtPunct(Punct::kSemicolon)) {
     auto* empty = Start<EmptyStatement>();
     Advance();
@@ -122,7 +136,10 @@ Node* Parser::ParseFor() {
     SkipBalanced(false);
     Accept(Punct::kRightParen);
   }
-  node->body = ParseStatement();
+  {
+    BrowserStackGuard body(*this, browser_stack::kLoopBody - browser_stack::kLoopHeader);
+    node->body = ParseStatement();
+  }
   PopScope();
   return Finish(node);
 }
@@ -132,12 +149,18 @@ Node* Parser::ParseWhile() {
   Advance();
   Expect(Punct::kLeftParen, "after 'while'");
   PushScope();
-  node->condition = ParseConditionOrDeclaration();
+  {
+    BrowserStackGuard stack(*this, browser_stack::kCondition);
+    node->condition = ParseConditionOrDeclaration();
+  }
   if (!Expect(Punct::kRightParen, "after the 'while' condition")) {
     SkipBalanced(false);
     Accept(Punct::kRightParen);
   }
-  node->body = ParseStatement();
+  {
+    BrowserStackGuard stack(*this, browser_stack::kLoopBody);
+    node->body = ParseStatement();
+  }
   PopScope();
   return Finish(node);
 }
@@ -145,14 +168,20 @@ Node* Parser::ParseWhile() {
 Node* Parser::ParseDoWhile() {
   auto* node = Start<DoWhileStatement>();
   Advance();
-  node->body = ParseStatement();
+  {
+    BrowserStackGuard stack(*this, browser_stack::kDoBody);
+    node->body = ParseStatement();
+  }
   if (AtKeyword("while")) {
     Advance();
   } else {
     ErrorAtToken("syntax/expected-token", "expected 'while' in do/while loop, found " + Describe());
   }
   Expect(Punct::kLeftParen, "after 'while'");
-  node->condition = ParseExpression();
+  {
+    BrowserStackGuard stack(*this, browser_stack::kCondition);
+    node->condition = ParseExpression();
+  }
   if (!Expect(Punct::kRightParen, "after the 'while' condition")) {
     SkipBalanced(false);
     Accept(Punct::kRightParen);
@@ -165,12 +194,16 @@ Node* Parser::ParseSwitch() {
   auto* node = Start<SwitchStatement>();
   Advance();
   Expect(Punct::kLeftParen, "after 'switch'");
-  node->selector = ParseExpression();
+  {
+    BrowserStackGuard stack(*this, browser_stack::kCondition);
+    node->selector = ParseExpression();
+  }
   if (!Expect(Punct::kRightParen, "after the 'switch' selector")) {
     SkipBalanced(false);
     Accept(Punct::kRightParen);
   }
   if (AtPunct(Punct::kLeftBrace)) {
+    BrowserStackGuard stack(*this, browser_stack::kSwitchBody);
     node->body = ParseCompound(true);
   } else {
     ErrorAtToken("syntax/expected-token", "expected '{' after 'switch', found " + Describe());
@@ -182,7 +215,10 @@ Node* Parser::ParseCaseLabel() {
   auto* node = Start<CaseLabel>();
   bool is_case = Text() == "case";
   Advance();
-  if (is_case) node->value = ParseExpression();
+  if (is_case) {
+    BrowserStackGuard stack(*this, browser_stack::kCondition);
+    node->value = ParseExpression();
+  }
   Expect(Punct::kColon, is_case ? "after 'case' value" : "after 'default'");
   return Finish(node);
 }
@@ -193,7 +229,10 @@ Node* Parser::ParseJump() {
   if (word == "return") {
     auto* ret = Start<ReturnStatement>();
     Advance();
-    if (!AtPunct(Punct::kSemicolon)) ret->value = ParseExpression();
+    if (!AtPunct(Punct::kSemicolon)) {
+      BrowserStackGuard stack(*this, browser_stack::kReturnValue);
+      ret->value = ParseExpression();
+    }
     ExpectSemicolon("after return statement");
     return Finish(ret);
   }

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <string>
 
+#include "base/large_stack.h"
 #include "base/limits.h"
 #include "glsl/lex/lexer.h"
 #include "glsl/syntax/parser_internal.h"
@@ -133,12 +134,22 @@ void Parser::ErrorAfterPrevious(std::string_view rule, std::string message) {
 }
 
 bool Parser::TooDeep() {
-  if (depth_ <= limits::kMaxSyntaxDepth) return false;
+  if (browser_stack_ <= limits::kBrowserParserStack && depth_ <= limits::kBrowserParserStack) {
+    return false;
+  }
+  // Reported once, past the cap on errors too: a limit breach decides what runs next
+  // (docs/limits.md), and thousands of errors can come before it.
   if (!depth_reported_) {
     depth_reported_ = true;
-    Error(AtEnd() ? RangeOf(Index(), Index() - 1) : Tok().expansion, "syntax/nesting-too-deep",
-          "nesting too deep: more than " + std::to_string(limits::kMaxSyntaxDepth) +
-              " levels of parentheses, blocks or operators");
+    diagnostics_.push_back(
+        {Severity::kError,
+         "syntax/nesting-too-deep",
+         AtEnd() ? RangeOf(Index(), Index() - 1) : Tok().expansion,
+         "nesting too deep: browsers' parsers give up here ('memory exhausted': more than " +
+             std::to_string(limits::kBrowserParserStack) +
+             " entries on their stack, about 9,990 nested parentheses or 1,665 nested 'if's)",
+         {},
+         {}});
   }
   return true;
 }
@@ -292,8 +303,16 @@ ParseResult Parser::Run() {
 }
 
 ParseResult Parse(const PreprocessResult& tokens, const ParseOptions& options) {
-  Parser parser(tokens, options);
-  return parser.Run();
+  // Code browsers accept nests thousands of levels deep (limits::kBrowserParserStack),
+  // past what a default thread stack holds: parse on a large stack (in place when the
+  // caller already runs on one).
+  ParseResult result;
+  const auto parse = [&] {
+    Parser parser(tokens, options);
+    result = parser.Run();
+  };
+  if (!RunOnLongLivedLargeStack(parse)) parse();
+  return result;
 }
 
 }  // namespace shaderport::glsl

@@ -23,7 +23,7 @@ struct ParseResult {
 
 /// Parses the preprocessed tokens. Never fails: syntax errors become
 /// diagnostics (rule ids `syntax/...`) and the parse resumes at the next `;`,
-/// `}` or declaration start. Recursion is bounded by limits::kMaxSyntaxDepth.
+/// `}` or declaration start. Recursion is bounded by limits::kBrowserParserStack.
 /// The tree copies every name it keeps, so it does not depend on `tokens`.
 ParseResult Parse(const PreprocessResult& tokens, const ParseOptions& options);
 

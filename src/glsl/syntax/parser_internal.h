@@ -9,6 +9,7 @@
 
 #include "glsl/lex/preprocessor.h"
 #include "glsl/syntax/ast.h"
+#include "glsl/syntax/browser_stack.h"
 #include "glsl/syntax/keywords.h"
 #include "glsl/syntax/parser.h"
 
@@ -22,6 +23,7 @@ class Parser {
  private:
   void PlaceEmptyNodes();
   friend class DepthGuard;
+  friend class BrowserStackGuard;
 
   // ---- tokens (defined below the class: inline, as the parser asks them for every
   // token several times and a call each was a tenth of the parse)
@@ -146,7 +148,9 @@ class Parser {
   std::vector<WordInfo> words_;
   std::vector<std::pair<std::string, bool>> scope_names_;  // (name, is struct)
   std::vector<size_t> scope_marks_;
-  uint32_t depth_ = 0;
+  uint32_t depth_ = 0;  // our own recursion (DepthGuard)
+  // Estimated entries of a browser's parser stack (BrowserStackGuard, browser_stack.h).
+  uint32_t browser_stack_ = browser_stack::kBase;
   bool depth_reported_ = false;
   uint32_t last_error_index_ = UINT32_MAX;
   size_t error_count_ = 0;
@@ -216,7 +220,23 @@ inline bool Parser::Accept(Punct p) {
   return true;
 }
 
-// Counts one nesting level for as long as it lives.
+// Holds `entries` on the estimated browser parser stack for as long as it lives: put
+// around the parse of what a construct contains.
+class BrowserStackGuard {
+ public:
+  BrowserStackGuard(Parser& parser, uint32_t entries) : parser_(parser), entries_(entries) {
+    parser_.browser_stack_ += entries_;
+  }
+  ~BrowserStackGuard() { parser_.browser_stack_ -= entries_; }
+  BrowserStackGuard(const BrowserStackGuard&) = delete;
+  BrowserStackGuard& operator=(const BrowserStackGuard&) = delete;
+
+ private:
+  Parser& parser_;
+  uint32_t entries_;
+};
+
+// Counts one level of our own recursion for as long as it lives.
 class DepthGuard {
  public:
   explicit DepthGuard(Parser& parser) : parser_(parser) { ++parser_.depth_; }

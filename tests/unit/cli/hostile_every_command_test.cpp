@@ -66,6 +66,32 @@ std::vector<Row> Rows() {
         "float f" + std::to_string(i) + "(float x) { return " + g + "(x) + " + g + "(x * 0.5); }\n";
   }
   rows.push_back(Plain("inlining.glsl", calls + PassWith("  c = vec4(f30(p.x));")));
+  // As deep as browsers' parsers go (docs/limits.md, "Nesting"), not past it: trees
+  // thousands of levels deep reach every command's rules, transforms and walks.
+  const auto repeat = [](const std::string& s, int n) {
+    std::string out;
+    for (int i = 0; i < n; ++i) out += s;
+    return out;
+  };
+  rows.push_back(Plain("parens.frag", PassWith("  float x = " + repeat("(", 9900) + "p.x" +
+                                               repeat(")", 9900) + ";\n  c = vec4(x);")));
+  rows.push_back(Plain("negations.frag", PassWith("  float x = " + repeat("-(", 4900) + "p.x" +
+                                                  repeat(")", 4900) + ";\n  c = vec4(x);")));
+  // Calls stop at 2,000: SPIRV-Tools names glslang's per-call temporaries `param_N` in
+  // time quadratic in their number (FriendlyNameMapper, also inside its validator).
+  rows.push_back(Plain("calls.frag", "float f(float x) { return x; }\n" +
+                                         PassWith("  float x = " + repeat("f(", 2000) + "p.x" +
+                                                  repeat(")", 2000) + ";\n  c = vec4(x);")));
+  rows.push_back(Plain(
+      "conditionals.frag",
+      PassWith("  float x = " + repeat("p.x > 0.5 ? p.y : ", 1600) + "0.0;\n  c = vec4(x);")));
+  rows.push_back(
+      Plain("if-chain.frag",
+            PassWith("  c = vec4(0.0);\n  " + repeat("if (p.x > 0.5) ", 1600) + "c = vec4(1.0);")));
+  rows.push_back(Plain("blocks.frag", PassWith("  c = vec4(0.0);\n  " + repeat("{ ", 3000) +
+                                               "c = vec4(1.0);" + repeat(" }", 3000))));
+  rows.push_back(Plain("if-directive.frag", "#if " + repeat("(", 9900) + "1" + repeat(")", 9900) +
+                                                "\n" + PassWith("  c = vec4(1.0);") + "#endif\n"));
   // A chain a+a+... 20,000 deep: past the SPIR-V leg's depth limit, under the parser's.
   std::string chain = "  float a = p.x;\n  c = vec4(a";
   for (int i = 0; i < 20'000; ++i) chain += "+a";

@@ -165,7 +165,7 @@ TEST_F(HostileInputTest, MegabyteIdentifier) {
 TEST_F(HostileInputTest, HundredThousandNestedBraces) {
   project_.Write("braces.frag", "void mainImage(out vec4 c, in vec2 p) {\n" +
                                     std::string(100000, '{') + std::string(100000, '}') + "\n}\n");
-  Expect({{"check", "braces.frag"}}, "braces.frag:2:257: error: nesting too deep");
+  Expect({{"check", "braces.frag"}}, "braces.frag:2:3332: error: nesting too deep");
   Expect(CheckFixPort("braces.frag"), "braces.frag:2:");
 }
 

@@ -186,11 +186,11 @@ TEST(FixEngine, BrokenInputDoesNotCrash) {
   }
 }
 
-// 300 nested parentheses: past the parser's limit no rule runs and the text is kept.
+// 10,100 nested parentheses: past the parser's limit no rule runs and the text is kept.
 TEST(FixEngine, TextPastALimitIsNotRewritten) {
   const RenameRule rename("test/rename", "foo", "bar");
   const std::string text =
-      "float foo;\nfloat y = " + std::string(300, '(') + "1.0" + std::string(300, ')') + ";\n";
+      "float foo;\nfloat y = " + std::string(10100, '(') + "1.0" + std::string(10100, ')') + ";\n";
   const auto result = RunEngine(text, {&rename});
   EXPECT_TRUE(result.limit_breached);
   EXPECT_TRUE(result.converged);
@@ -203,7 +203,7 @@ TEST(FixEngine, TextPastALimitIsNotRewritten) {
 // A fix that nests the text past the limit: the engine stops, unconverged, naming it.
 TEST(FixEngine, FixesThatPushTheTextPastALimitDoNotConverge) {
   const RenameRule deepen("test/deepen", "foo",
-                          std::string(300, '(') + "1.0" + std::string(300, ')'));
+                          std::string(10100, '(') + "1.0" + std::string(10100, ')'));
   const auto result = RunEngine("float y = foo;\n", {&deepen});
   EXPECT_TRUE(result.limit_breached);
   EXPECT_FALSE(result.converged);

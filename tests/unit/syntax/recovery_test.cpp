@@ -1,6 +1,11 @@
 // Error reporting and recovery, reserved words, the nesting limit.
 #include <gtest/gtest.h>
 
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
 #include "base/limits.h"
 #include "diag/rule_catalog.h"
 #include "parse_helpers.h"
@@ -141,10 +146,53 @@ TEST(NestingTest, DeepBlocksUnaryAndIfChains) {
   }
 }
 
-TEST(NestingTest, JustBelowTheLimitIsFine) {
-  std::string text =
-      "void main() { x = " + std::string(200, '(') + "1.0" + std::string(200, ')') + "; }\n";
-  EXPECT_TRUE(ParseText(text)->result.diagnostics.empty());
+// Where Chromium 156's parser gives up ("memory exhausted", a 10,000-entry stack): the
+// largest counts it compiles, measured with these very texts around them.
+TEST(NestingTest, StopsWhereBrowsersParsersStop) {
+  const std::string globals = "precision highp float;\nout vec4 o;\nfloat f(float x){return x;}\n";
+  const std::string body = "void main(){\n float y = 1.0;\n";
+  const auto repeat = [](std::string_view s, size_t n) {
+    std::string out;
+    for (size_t i = 0; i < n; ++i) out += s;
+    return out;
+  };
+  const auto parens = [&](size_t n) { return repeat("(", n) + "1.0" + repeat(")", n); };
+  struct Case {
+    const char* what;
+    size_t largest;  // compiles in Chromium; one more does not
+    std::function<std::string(size_t)> text;
+  };
+  const std::vector<Case> cases = {
+      {"global initialiser", 9992,
+       [&](size_t n) { return globals + "const float g = " + parens(n) + ";\n"; }},
+      {"local initialiser", 9988,
+       [&](size_t n) { return globals + body + "float x = " + parens(n) + ";\n}\n"; }},
+      {"assignment", 9989,
+       [&](size_t n) { return globals + body + "y = " + parens(n) + ";\n}\n"; }},
+      {"first argument", 9987,
+       [&](size_t n) { return globals + body + "float x = f(" + parens(n) + ");\n}\n"; }},
+      {"negated parentheses", 4994,
+       [&](size_t n) {
+         return globals + body + "float x = " + repeat("-(", n) + "1.0" + repeat(")", n) + ";\n}\n";
+       }},
+      {"right operands", 3329,
+       [&](size_t n) {
+         return globals + body + "float x = " + repeat("2.0 * (", n) + "1.0" + repeat(")", n) +
+                ";\n}\n";
+       }},
+      {"last operands of ?:", 1664,
+       [&](size_t n) {
+         return globals + body + "float x = " + repeat("true ? 1.0 : ", n) + "0.0;\n}\n";
+       }},
+      {"if statements", 1665,
+       [&](size_t n) { return globals + body + repeat("if (true) ", n) + ";\n}\n"; }},
+  };
+  for (const Case& c : cases) {
+    auto fits = ParseText(c.text(c.largest));
+    EXPECT_TRUE(fits->result.diagnostics.empty()) << c.what;
+    auto deeper = ParseText(c.text(c.largest + 1));
+    EXPECT_EQ(Rules(*deeper), std::vector<std::string>{"syntax/nesting-too-deep"}) << c.what;
+  }
 }
 
 TEST(LimitsTest, DiagnosticsAreCapped) {
