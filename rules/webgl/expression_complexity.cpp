@@ -209,8 +209,8 @@ class ExpressionComplexityRule final : public rule::Rule {
       // Every node up to the first too deep one is visited: a plain loop over the index
       // (the root's entry is the first, at depth 0).
       const std::span<const glsl::PreorderEntry> order = tree.Preorder();
-      for (size_t i = 0; i < order.size(); ++i) {
-        if (order[i].depth <= kMaxDepth / 2) continue;
+      for (const glsl::PreorderEntry& entry : order) {
+        if (entry.depth <= kMaxDepth / 2) continue;
         // Our tree is deep here; the browser's may be deeper (blocks around unbraced
         // bodies) or shallower (parentheses, folding).
         if (const glsl::Node* statement = TooDeepInBrowser(context)) {

@@ -1,6 +1,7 @@
 #include "model/webgl_extensions.h"
 
 #include <algorithm>
+#include <array>
 
 namespace shaderport::model {
 namespace {
@@ -11,8 +12,8 @@ struct Offered {
   bool webgl2;
 };
 
-constexpr Offered kOffered[] = {
-#define WEBGL_EXTENSION(name, in_webgl1, in_webgl2) {#name, in_webgl1, in_webgl2},
+constexpr std::array kOffered = {
+#define WEBGL_EXTENSION(name, in_webgl1, in_webgl2) Offered{#name, in_webgl1, in_webgl2},
 #include "model/webgl_context_extensions.def"
 #undef WEBGL_EXTENSION
 };
