@@ -56,6 +56,7 @@ const rule::Rule& WebglSwitchCaseTypeRule();  // webgl/switch-case-type
 const rule::Rule& WebglUndefinedFunctionRule();  // webgl/undefined-function
 const rule::Rule& WebglVariableSizeRule();  // webgl/variable-size
 const rule::Rule& WebglVersionRule();  // webgl/version
+const rule::Rule& WebglVoidParameterRule();  // webgl/void-parameter
 const rule::Rule& Webgl2ExtensionsRule();  // webgl2/extensions
 const rule::Rule& Webgl2FragOutputsRule();  // webgl2/frag-outputs
 const rule::Rule& Webgl2InterfaceRule();  // webgl2/interface

@@ -56,6 +56,7 @@ std::vector<const rule::Rule*> BuildRegistry() {
       &WebglUndefinedFunctionRule(),  // webgl/undefined-function
       &WebglVariableSizeRule(),  // webgl/variable-size
       &WebglVersionRule(),  // webgl/version
+      &WebglVoidParameterRule(),  // webgl/void-parameter
       &Webgl2ExtensionsRule(),  // webgl2/extensions
       &Webgl2FragOutputsRule(),  // webgl2/frag-outputs
       &Webgl2InterfaceRule(),  // webgl2/interface

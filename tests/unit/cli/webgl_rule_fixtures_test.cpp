@@ -1,7 +1,7 @@
 // A fixture per browser check: tests/rules/webgl-checks/<name>.frag|vert is a small
 // shader for which Chromium reports what webgl/<name> names, and `check` must report
 // that id, and give Chromium's verdict (chromium-verdicts.json, recorded with
-// tools/browser/record_verdicts.py: 16 rejected; extension-placement is a warning in
+// tools/browser/record_verdicts.py: 17 rejected; extension-placement is a warning in
 // WebGL 1, as in Chromium).
 #include <gtest/gtest.h>
 
