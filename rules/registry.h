@@ -1,5 +1,5 @@
-// The sorted list of all porting rules. Registry order is also fix priority:
-// when two fixes overlap, the rule listed earlier wins.
+// All rules, in the order of rules/rules.def. That order is also fix priority: when two
+// fixes overlap, the rule listed earlier wins.
 #pragma once
 
 #include <span>
@@ -10,7 +10,7 @@
 
 namespace shaderport::rules {
 
-// All rules, sorted by id. Built once; the rules are immutable singletons.
+// All rules, in rules/rules.def order. Built once; the rules are immutable singletons.
 std::span<const rule::Rule* const> AllRules();
 
 // The rules that run in `mode`: kPort runs every porting rule, kFix only kAlways ones.
