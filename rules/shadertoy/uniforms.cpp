@@ -15,6 +15,11 @@
 // Declarations carry their precision (highp, as the hosts' defaults) so that they
 // are valid wherever webgl2/precision puts its statement. Without a #version the
 // rule waits a round for webgl2/version, which inserts at offset 0.
+#include <algorithm>
+#include <iterator>
+#include <set>
+#include <string>
+
 #include "rules/all_rules.h"
 #include "rules/shadertoy/harness_support.h"
 
@@ -22,6 +27,31 @@ namespace shaderport::rules {
 namespace {
 
 constexpr std::string_view kId = "shadertoy/uniforms";
+
+// GLSL ES 1.00 words the port itself rewrites for GLSL ES 3.00 (webgl2/interface,
+// webgl2/frag-outputs, webgl2/texture-functions). A host that compiles 1.00-style code as
+// 3.00 (three.js) maps them with #define; WebGL2 output needs no such define, nor the
+// output a define of gl_FragColor names.
+bool PortRewrites(std::string_view word) {
+  static constexpr std::string_view kWords[] = {
+      "attribute", "varying", "gl_FragColor", "gl_FragData", "gl_FragDepthEXT",
+#define TEXTURE_RENAME(from, to) #from,
+#include "rules/data/webgl2_texture_renames.def"
+#undef TEXTURE_RENAME
+  };
+  return std::find(std::begin(kWords), std::end(kWords), word) != std::end(kWords);
+}
+
+// The outputs that a #define of a rewritten word names (`gl_FragColor pc_fragColor`).
+std::set<std::string, std::less<>> OutputsBehindRewrites(const model::HarnessDialect& dialect) {
+  std::set<std::string, std::less<>> outputs;
+  for (const std::string& define : dialect.defines) {
+    const size_t space = define.find(' ');
+    if (space == std::string::npos || !PortRewrites(define.substr(0, space))) continue;
+    outputs.insert(define.substr(space + 1));
+  }
+  return outputs;
+}
 
 class UniformsRule final : public rule::Rule {
  public:
@@ -51,9 +81,14 @@ class UniformsRule final : public rule::Rule {
     }
     std::string text;
     std::string names;
+    const auto behind_rewrites = OutputsBehindRewrites(*dialect);
     for (const model::ProvidedVariable* variable : provided) {
       // The code's own declaration wins (and a second one would not compile).
       if (code.globals.contains(variable->name) || code.functions.contains(variable->name)) {
+        continue;
+      }
+      if (behind_rewrites.contains(variable->name) &&
+          !code.free_identifiers.contains(variable->name)) {
         continue;
       }
       if (dialect->declare == model::DeclareMode::kUsed &&
@@ -66,7 +101,7 @@ class UniformsRule final : public rule::Rule {
     const auto macros = harness::DefinedMacros(context);
     for (const std::string& define : dialect->defines) {
       const std::string name = define.substr(0, define.find(' '));
-      if (macros.contains(name)) continue;
+      if (macros.contains(name) || PortRewrites(name)) continue;
       text += "#define " + define + "\n";
       names += (names.empty() ? "" : ", ") + name;
     }
