@@ -34,7 +34,7 @@ class FreshNames {
 };
 
 // Offset just after the leading #version and #extension lines; nullopt when the
-// file has no #version yet (webgl2/version adds it at offset 0 first: waiting a
+// file has no #version yet (port/version adds it at offset 0 first: waiting a
 // round keeps the two insertions from competing for the same offset).
 std::optional<uint32_t> AfterVersionLines(const rule::RuleContext& context);
 

@@ -13,8 +13,8 @@
 //                                            void mainImage(out vec4 c, in vec2 p) {
 //
 // Declarations carry their precision (highp, as the hosts' defaults) so that they
-// are valid wherever webgl2/precision puts its statement. Without a #version the
-// rule waits a round for webgl2/version, which inserts at offset 0.
+// are valid wherever port/precision puts its statement. Without a #version the
+// rule waits a round for port/version, which inserts at offset 0.
 #include <algorithm>
 #include <iterator>
 #include <set>
@@ -28,8 +28,8 @@ namespace {
 
 constexpr std::string_view kId = "shadertoy/uniforms";
 
-// GLSL ES 1.00 words the port itself rewrites for GLSL ES 3.00 (webgl2/interface,
-// webgl2/frag-outputs, webgl2/texture-functions). A host that compiles 1.00-style code as
+// GLSL ES 1.00 words the port itself rewrites for GLSL ES 3.00 (port/interface,
+// port/frag-outputs, port/texture-functions). A host that compiles 1.00-style code as
 // 3.00 (three.js) maps them with #define; WebGL2 output needs no such define, nor the
 // output a define of gl_FragColor names.
 bool PortRewrites(std::string_view word) {
@@ -70,7 +70,7 @@ class UniformsRule final : public rule::Rule {
     const model::HarnessDialect* dialect = context.Settings().harness;
     if (dialect == nullptr || context.Settings().stage != model::Stage::kFragment) return;
     const std::optional<uint32_t> offset = harness::AfterVersionLines(context);
-    if (!offset) return;  // webgl2/version adds the #version first
+    if (!offset) return;  // port/version adds the #version first
     const rule::CodeInterface code = rule::ReadCodeInterface(context.Tree(), context.Model());
     const auto channels = harness::ChooseChannels(context, *dialect);
 

@@ -23,7 +23,6 @@ constexpr auto kUnsorted = std::to_array<RuleDescription>({
 #include "diag/catalog/syntax.def"
 #include "diag/catalog/typing.def"
 #include "diag/catalog/webgl.def"
-#include "diag/catalog/webgl2.def"
 #undef RULE
 });
 

@@ -11,7 +11,7 @@ namespace shaderport {
 inline constexpr std::string_view kRepositoryUri = "https://github.com/shaderport/shaderport";
 
 // The anchor GitHub gives a Markdown heading: lower case, spaces become '-',
-// punctuation other than '-' and '_' is dropped ("## webgl2/version" -> "webgl2version").
+// punctuation other than '-' and '_' is dropped ("## port/version" -> "webgl2version").
 std::string GithubHeadingAnchor(std::string_view heading);
 
 // The docs page of rule `id`: its own section of docs/rules.md when it has one

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <map>
 
+#include "diag/rule_renames.h"
 #include "report/source_position.h"
 
 namespace shaderport {
@@ -69,7 +70,9 @@ std::string FingerprintKey(const SourceManager* sources, const SourceFile* check
   const auto where = Resolve(sources, diagnostic.range);
   const bool located = where && !where->file->IsSynthetic();
   const SourceFile* file = located ? where->file : checked_file;
-  std::string key = diagnostic.rule_id + '\n';
+  // A renamed rule keeps its first id here, so that baselines and SARIF alerts written
+  // before the rename still match (diag/rule_renames.def).
+  std::string key = std::string(FirstRuleId(diagnostic.rule_id)) + '\n';
   key += (file != nullptr ? DisplayPath(file->Name(), base_directory) : std::string()) + '\n';
   if (!located) return key;
   const uint32_t line = where->start.line;

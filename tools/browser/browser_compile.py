@@ -1,6 +1,7 @@
 """Chromium's compile verdict for shader stages: one headless Chromium (ANGLE on
 SwiftShader) kept open over the DevTools pipe, compiling batches of stages in a WebGL1
-or WebGL2 context, exactly as a page's gl.compileShader does. The page enables the
+or WebGL2 context, exactly as a page's gl.compileShader does, or (link) vertex + fragment
+programs compiled and linked as gl.linkProgram does. The page enables the
 WebGL extensions that the shader's `#extension` lines name (getExtension), as a page
 written for that shader does and as `check` assumes; others stay off. Python standard
 library only.
@@ -39,11 +40,9 @@ def extensions_of(source):
                    if n in WEBGL_EXTENSIONS})
 
 
-# Compiles every job of the batch in a context of its version with its extensions
-# enabled (contexts are cached by both, a few at a time; a lost context is made again)
-# and returns [ok, log] per job.
-_COMPILE_SCRIPT = r"""
-(function(jobs) {
+# A context of the job's version with its extensions enabled (contexts are cached by
+# both, a few at a time; a lost context is made again). Shared by the two scripts below.
+_CONTEXT_FUNCTION = r"""
   const contexts = window.__spContexts || (window.__spContexts = new Map());
   function context(version, extensions) {
     const key = version + ":" + extensions.join(",");
@@ -64,6 +63,12 @@ _COMPILE_SCRIPT = r"""
     }
     return gl;
   }
+"""
+
+# Compiles every job of the batch and returns [ok, log] per job.
+_COMPILE_SCRIPT = r"""
+(function(jobs) {
+""" + _CONTEXT_FUNCTION + r"""
   const out = [];
   for (const job of jobs) {
     const gl = context(job.context, job.extensions);
@@ -80,10 +85,49 @@ _COMPILE_SCRIPT = r"""
 })
 """
 
+# Compiles both stages of every program in one context and links them, as a page does
+# (linked even when a stage failed: LINK_STATUS is then Chromium's own answer); returns
+# [vertex ok, fragment ok, linked, log] per program, the log being the stages' logs
+# (named) and then the program's.
+_LINK_SCRIPT = r"""
+(function(jobs) {
+""" + _CONTEXT_FUNCTION + r"""
+  const out = [];
+  for (const job of jobs) {
+    const gl = context(job.context, job.extensions);
+    const program = gl && gl.createProgram();
+    if (!program) { out.push([null, null, null, "no context"]); continue; }
+    const logs = [];
+    const compile = (type, name, source) => {
+      const shader = gl.createShader(type);
+      gl.shaderSource(shader, source);
+      gl.compileShader(shader);
+      const log = (gl.getShaderInfoLog(shader) || "").trim();
+      if (log) logs.push(name + ": " + log);
+      gl.attachShader(program, shader);
+      return [shader, gl.getShaderParameter(shader, gl.COMPILE_STATUS) === true];
+    };
+    const [vs, vOk] = compile(gl.VERTEX_SHADER, "vertex", job.vertex);
+    const [fs, fOk] = compile(gl.FRAGMENT_SHADER, "fragment", job.fragment);
+    gl.linkProgram(program);
+    const linked = gl.getProgramParameter(program, gl.LINK_STATUS) === true;
+    const log = (gl.getProgramInfoLog(program) || "").trim();
+    if (log) logs.push(log);
+    gl.deleteProgram(program);
+    gl.deleteShader(vs);
+    gl.deleteShader(fs);
+    if (gl.isContextLost()) { out.push([null, null, null, "context lost"]); continue; }
+    out.push([vOk, fOk, linked, logs.join("\n")]);
+  }
+  return out;
+})
+"""
+
 
 class BrowserCompiler:
-    """Compiles stages in headless Chromium. A job is {source, stage, context}:
-    stage "vertex" or "fragment", context 1 (WebGL1) or 2 (WebGL2)."""
+    """Compiles stages (and links programs) in headless Chromium. A job is
+    {source, stage, context}: stage "vertex" or "fragment", context 1 (WebGL1) or 2
+    (WebGL2)."""
 
     def __init__(self, chromium=None, batch=200):
         self.chromium = chromium or find_chromium()
@@ -106,8 +150,8 @@ class BrowserCompiler:
         self.browser = None
         self._start()
 
-    def _run(self, jobs):
-        expression = "%s(%s)" % (_COMPILE_SCRIPT, json.dumps(jobs))
+    def _run(self, jobs, script=_COMPILE_SCRIPT):
+        expression = "%s(%s)" % (script, json.dumps(jobs))
         return self.browser.evaluate(expression)
 
     def compile(self, jobs):
@@ -122,9 +166,26 @@ class BrowserCompiler:
             results.extend(self._compile_part(part))
         return [(r[0], r[1]) for r in results]
 
-    def _compile_part(self, part):
+    def link(self, programs):
+        """[(vertex_ok, fragment_ok, link_ok, log)] in program order for programs
+        {vertex, fragment, context}: both stages compiled in one context of that version
+        (with the extensions either names), attached and linked; None where Chromium
+        could not answer."""
+        if self.browser is None:
+            self._start()
+        results = []
+        for start in range(0, len(programs), self.batch):
+            part = [{"vertex": p["vertex"], "fragment": p["fragment"], "context": p["context"],
+                     "extensions": sorted(set(extensions_of(p["vertex"]) +
+                                              extensions_of(p["fragment"])))}
+                    for p in programs[start:start + self.batch]]
+            results.extend(self._compile_part(part, _LINK_SCRIPT))
+        # A failure row is [None, message]: widen it to the program's four fields.
+        return [tuple(r) if len(r) == 4 else (None, None, None, r[-1]) for r in results]
+
+    def _compile_part(self, part, script=_COMPILE_SCRIPT):
         try:
-            answer = self._run(part)
+            answer = self._run(part, script)
             if answer is not None and len(answer) == len(part) and \
                     all(r[0] is not None for r in answer):
                 return answer
@@ -132,7 +193,7 @@ class BrowserCompiler:
             self._restart()
         if len(part) == 1:  # one job that kills the page or the context on its own
             try:
-                answer = self._run(part)
+                answer = self._run(part, script)
                 if answer and answer[0][0] is not None:
                     return answer
             except (TimeoutError, EOFError, RuntimeError) as error:
@@ -140,7 +201,8 @@ class BrowserCompiler:
                 return [[None, "chromium failed: %s" % error]]
             return [[None, "chromium failed: context lost"]]
         half = len(part) // 2
-        return self._compile_part(part[:half]) + self._compile_part(part[half:])
+        return self._compile_part(part[:half], script) + \
+            self._compile_part(part[half:], script)
 
     def close(self):
         if self.browser:

@@ -36,7 +36,7 @@ void AddRulesCommand(CLI::App& app, int& exit_code) {
 void AddExplainCommand(CLI::App& app, int& exit_code) {
   auto id = std::make_shared<std::string>();
   CLI::App* command = app.add_subcommand("explain", "Explain one rule or diagnostic id");
-  command->add_option("id", *id, "Rule id, e.g. webgl2/version")->required();
+  command->add_option("id", *id, "Rule id, e.g. port/version")->required();
   command->callback([id, &exit_code] {
     const auto text = driver::ExplainRule(*id);
     if (!text) {

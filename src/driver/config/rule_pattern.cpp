@@ -5,6 +5,7 @@
 
 #include "base/did_you_mean.h"
 #include "diag/rule_catalog.h"
+#include "diag/rule_renames.h"
 
 namespace shaderport::driver {
 namespace {
@@ -30,11 +31,14 @@ bool IsValidRulePattern(std::string_view pattern) {
 
 bool RulePatternMatches(std::string_view pattern, std::string_view rule_id) {
   if (pattern == "*") return true;
+  // A renamed rule answers to its old id too (diag/rule_renames.def): configurations and
+  // suppression comments written before the rename keep working.
+  const std::string_view first_id = FirstRuleId(rule_id);
   if (pattern.size() >= 2 && pattern.substr(pattern.size() - 2) == "/*") {
     const std::string_view prefix = pattern.substr(0, pattern.size() - 1);  // "category/"
-    return rule_id.substr(0, prefix.size()) == prefix;
+    return rule_id.starts_with(prefix) || first_id.starts_with(prefix);
   }
-  return pattern == rule_id;
+  return pattern == rule_id || pattern == first_id;
 }
 
 int RulePatternSpecificity(std::string_view pattern) {

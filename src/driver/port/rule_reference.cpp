@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "diag/rule_catalog.h"
+#include "diag/rule_renames.h"
 #include "rules/registry.h"
 
 namespace shaderport::driver {
@@ -111,7 +112,8 @@ std::vector<std::string> PortingRuleIds() {
   return ids;
 }
 
-std::optional<std::string> ExplainRule(std::string_view id) {
+std::optional<std::string> ExplainRule(std::string_view asked) {
+  const std::string_view id = CurrentRuleId(asked);  // an old id explains the rule it became
   if (const rule::Rule* r = rules::FindRule(id)) {
     std::string text = RuleSection(*r);
     while (text.size() >= 2 && text.ends_with("\n\n")) text.pop_back();

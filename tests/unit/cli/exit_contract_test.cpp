@@ -146,9 +146,9 @@ TEST(ExitContract, EveryCommandExitsAndSpeaksAsDocumented) {
       {"rules", 0, ""},
       {"rules --list", 0, ""},
       {"rules --bogus", 2, "shaderport: error: unknown option '--bogus' for 'rules'"},
-      {"explain webgl2/version", 0, ""},
-      {"explain webgl2/versoin", 2,
-       "shaderport: error: unknown rule 'webgl2/versoin'; did you mean 'webgl2/version'? (run "
+      {"explain port/version", 0, ""},
+      {"explain port/versoin", 2,
+       "shaderport: error: unknown rule 'port/versoin'; did you mean 'port/version'? (run "
        "'shaderport rules' for the porting rules)"},
       // dump, summary, version
       {"dump --ast clean.frag", 0, ""},

@@ -113,9 +113,9 @@ TEST(RulesCli, DocsRulesMdIsTheOutputOfRules) {
 }
 
 TEST(RulesCli, ExplainPrintsRulesAndCatalogEntries) {
-  const CommandResult rule = RunShaderport("explain webgl2/version", SHADERPORT_SOURCE_DIR);
+  const CommandResult rule = RunShaderport("explain port/version", SHADERPORT_SOURCE_DIR);
   EXPECT_EQ(rule.exit_code, 0);
-  EXPECT_NE(rule.out.find("## webgl2/version"), std::string::npos);
+  EXPECT_NE(rule.out.find("## port/version"), std::string::npos);
   const CommandResult entry = RunShaderport("explain internal/error", SHADERPORT_SOURCE_DIR);
   EXPECT_EQ(entry.exit_code, 0);
   EXPECT_NE(entry.out.find("internal/error"), std::string::npos);

@@ -3,10 +3,12 @@
 // that id, and give Chromium's verdict (chromium-verdicts.json, recorded with
 // tools/browser/record_verdicts.py or browser_compile.BrowserCompiler: 30 rejected;
 // extension-placement is a warning in WebGL 1, as in Chromium). Every webgl/* id of the
-// catalog has one, but the program checks, which need two stages linked.
+// catalog has one; the program checks have a program in programs/ (EachProgramGetsItsRule).
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
@@ -28,6 +30,7 @@ TEST(WebglRuleFixtures, EachFixtureGetsItsRule) {
   size_t fixtures = 0;
   for (const auto& file : json["files"]) {
     const std::string path = file["path"];
+    if (path.find('/') != std::string::npos) continue;  // programs/: ProgramFixtures below
     const std::string wanted = "webgl/" + path.substr(0, path.rfind('.'));
     std::set<std::string> rules;
     bool error = false;
@@ -43,17 +46,49 @@ TEST(WebglRuleFixtures, EachFixtureGetsItsRule) {
   EXPECT_GE(fixtures, 31u);
 }
 
-// The program checks run on two linked stages (ProgramLink.*, the conformance suites).
+// The program checks: tests/rules/webgl-checks/programs/<name>.vert + <name>.frag, a
+// program Chromium compiles or links as programs/chromium-verdicts.json records
+// (browser_compile.BrowserCompiler.link). `check` links same-stem pairs: one of the two
+// files must get webgl/<name>, and an error exactly when Chromium fails the program.
+TEST(WebglRuleFixtures, EachProgramGetsItsRule) {
+  const std::filesystem::path dir = SourceDir() / "tests" / "rules" / "webgl-checks" / "programs";
+  const CommandResult result = RunShaderport("check --format json --no-config --no-cache .", dir);
+  ASSERT_EQ(result.exit_code, 1) << result.err;
+  const auto json = nlohmann::json::parse(result.out);
+  std::ifstream recorded(dir / "chromium-verdicts.json");
+  const auto chromium = nlohmann::json::parse(recorded);
+  std::map<std::string, std::set<std::string>> rules;
+  std::map<std::string, bool> errors;
+  for (const auto& file : json["files"]) {
+    const std::string path = file["path"];
+    const std::string stem = path.substr(0, path.rfind('.'));
+    for (const auto& diagnostic : file["diagnostics"]) {
+      rules[stem].insert(diagnostic["rule"]);
+      errors[stem] = errors[stem] || diagnostic["severity"] == "error";
+    }
+  }
+  size_t programs = 0;
+  for (const auto& [name, verdict] : chromium.items()) {
+    if (name.starts_with("_")) continue;
+    EXPECT_TRUE(rules[name].contains("webgl/" + name)) << name;
+    const bool fails = !verdict["vertex_compiled"].get<bool>() ||
+                       !verdict["fragment_compiled"].get<bool>() || !verdict["linked"].get<bool>();
+    EXPECT_EQ(errors[name], fails) << name;
+    ++programs;
+  }
+  EXPECT_EQ(programs, 6u);
+}
+
+// Every webgl/* id of the catalog has a fixture: a shader, or a program for the checks
+// that need two stages linked.
 TEST(WebglRuleFixtures, EveryBrowserCheckHasOne) {
   const std::filesystem::path dir = SourceDir() / "tests" / "rules" / "webgl-checks";
-  const std::set<std::string_view> program_checks = {
-      "webgl/link-invariant", "webgl/link-uniform", "webgl/link-uniform-vectors",
-      "webgl/link-varying",   "webgl/link-version", "webgl/varying-packing"};
   for (const RuleDescription& rule : RuleCatalog()) {
-    if (!rule.id.starts_with("webgl/") || program_checks.contains(rule.id)) continue;
+    if (!rule.id.starts_with("webgl/")) continue;
     const std::string stem(rule.id.substr(6));
     EXPECT_TRUE(std::filesystem::exists(dir / (stem + ".frag")) ||
-                std::filesystem::exists(dir / (stem + ".vert")))
+                std::filesystem::exists(dir / (stem + ".vert")) ||
+                std::filesystem::exists(dir / "programs" / (stem + ".frag")))
         << rule.id << " has no fixture in tests/rules/webgl-checks/";
   }
 }

@@ -34,6 +34,14 @@ const char* const kShader =
     "  gl_FragColor = vec4(x);\n"
     "}\n";
 
+// A renamed rule (diag/rule_renames.def) keeps the fingerprint its old id gave, so a
+// baseline or a SARIF alert written before the rename still matches its findings.
+TEST(Fingerprint, RenamedRuleKeepsItsFirstIdsFingerprint) {
+  EXPECT_EQ(FingerprintOf(kShader, "2", "port/version"),
+            FingerprintOf(kShader, "2", "webgl2/version"));
+  EXPECT_NE(FingerprintOf(kShader, "2", "port/version"), FingerprintOf(kShader, "2", "x/y"));
+}
+
 TEST(Fingerprint, NormalizeWhitespaceCollapsesAndTrims) {
   EXPECT_EQ(NormalizeWhitespace("  \tfloat   x =\t1;  \r"), "float x = 1;");
   EXPECT_EQ(NormalizeWhitespace(" \t "), "");

@@ -17,7 +17,7 @@ namespace {
 using nlohmann::json;
 
 TEST(DocsLinks, AnchorsAreGithubs) {
-  EXPECT_EQ(GithubHeadingAnchor("webgl2/version"), "webgl2version");
+  EXPECT_EQ(GithubHeadingAnchor("port/version"), "portversion");
   EXPECT_EQ(GithubHeadingAnchor("Every diagnostic id"), "every-diagnostic-id");
   EXPECT_EQ(GithubHeadingAnchor("typing/int-literal-for-float"), "typingint-literal-for-float");
   EXPECT_EQ(GithubHeadingAnchor("A `?:` on_x (2)"), "a--on_x-2");
@@ -39,7 +39,7 @@ std::set<std::string> RulesPageAnchors() {
 TEST(DocsLinks, HelpUrisPointAtHeadingsOfTheRulesPage) {
   const std::set<std::string> anchors = RulesPageAnchors();
   for (const auto& [id, has_section] :
-       {std::pair{"webgl2/version", true}, std::pair{"typing/float-index", true},
+       {std::pair{"port/version", true}, std::pair{"typing/float-index", true},
         std::pair{"glslang/type-mismatch", false}}) {
     const std::string uri = RuleHelpUri(id, has_section);
     EXPECT_TRUE(uri.starts_with(std::string(kRepositoryUri) + "/blob/main/docs/rules.md#")) << uri;
@@ -57,11 +57,11 @@ TEST(SarifLinks, DriverAndRulesCarryTheirDocs) {
       {&file,
        "webgl2",
        "fragment",
-       {MakeDiagnostic(Severity::kError, "webgl2/version", {file.Id(), 0, 15}, "m"),
+       {MakeDiagnostic(Severity::kError, "port/version", {file.Id(), 0, 15}, "m"),
         MakeDiagnostic(Severity::kError, "input/empty", {}, "m"),
         MakeDiagnostic(Severity::kError, "not-in/the-catalog", {}, "m")}});
   ReportOptions options;
-  options.rules_with_sections = {"typing/float-index", "webgl2/version"};
+  options.rules_with_sections = {"port/version", "typing/float-index"};  // sorted
   json sarif = ReportToSarif(report, options);
   const json& driver = sarif["runs"][0]["tool"]["driver"];
   EXPECT_EQ(driver["informationUri"], std::string(kRepositoryUri));
@@ -72,7 +72,7 @@ TEST(SarifLinks, DriverAndRulesCarryTheirDocs) {
   EXPECT_EQ(rules[1]["id"], "not-in/the-catalog");
   EXPECT_FALSE(rules[1].contains("helpUri"));
   EXPECT_EQ(rules[2]["helpUri"],
-            std::string(kRepositoryUri) + "/blob/main/docs/rules.md#webgl2version");
+            std::string(kRepositoryUri) + "/blob/main/docs/rules.md#portversion");
   for (const json& result : sarif["runs"][0]["results"]) {
     EXPECT_TRUE(result["partialFingerprints"].contains(kFingerprintKey));
   }

@@ -1,0 +1,3 @@
+precision mediump float;
+// A plain fragment shader: the vertex shader's uniforms alone are too many.
+void main() { gl_FragColor = vec4(1.0); }
