@@ -294,7 +294,7 @@ DiagnosticList CheckProgramLink(const LinkStage& vertex, const LinkStage& fragme
   }
   if ((vertex.version >= 300) != (fragment.version >= 300)) {
     found.push_back(LinkError(
-        "webgl/link-version", {},
+        "link/version", {},
         "the vertex shader is GLSL ES " + std::string(vertex.version >= 300 ? "3.00" : "1.00") +
             " and the fragment shader GLSL ES " +
             std::string(fragment.version >= 300 ? "3.00" : "1.00") +
@@ -316,7 +316,7 @@ DiagnosticList CheckProgramLink(const LinkStage& vertex, const LinkStage& fragme
       if (output == nullptr) {
         if (input.used) {
           found.push_back(LinkError(
-              "webgl/link-varying", input.where,
+              "link/varying", input.where,
               "fragment input '" + name + "' is used but the vertex shader does not write it", {},
               ""));
         }
@@ -324,14 +324,14 @@ DiagnosticList CheckProgramLink(const LinkStage& vertex, const LinkStage& fragme
       }
       if (output->type_name != input.type_name ||
           output->type.array_size != input.type.array_size) {
-        found.push_back(LinkError("webgl/link-varying", input.where,
+        found.push_back(LinkError("link/varying", input.where,
                                   "varying '" + name + "' is " + input.type_name + " here but " +
                                       output->type_name + " in the vertex shader",
                                   output->where, "declared here in the vertex shader"));
         continue;
       }
       if (essl100 && output->invariant != input.invariant) {
-        found.push_back(LinkError("webgl/link-invariant", input.where,
+        found.push_back(LinkError("link/invariant", input.where,
                                   "varying '" + name + "' is " +
                                       (input.invariant ? "invariant" : "not invariant") +
                                       " here but " + (output->invariant ? "invariant" : "not") +
@@ -344,20 +344,20 @@ DiagnosticList CheckProgramLink(const LinkStage& vertex, const LinkStage& fragme
       if (it == vs.globals.end() || it->second.role != Role::kUniform) continue;
       const Global& other = it->second;
       if (other.type_name != input.type_name || other.type.array_size != input.type.array_size) {
-        found.push_back(LinkError("webgl/link-uniform", input.where,
+        found.push_back(LinkError("link/uniform", input.where,
                                   "uniform '" + name + "' is " + input.type_name + " here but " +
                                       other.type_name + " in the vertex shader",
                                   other.where, "declared here in the vertex shader"));
       } else if (other.members != input.members) {
         found.push_back(
-            LinkError("webgl/link-uniform", input.where,
+            LinkError("link/uniform", input.where,
                       "uniform '" + name + "' is a struct " + input.type_name +
                           " whose members differ from the vertex shader's (names, order, types or "
                           "precisions)",
                       other.where, "declared here in the vertex shader"));
       } else if (other.precision != input.precision) {
         found.push_back(LinkError(
-            "webgl/link-uniform", input.where,
+            "link/uniform", input.where,
             "uniform '" + name + "' is " + glsl::PrecisionSpelling(input.precision) + " here but " +
                 glsl::PrecisionSpelling(other.precision) +
                 " in the vertex shader; a uniform shared by both stages must have one precision",
@@ -372,7 +372,7 @@ DiagnosticList CheckProgramLink(const LinkStage& vertex, const LinkStage& fragme
     for (size_t i = 0; i < members.size() && i < other.size(); ++i) {
       if (members[i].name != other[i].name || members[i].type_name != other[i].type_name ||
           members[i].precision != other[i].precision) {
-        found.push_back(LinkError("webgl/link-uniform", members[i].where,
+        found.push_back(LinkError("link/uniform", members[i].where,
                                   "member '" + members[i].name + "' of uniform block '" + block +
                                       "' differs from the vertex shader's (name, type or "
                                       "precision)",
@@ -395,7 +395,7 @@ DiagnosticList CheckProgramLink(const LinkStage& vertex, const LinkStage& fragme
           }
         }
         found.push_back(LinkError(
-            "webgl/link-invariant", where,
+            "link/invariant", where,
             std::string(input) + " is invariant but the vertex shader's " + output + " is not", {},
             ""));
       }
@@ -406,7 +406,7 @@ DiagnosticList CheckProgramLink(const LinkStage& vertex, const LinkStage& fragme
         std::tuple{&fs, fragment.model, limits.max_fragment_uniform_vectors, "fragment"}}) {
     if (const auto overflow = UniformOverflow(*stage, *model, limit)) {
       found.push_back(LinkError(
-          "webgl/link-uniform-vectors", overflow->first->where,
+          "link/uniform-vectors", overflow->first->where,
           "with uniform '" + overflow->first->name + "' the " + which + " shader's uniforms take " +
               std::to_string(overflow->second) + " vectors, more than the context's " +
               std::to_string(limit) + " (MAX_" +
@@ -415,7 +415,7 @@ DiagnosticList CheckProgramLink(const LinkStage& vertex, const LinkStage& fragme
     }
   }
   if (const Footprint* overflow = Pack(packed, limits.max_varying_vectors)) {
-    found.push_back(LinkError("webgl/varying-packing", overflow->where,
+    found.push_back(LinkError("link/varying-packing", overflow->where,
                               "varying '" + overflow->name +
                                   "' does not fit: the program's "
                                   "varyings need more than " +

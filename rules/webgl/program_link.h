@@ -27,8 +27,8 @@ struct LinkLimits {
   int max_fragment_uniform_vectors = 4096;
 };
 
-// Errors of rule ids webgl/link-version, webgl/link-varying, webgl/link-uniform,
-// webgl/link-invariant, webgl/varying-packing and webgl/link-uniform-vectors, placed on the
+// Errors of rule ids link/version, link/varying, link/uniform,
+// link/invariant, link/varying-packing and link/uniform-vectors, placed on the
 // declarations in either stage.
 DiagnosticList CheckProgramLink(const LinkStage& vertex, const LinkStage& fragment,
                                 const LinkLimits& limits = {});

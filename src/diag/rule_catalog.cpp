@@ -13,6 +13,7 @@ constexpr auto kUnsorted = std::to_array<RuleDescription>({
 #include "diag/catalog/glslang.def"
 #include "diag/catalog/input.def"
 #include "diag/catalog/internal.def"
+#include "diag/catalog/link.def"
 #include "diag/catalog/port.def"
 #include "diag/catalog/portability.def"
 #include "diag/catalog/preprocessor.def"

@@ -7,7 +7,7 @@ The rules are those of tests/unit/driver/webgl_conformance_test.cpp, the same me
 for the public part:
 * Stages: each stage alone, `check --target webgl1|webgl2` (from contextVersion),
   `--format json --no-config --no-cache`. A stage compiles unless check reports an error
-  whose rule is not a link rule (`webgl/link-*`, `webgl/varying-packing`). The verdict is
+  whose rule is not a link rule (`link/*`). The verdict is
   compared with Chromium's compile verdict (chromium.vCompiled / fCompiled); a case whose
   Chromium verdict is missing is left out.
 * Whole cases: both stages as one program: NAME.vert and NAME.frag in one directory,
@@ -50,7 +50,7 @@ _EXTENSION_LINE = re.compile(r"^[ \t]*#[ \t]*extension\b", re.M)
 
 
 def is_link_rule(rule):
-    return rule.startswith("webgl/link-") or rule == "webgl/varying-packing"
+    return rule.startswith("link/")
 
 
 def find_shaderport(explicit):
@@ -338,7 +338,7 @@ def report(args, cases, stats, stage_rows, case_rows, meta):
                "(both stages linked as `check --link VS FS` links them) compared with the suite's expectation under the "
                "harness's rule (a stage expected to fail may fail at link instead), "
                "ignoreResults cases left out. A stage fails when check reports an error "
-               "whose rule is not `webgl/link-*` or `webgl/varying-packing`.\n")
+               "whose rule is not `link/*`.\n")
     told = [enabled_extensions(c, args.page_extensions) for c in cases]
     if any(v is not None for v in told):
         out.append("With `--page-extensions`: %d cases were checked with `--enabled-extensions` "

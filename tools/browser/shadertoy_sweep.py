@@ -9,7 +9,7 @@ src/validate/shadertoy_contract.cpp; Common is compiled only as part of each pas
 the site) and compiled as a WebGL2 fragment shader in headless Chromium. The same
 records are checked as projects by `shaderport check --format json` (.jsonl files of
 corpus records). A pass is rejected by check when an error-severity diagnostic other
-than `webgl/link-*` lies in the pass's tab or in Common (the site compiles Common into
+than `link/*` lies in the pass's tab or in Common (the site compiles Common into
 every pass). Per pass: agree, false reject (Chromium compiles, check errs) or false
 accept (Chromium rejects, check silent), grouped by cause.
 
@@ -183,7 +183,7 @@ def check_records(shaderport, records, jobs, work):
         single = json.loads(lines[0])["id"] if len(lines) == 1 else None
         for entry in result.get("files", []):
             for diag in entry.get("diagnostics", []):
-                if diag.get("severity") != "error" or diag.get("rule", "").startswith("webgl/link-"):
+                if diag.get("severity") != "error" or diag.get("rule", "").startswith("link/"):
                     continue
                 loc = diag.get("location") or {}
                 where = tab_of(loc.get("path"), single) or tab_of(entry.get("path"), single)
@@ -443,7 +443,7 @@ def write_md(path, meta, rows, by_id):
             "Each pass is composed as the site composes it (Common compiled into every pass) and "
             "compiled as a WebGL2 fragment shader by Chromium, and so is the Common tab alone as the "
             "site compiles it; Chromium accepts a pass when both compile. check rejects a pass when "
-            "it reports an error (other than `webgl/link-*`) in the pass's tab or in Common.", "",
+            "it reports an error (other than `link/*`) in the pass's tab or in Common.", "",
             "| passes | shaders | agree (both accept / both reject) | agreement | false rejects | "
             "false accepts | Chromium failed | check failed |", "|---|---|---|---|---|---|---|---|",
             "| %d | %d | %d (%d / %d) | %s %% | %d | %d | %d | %d |" % (

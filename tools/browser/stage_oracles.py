@@ -15,7 +15,7 @@ _EXT = {"vertex": ".vert", "fragment": ".frag"}
 
 
 def _is_link_rule(rule):
-    return rule.startswith("webgl/link-") or rule == "webgl/varying-packing"
+    return rule.startswith("link/")
 
 
 def browser_message(log):

@@ -125,5 +125,28 @@ TEST_F(BaselineCliTest, BadBaselinesAreUsageErrors) {
   EXPECT_EQ(Check("--baseline a.json --write-baseline b.json").exit_code, 2);
 }
 
+// tests/data/baselines/link-varying-before-rename.json was written by shaderport before
+// the program checks became link/* (its entry: webgl/link-varying), for the program
+// tests/rules/link-checks/varying.*: the renamed rule's finding still matches it.
+TEST(BaselineRename, ABaselineWrittenBeforeARuleWasRenamedStillMatches) {
+  const fs::path programs = SourceDir() / "tests" / "rules" / "link-checks";
+  const fs::path old_baseline =
+      SourceDir() / "tests" / "data" / "baselines" / "link-varying-before-rename.json";
+  const CommandResult result =
+      RunShaderport("check --no-config --no-cache varying.vert varying.frag --baseline " +
+                        old_baseline.string(),
+                    programs);
+  EXPECT_EQ(result.exit_code, 0) << result.out << result.err;
+  EXPECT_EQ(result.out.find("link/varying"), std::string::npos) << result.out;
+  const std::string said = result.out + result.err;
+  EXPECT_NE(said.find("1 finding in the baseline was not reported"), std::string::npos) << said;
+  EXPECT_EQ(said.find("fixed"), std::string::npos) << said;
+  // Without the baseline the finding is there, under its new id.
+  const CommandResult plain =
+      RunShaderport("check --no-config --no-cache varying.vert varying.frag", programs);
+  EXPECT_EQ(plain.exit_code, 1);
+  EXPECT_NE(plain.out.find("[link/varying]"), std::string::npos) << plain.out;
+}
+
 }  // namespace
 }  // namespace shaderport::testing

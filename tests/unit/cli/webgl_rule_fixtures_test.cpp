@@ -3,7 +3,7 @@
 // that id, and give Chromium's verdict (chromium-verdicts.json, recorded with
 // tools/browser/record_verdicts.py or browser_compile.BrowserCompiler: 30 rejected;
 // extension-placement is a warning in WebGL 1, as in Chromium). Every webgl/* id of the
-// catalog has one; the program checks have a program in programs/ (EachProgramGetsItsRule).
+// catalog has one; the program checks (link/*) have a program in tests/rules/link-checks/.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -30,7 +30,6 @@ TEST(WebglRuleFixtures, EachFixtureGetsItsRule) {
   size_t fixtures = 0;
   for (const auto& file : json["files"]) {
     const std::string path = file["path"];
-    if (path.find('/') != std::string::npos) continue;  // programs/: ProgramFixtures below
     const std::string wanted = "webgl/" + path.substr(0, path.rfind('.'));
     std::set<std::string> rules;
     bool error = false;
@@ -46,12 +45,12 @@ TEST(WebglRuleFixtures, EachFixtureGetsItsRule) {
   EXPECT_GE(fixtures, 31u);
 }
 
-// The program checks: tests/rules/webgl-checks/programs/<name>.vert + <name>.frag, a
-// program Chromium compiles or links as programs/chromium-verdicts.json records
+// The program checks: tests/rules/link-checks/<name>.vert + <name>.frag, a program
+// Chromium compiles or links as its chromium-verdicts.json records
 // (browser_compile.BrowserCompiler.link). `check` links same-stem pairs: one of the two
-// files must get webgl/<name>, and an error exactly when Chromium fails the program.
+// files must get link/<name>, and an error exactly when Chromium fails the program.
 TEST(WebglRuleFixtures, EachProgramGetsItsRule) {
-  const std::filesystem::path dir = SourceDir() / "tests" / "rules" / "webgl-checks" / "programs";
+  const std::filesystem::path dir = SourceDir() / "tests" / "rules" / "link-checks";
   const CommandResult result = RunShaderport("check --format json --no-config --no-cache .", dir);
   ASSERT_EQ(result.exit_code, 1) << result.err;
   const auto json = nlohmann::json::parse(result.out);
@@ -70,7 +69,7 @@ TEST(WebglRuleFixtures, EachProgramGetsItsRule) {
   size_t programs = 0;
   for (const auto& [name, verdict] : chromium.items()) {
     if (name.starts_with("_")) continue;
-    EXPECT_TRUE(rules[name].contains("webgl/" + name)) << name;
+    EXPECT_TRUE(rules[name].contains("link/" + name)) << name;
     const bool fails = !verdict["vertex_compiled"].get<bool>() ||
                        !verdict["fragment_compiled"].get<bool>() || !verdict["linked"].get<bool>();
     EXPECT_EQ(errors[name], fails) << name;
@@ -79,17 +78,20 @@ TEST(WebglRuleFixtures, EachProgramGetsItsRule) {
   EXPECT_EQ(programs, 6u);
 }
 
-// Every webgl/* id of the catalog has a fixture: a shader, or a program for the checks
-// that need two stages linked.
+// Every webgl/* id of the catalog has a fixture shader, every link/* id a program.
 TEST(WebglRuleFixtures, EveryBrowserCheckHasOne) {
-  const std::filesystem::path dir = SourceDir() / "tests" / "rules" / "webgl-checks";
+  const std::filesystem::path rules = SourceDir() / "tests" / "rules";
   for (const RuleDescription& rule : RuleCatalog()) {
-    if (!rule.id.starts_with("webgl/")) continue;
-    const std::string stem(rule.id.substr(6));
-    EXPECT_TRUE(std::filesystem::exists(dir / (stem + ".frag")) ||
-                std::filesystem::exists(dir / (stem + ".vert")) ||
-                std::filesystem::exists(dir / "programs" / (stem + ".frag")))
-        << rule.id << " has no fixture in tests/rules/webgl-checks/";
+    const std::string id(rule.id);
+    const std::string name = id.substr(id.find('/') + 1);
+    if (id.starts_with("webgl/")) {
+      EXPECT_TRUE(std::filesystem::exists(rules / "webgl-checks" / (name + ".frag")) ||
+                  std::filesystem::exists(rules / "webgl-checks" / (name + ".vert")))
+          << id << " has no fixture in tests/rules/webgl-checks/";
+    } else if (id.starts_with("link/")) {
+      EXPECT_TRUE(std::filesystem::exists(rules / "link-checks" / (name + ".frag")))
+          << id << " has no program in tests/rules/link-checks/";
+    }
   }
 }
 

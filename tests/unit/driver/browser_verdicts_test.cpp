@@ -24,7 +24,7 @@ namespace fs = std::filesystem;
 const fs::path kDir = fs::path(SHADERPORT_SOURCE_DIR) / "tests" / "browser-verdicts";
 
 bool IsLinkRule(const std::string& id) {
-  return id.starts_with("webgl/link-") || id == "webgl/varying-packing";
+  return id.starts_with("link/");
 }
 
 // First error of each file, "" when check accepts it; by path relative to kDir.

@@ -52,11 +52,11 @@ TEST(ProgramLink, UniformVectorsAsChromiumCountsThem) {
   EXPECT_EQ(LinkErrors("mat4-1024", VertexWithUniformArray("mat4", 1024, "[0][0]"), kFragment),
             std::set<std::string>{});
   EXPECT_EQ(LinkErrors("mat4-1025", VertexWithUniformArray("mat4", 1025, "[0][0]"), kFragment),
-            std::set<std::string>{"webgl/link-uniform-vectors"});
+            std::set<std::string>{"link/uniform-vectors"});
   EXPECT_EQ(LinkErrors("mat3-1366", VertexWithUniformArray("mat3", 1366, "[0][0]"), kFragment),
-            std::set<std::string>{"webgl/link-uniform-vectors"});
+            std::set<std::string>{"link/uniform-vectors"});
   EXPECT_EQ(LinkErrors("vec2-4097", VertexWithUniformArray("vec2", 4097, ".x"), kFragment),
-            std::set<std::string>{"webgl/link-uniform-vectors"});
+            std::set<std::string>{"link/uniform-vectors"});
 }
 
 TEST(ProgramLink, UniformStructMembersMustAgree) {
@@ -67,13 +67,13 @@ TEST(ProgramLink, UniformStructMembersMustAgree) {
       "precision mediump float;\nstruct S { vec4 color; vec4 pos; };\nuniform S uni;\n"
       "void main() { gl_FragColor = uni.color; }\n";
   EXPECT_EQ(LinkErrors("struct-order", vertex, swapped),
-            std::set<std::string>{"webgl/link-uniform"});
+            std::set<std::string>{"link/uniform"});
   // The vertex shader's default float precision is highp, the fragment's mediump here.
   const std::string same_names =
       "precision mediump float;\nstruct S { vec4 pos; vec4 color; };\nuniform S uni;\n"
       "void main() { gl_FragColor = uni.color; }\n";
   EXPECT_EQ(LinkErrors("struct-precision", vertex, same_names),
-            std::set<std::string>{"webgl/link-uniform"});
+            std::set<std::string>{"link/uniform"});
   const std::string highp =
       "precision highp float;\nstruct S { vec4 pos; vec4 color; };\nuniform S uni;\n"
       "void main() { gl_FragColor = uni.color; }\n";
@@ -85,7 +85,7 @@ TEST(ProgramLink, StagesOfTwoVersionsDoNotLink) {
       "#version 300 es\nprecision mediump float;\nout vec4 o;\nvoid main() { o = vec4(1.0); }\n";
   EXPECT_EQ(
       LinkErrors("versions", "attribute vec4 a;\nvoid main() { gl_Position = a; }\n", fragment300),
-      std::set<std::string>{"webgl/link-version"});
+      std::set<std::string>{"link/version"});
 }
 
 }  // namespace

@@ -52,7 +52,7 @@ std::string Name(size_t index) {
 }
 
 bool IsLinkRule(const std::string& id) {
-  return id.starts_with("webgl/link-") || id == "webgl/varying-packing";
+  return id.starts_with("link/");
 }
 
 struct Verdict {
