@@ -610,6 +610,7 @@ void PassEmptyArgumentsInMacroBodies(const BrowserContext& context, FileId part,
 // stop at a syntax error that hides the shader's real ones. The backslash and the
 // continued text become spaces, on the same lines.
 void BlankContinuedLineComments(std::string& text) {
+  if (text.find('\\') == std::string::npos) return;  // nothing continues a line
   bool block = false;
   for (size_t i = 0; i < text.size(); ++i) {
     if (block) {
@@ -765,7 +766,7 @@ GlslangText TextForGlslang(const BrowserContext& context, const SourceFile& part
   std::string prelude;
   // Same-length edits first: the offsets of our front end stay valid for the next.
   RenameDeclarableBuiltins(context, part.Id(), text);
-  RenameGlslangOnlyKeywords(context, text);
+  RenameGlslangOnlyKeywords(context, part.Id(), text);
   RenameLengthFields(context, part.Id(), text);
   ReplaceFileMacro(text);
   ReplaceLineMacro(context, part.Id(), text);

@@ -21,7 +21,7 @@ std::string SameLengthAlias(const std::string& text, const std::string& name,
 void ReplaceWord(std::string& text, std::string_view word, std::string_view with);
 
 void RenameDeclarableBuiltins(const BrowserContext& context, FileId part, std::string& text);
-void RenameGlslangOnlyKeywords(const BrowserContext& context, std::string& text);
+void RenameGlslangOnlyKeywords(const BrowserContext& context, FileId part, std::string& text);
 void RenameLengthFields(const BrowserContext& context, FileId part, std::string& text);
 
 }  // namespace shaderport::rules::glslang_text

@@ -9,6 +9,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -277,18 +278,60 @@ void ReplaceWord(std::string& text, std::string_view word, std::string_view with
 
 // Names glslang reserves and browsers do not: renamed everywhere in the file (comments
 // and macro bodies too, which keeps every use consistent) at the same length.
-void RenameGlslangOnlyKeywords(const BrowserContext& context, std::string& text) {
-  auto rename_all = [&](auto& words) {
-    for (std::string_view word : words) {
-      if (text.find(word) == std::string::npos) continue;
-      const std::string alias = SameLengthAlias(text, std::string(word));
-      if (!alias.empty()) ReplaceWord(text, word, alias);
+static_assert(std::is_sorted(kEs1Names.begin(), kEs1Names.end()));
+static_assert(std::is_sorted(kEs3Names.begin(), kEs3Names.end()));
+
+// [A-Za-z0-9_], as a table: the scan below runs over every byte of every file.
+constexpr std::array<bool, 256> kWordChars = [] {
+  std::array<bool, 256> table{};
+  for (int c = 0; c < 256; ++c) {
+    table[static_cast<size_t>(c)] =
+        (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+  }
+  return table;
+}();
+
+void RenameGlslangOnlyKeywords(const BrowserContext& context, FileId part, std::string& text) {
+  const std::span<const std::string_view> words =
+      context.version >= 300 ? std::span<const std::string_view>(kEs3Names)
+                             : std::span<const std::string_view>(kEs1Names);
+  std::array<bool, 256> first_chars{};
+  for (std::string_view word : words) first_chars[static_cast<unsigned char>(word[0])] = true;
+  // Which listed words the code has (most texts: none), from the words of the lexed file
+  // or one pass over the text of another part: searching the text once per listed word
+  // cost more than the rest of this file. A word only in a comment needs no rename.
+  std::vector<bool> present(words.size(), false);
+  bool any = false;
+  const auto note = [&](std::string_view word) {
+    if (word.empty() || !first_chars[static_cast<unsigned char>(word[0])]) return;
+    const auto at = std::lower_bound(words.begin(), words.end(), word);
+    if (at != words.end() && *at == word) {
+      present[static_cast<size_t>(at - words.begin())] = true;
+      any = true;
     }
   };
-  if (context.version >= 300) {
-    rename_all(kEs3Names);
+  if (context.lexed != nullptr && context.file != nullptr && context.file->Id() == part) {
+    for (const glsl::Token& token : context.lexed->tokens) {
+      if (token.kind == glsl::TokenKind::kIdentifier) note(token.text);
+    }
   } else {
-    rename_all(kEs1Names);
+    const auto is_word = [](char c) { return kWordChars[static_cast<unsigned char>(c)]; };
+    for (size_t i = 0; i < text.size();) {
+      size_t end = i;
+      while (end < text.size() && is_word(text[end])) ++end;
+      if (end == i) {
+        ++i;
+        continue;
+      }
+      note(std::string_view(text.data() + i, end - i));
+      i = end;
+    }
+  }
+  if (!any) return;
+  for (size_t k = 0; k < words.size(); ++k) {
+    if (!present[k]) continue;
+    const std::string alias = SameLengthAlias(text, std::string(words[k]));
+    if (!alias.empty()) ReplaceWord(text, words[k], alias);
   }
 }
 
