@@ -58,4 +58,10 @@ struct GlslangText {
 };
 GlslangText TextForGlslang(const BrowserContext& context, const SourceFile& part);
 
+// `part` as our preprocessor expanded it, for glslang when its own preprocessor crashed
+// on the part's macros: every token on its line (macro expansions on the line of their
+// use), the `#version` and `#extension` lines as written, other directives gone. Lines
+// match the part's, so glslang's messages keep their lines (columns are approximate).
+std::string ExpandedTextForGlslang(const BrowserContext& context, const SourceFile& part);
+
 }  // namespace shaderport::rules

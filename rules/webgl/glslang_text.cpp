@@ -783,4 +783,34 @@ GlslangText TextForGlslang(const BrowserContext& context, const SourceFile& part
   return {std::move(text), std::move(prelude)};
 }
 
+std::string ExpandedTextForGlslang(const BrowserContext& context, const SourceFile& part) {
+  std::vector<std::string> lines(part.LineCount());
+  for (uint32_t line = 1; line <= part.LineCount(); ++line) {
+    const std::string_view text = part.LineText(line);
+    const size_t hash = text.find_first_not_of(" \t");
+    if (hash == std::string_view::npos || text[hash] != '#') continue;
+    const size_t word = text.find_first_not_of(" \t", hash + 1);
+    const std::string_view directive = word == std::string_view::npos ? "" : text.substr(word);
+    if (directive.starts_with("version") || directive.starts_with("extension")) {
+      lines[line - 1] = std::string(text);
+    }
+  }
+  if (context.preprocessed != nullptr) {
+    for (const glsl::PpToken& token : context.preprocessed->tokens) {
+      if (token.kind == glsl::TokenKind::kEndOfFile || token.expansion.file != part.Id()) continue;
+      const uint32_t line = part.LocationOf(token.expansion.begin).line;
+      if (line == 0 || line > lines.size()) continue;
+      std::string& out = lines[line - 1];
+      if (!out.empty()) out += ' ';
+      out += token.text;
+    }
+  }
+  std::string text;
+  for (size_t i = 0; i < lines.size(); ++i) {
+    if (i != 0) text += '\n';
+    text += lines[i];
+  }
+  return text;
+}
+
 }  // namespace shaderport::rules

@@ -275,6 +275,25 @@ FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceMana
   }
   request.parts = std::move(parts);
   validate::ValidationResult result = validate::ValidateWithGlslang(request);
+  // glslang's preprocessor crashed on the file's macros, which our own preprocessor took:
+  // glslang compiles our expansion of them instead, so that its checks still run.
+  std::string expanded;
+  if (result.crashed && !front.HasErrors()) {
+    expanded = ExpandedTextForGlslang(file, file, front, webgl);
+    validate::ValidationRequest again = request;
+    for (validate::ShaderPart& part : again.parts) {
+      if (part.kind == validate::PartKind::kUser && part.file == file.Id()) part.text = expanded;
+    }
+    validate::ValidationResult retried = validate::ValidateWithGlslang(again);
+    if (!retried.crashed) {
+      for (Diagnostic& diagnostic : retried.diagnostics) {
+        diagnostic.notes.push_back({{},
+                                    "glslang crashed on this file's macros; this is glslang's "
+                                    "message for shaderport's expansion of them"});
+      }
+      result = std::move(retried);
+    }
+  }
   AlignGlslangWithBrowser(file, front, webgl, result.diagnostics);
   ExplainChannelErrors(front, decision, result.diagnostics);
   report.diagnostics = RunWebglChecks(file, front, webgl);

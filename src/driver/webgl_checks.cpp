@@ -90,4 +90,12 @@ rules::GlslangText TextForGlslang(const SourceFile& file, const SourceFile* comm
   return rules::TextForGlslang(context, part);
 }
 
+std::string ExpandedTextForGlslang(const SourceFile& file, const SourceFile& part,
+                                   const FrontEndResult& front,
+                                   const WebglCheckSettings& settings) {
+  rules::BrowserContext context = ToBrowserContext(front, settings);
+  context.file = &file;
+  return rules::ExpandedTextForGlslang(context, part);
+}
+
 }  // namespace shaderport::driver

@@ -41,4 +41,9 @@ rules::GlslangText TextForGlslang(const SourceFile& file, const SourceFile* comm
                                   const SourceFile& part, const FrontEndResult& front,
                                   const WebglCheckSettings& settings);
 
+// `part` as our preprocessor expanded it (rules::ExpandedTextForGlslang): what glslang
+// compiles when its own preprocessor crashed on the part's macros.
+std::string ExpandedTextForGlslang(const SourceFile& file, const SourceFile& part,
+                                   const FrontEndResult& front, const WebglCheckSettings& settings);
+
 }  // namespace shaderport::driver
