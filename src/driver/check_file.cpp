@@ -276,9 +276,11 @@ FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceMana
   request.parts = std::move(parts);
   validate::ValidationResult result = validate::ValidateWithGlslang(request);
   // glslang's preprocessor crashed on the file's macros, which our own preprocessor took:
-  // glslang compiles our expansion of them instead, so that its checks still run.
+  // glslang compiles our expansion of them instead, so that its checks still run. Not
+  // after a time-out (a loaded machine, not the macros) nor behind a Common part, whose
+  // macros the expansion would take out of their place.
   std::string expanded;
-  if (result.crashed && !front.HasErrors()) {
+  if (result.crashed && !result.hung && common == nullptr && !front.HasErrors()) {
     expanded = ExpandedTextForGlslang(file, file, front, webgl);
     validate::ValidationRequest again = request;
     for (validate::ShaderPart& part : again.parts) {

@@ -328,6 +328,7 @@ ValidationResult ValidateWithGlslang(const ValidationRequest& request) {
           ? RunGlslangIsolated(parts, request.stage, request.default_version, request.link)
           : RunGlslang(parts, request.stage, request.default_version, request.link);
   result.crashed = run.crashed || !run.ran;
+  result.hung = run.hung;
   result.compiled = run.compiled;
   result.linked = run.linked;
   if (result.crashed) {

@@ -50,6 +50,7 @@ struct ValidationResult {
   bool compiled = false;
   bool linked = false;                  // false when linking was not requested
   bool crashed = false;                 // glslang crashed or hung: nothing was validated
+  bool hung = false;                    // of those, past the time limit
   std::vector<MappedMessage> messages;  // everything glslang said, in order
   DiagnosticList diagnostics;
 
