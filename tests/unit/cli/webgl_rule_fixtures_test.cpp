@@ -20,13 +20,29 @@
 namespace shaderport::testing {
 namespace {
 
+// `check --format json` over a fixture folder, and the Chromium verdicts recorded there.
+struct FixtureRun {
+  int exit_code = 0;
+  std::string err;
+  nlohmann::json check;
+  nlohmann::json chromium;
+};
+
+FixtureRun CheckFixtures(const std::filesystem::path& dir) {
+  const CommandResult result = RunShaderport("check --format json --no-config --no-cache .", dir);
+  FixtureRun run{result.exit_code, result.err, {}, {}};
+  if (result.exit_code == 1) run.check = nlohmann::json::parse(result.out);
+  std::ifstream recorded(dir / "chromium-verdicts.json");
+  run.chromium = nlohmann::json::parse(recorded);
+  return run;
+}
+
 TEST(WebglRuleFixtures, EachFixtureGetsItsRule) {
   const std::filesystem::path dir = SourceDir() / "tests" / "rules" / "webgl-checks";
-  const CommandResult result = RunShaderport("check --format json --no-config --no-cache .", dir);
-  ASSERT_EQ(result.exit_code, 1) << result.err;
-  const auto json = nlohmann::json::parse(result.out);
-  std::ifstream recorded(dir / "chromium-verdicts.json");
-  const auto chromium = nlohmann::json::parse(recorded);
+  const FixtureRun run = CheckFixtures(dir);
+  ASSERT_EQ(run.exit_code, 1) << run.err;
+  const nlohmann::json& json = run.check;
+  const nlohmann::json& chromium = run.chromium;
   size_t fixtures = 0;
   for (const auto& file : json["files"]) {
     const std::string path = file["path"];
@@ -51,11 +67,10 @@ TEST(WebglRuleFixtures, EachFixtureGetsItsRule) {
 // files must get link/<name>, and an error exactly when Chromium fails the program.
 TEST(WebglRuleFixtures, EachProgramGetsItsRule) {
   const std::filesystem::path dir = SourceDir() / "tests" / "rules" / "link-checks";
-  const CommandResult result = RunShaderport("check --format json --no-config --no-cache .", dir);
-  ASSERT_EQ(result.exit_code, 1) << result.err;
-  const auto json = nlohmann::json::parse(result.out);
-  std::ifstream recorded(dir / "chromium-verdicts.json");
-  const auto chromium = nlohmann::json::parse(recorded);
+  const FixtureRun run = CheckFixtures(dir);
+  ASSERT_EQ(run.exit_code, 1) << run.err;
+  const nlohmann::json& json = run.check;
+  const nlohmann::json& chromium = run.chromium;
   std::map<std::string, std::set<std::string>> rules;
   std::map<std::string, bool> errors;
   for (const auto& file : json["files"]) {
