@@ -1,5 +1,6 @@
 #include "rules/webgl/constant_expression.h"
 
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -83,6 +84,120 @@ bool IsConstantExpression(const glsl::SemanticModel& model, const glsl::Expr& ex
     }
   }
   return true;
+}
+
+const glsl::Declarator* InitializedDeclarator(const glsl::SyntaxTree& tree,
+                                              const glsl::SemanticModel& model,
+                                              const glsl::Expr& expr) {
+  const uint32_t id = model.SymbolAt(expr.id);
+  if (id == glsl::kNoSymbol) return nullptr;
+  const glsl::Symbol& symbol = model.symbols[id];
+  if (symbol.kind != glsl::SymbolKind::kVariable || symbol.declaration == glsl::kNoNode) {
+    return nullptr;
+  }
+  const auto* declarator = tree.NodeAt(symbol.declaration).As<glsl::Declarator>();
+  return declarator != nullptr && declarator->initializer != nullptr ? declarator : nullptr;
+}
+
+namespace {
+
+constexpr int kMaxFoldDepth = 16;  // const variables defined by other const variables
+
+class Folder {
+ public:
+  Folder(const glsl::SyntaxTree& tree, const glsl::SemanticModel& model)
+      : tree_(tree), model_(model) {}
+
+  std::optional<bool> Bool(const glsl::Expr* expr, int depth) const {
+    expr = Unparenthesized(expr);
+    if (expr == nullptr || depth > kMaxFoldDepth) return std::nullopt;
+    if (const auto* literal = expr->As<glsl::LiteralExpr>()) {
+      if (literal->literal_kind != glsl::LiteralKind::kBool) return std::nullopt;
+      return literal->bool_value;
+    }
+    if (const auto* unary = expr->As<glsl::UnaryExpr>()) {
+      if (unary->op != glsl::UnaryOp::kNot) return std::nullopt;
+      const std::optional<bool> operand = Bool(unary->operand, depth + 1);
+      return operand ? std::optional<bool>(!*operand) : std::nullopt;
+    }
+    if (const auto* binary = expr->As<glsl::BinaryExpr>()) return Binary(*binary, depth);
+    if (expr->kind == glsl::NodeKind::kIdentifierExpr) {
+      const glsl::Declarator* declarator = ConstDeclarator(*expr);
+      return declarator != nullptr ? Bool(declarator->initializer, depth + 1) : std::nullopt;
+    }
+    return std::nullopt;
+  }
+
+ private:
+  static const glsl::Expr* Unparenthesized(const glsl::Expr* expr) {
+    while (expr != nullptr && expr->kind == glsl::NodeKind::kParenExpr) {
+      expr = static_cast<const glsl::ParenExpr*>(expr)->inner;
+    }
+    return expr;
+  }
+
+  const glsl::Declarator* ConstDeclarator(const glsl::Expr& expr) const {
+    const uint32_t id = model_.SymbolAt(expr.id);
+    if (id == glsl::kNoSymbol || !model_.symbols[id].is_const) return nullptr;
+    return InitializedDeclarator(tree_, model_, expr);
+  }
+
+  // An int or float constant (ints up to 2^53 compare exactly as doubles).
+  std::optional<double> Number(const glsl::Expr* expr, int depth) const {
+    expr = Unparenthesized(expr);
+    if (expr == nullptr || depth > kMaxFoldDepth) return std::nullopt;
+    if (const auto* literal = expr->As<glsl::LiteralExpr>()) {
+      if (literal->literal_kind == glsl::LiteralKind::kInt) {
+        return static_cast<double>(literal->int_value);
+      }
+      if (literal->literal_kind == glsl::LiteralKind::kFloat) return literal->float_value;
+      return std::nullopt;
+    }
+    if (expr->kind == glsl::NodeKind::kIdentifierExpr) {
+      const glsl::Declarator* declarator = ConstDeclarator(*expr);
+      return declarator != nullptr ? Number(declarator->initializer, depth + 1) : std::nullopt;
+    }
+    return std::nullopt;
+  }
+
+  std::optional<bool> Binary(const glsl::BinaryExpr& binary, int depth) const {
+    using Op = glsl::BinaryOp;
+    if (binary.op == Op::kLogicalAnd || binary.op == Op::kLogicalOr) {
+      const std::optional<bool> lhs = Bool(binary.lhs, depth + 1);
+      const std::optional<bool> rhs = Bool(binary.rhs, depth + 1);
+      if (!lhs || !rhs) return std::nullopt;
+      return binary.op == Op::kLogicalAnd ? (*lhs && *rhs) : (*lhs || *rhs);
+    }
+    const std::optional<double> lhs = Number(binary.lhs, depth + 1);
+    const std::optional<double> rhs = Number(binary.rhs, depth + 1);
+    if (!lhs || !rhs) return std::nullopt;
+    switch (binary.op) {
+      case Op::kLess:
+        return *lhs < *rhs;
+      case Op::kGreater:
+        return *lhs > *rhs;
+      case Op::kLessEqual:
+        return *lhs <= *rhs;
+      case Op::kGreaterEqual:
+        return *lhs >= *rhs;
+      case Op::kEqual:
+        return *lhs == *rhs;
+      case Op::kNotEqual:
+        return *lhs != *rhs;
+      default:
+        return std::nullopt;
+    }
+  }
+
+  const glsl::SyntaxTree& tree_;
+  const glsl::SemanticModel& model_;
+};
+
+}  // namespace
+
+std::optional<bool> ConstantBool(const glsl::SyntaxTree& tree, const glsl::SemanticModel& model,
+                                 const glsl::Expr& expr) {
+  return Folder(tree, model).Bool(&expr, 0);
 }
 
 }  // namespace shaderport::rules::webgl

@@ -3,6 +3,7 @@
 // fewer built-in calls, so this is also how `check` recognises its false errors.
 #pragma once
 
+#include <optional>
 #include <set>
 
 #include "glsl/sema/semantic_model.h"
@@ -21,5 +22,17 @@ struct ConstantRules {
 // and derivatives excepted) over them. Bounded by an explicit stack.
 bool IsConstantExpression(const glsl::SemanticModel& model, const glsl::Expr& expr,
                           const ConstantRules& rules);
+
+// The value of a bool constant expression as far as it is folded here: literals, `!`,
+// `&&`, `||`, comparisons of int and float constants, and const variables of them;
+// nullopt for any other (its value is then unknown here, not false).
+std::optional<bool> ConstantBool(const glsl::SyntaxTree& tree, const glsl::SemanticModel& model,
+                                 const glsl::Expr& expr);
+
+// The declarator of the variable `expr` names, when it is one with an initializer (not a
+// parameter, not a built-in); nullptr otherwise.
+const glsl::Declarator* InitializedDeclarator(const glsl::SyntaxTree& tree,
+                                              const glsl::SemanticModel& model,
+                                              const glsl::Expr& expr);
 
 }  // namespace shaderport::rules::webgl

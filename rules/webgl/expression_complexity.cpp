@@ -77,15 +77,6 @@ class BrowserTree {
   }
 
  private:
-  // The value of a condition written as `true` or `false` (in parentheses or not).
-  static std::optional<bool> LiteralValue(const glsl::Expr& condition) {
-    const glsl::Expr* inner = webgl::Unparenthesized(&condition);
-    if (inner == nullptr || inner->kind != glsl::NodeKind::kLiteralExpr) return std::nullopt;
-    const auto& literal = static_cast<const glsl::LiteralExpr&>(*inner);
-    if (literal.literal_kind != glsl::LiteralKind::kBool) return std::nullopt;
-    return literal.bool_value;
-  }
-
   // The `if` itself when its condition is constant (it becomes the taken branch), or
   // nullptr.
   const glsl::Node* FoldedIf(const glsl::Node& node) const {
@@ -96,10 +87,12 @@ class BrowserTree {
   }
 
   // Drops what the fold removes: the condition, and the branch not taken when the
-  // condition is a literal (otherwise both are walked: the deeper one bounds the depth).
+  // condition's value is known here (otherwise both are walked: the deeper one bounds
+  // the depth).
   void Drop(const glsl::IfStatement& statement, const glsl::Node* /*folded*/) {
     dropped_.push_back(statement.condition);
-    const std::optional<bool> value = LiteralValue(*statement.condition);
+    const std::optional<bool> value =
+        webgl::ConstantBool(context_.Tree(), context_.Model(), *statement.condition);
     if (!value) return;
     const glsl::Node* untaken = *value ? statement.else_branch : statement.then_branch;
     if (untaken != nullptr) dropped_.push_back(untaken);
@@ -111,8 +104,9 @@ class BrowserTree {
       return false;
     }
     // ANGLE keeps the fold only when the selected operand is a temporary; when the
-    // condition is not a literal, only when both are.
-    const std::optional<bool> value = LiteralValue(*conditional.condition);
+    // condition's value is not known here, only when both are.
+    const std::optional<bool> value =
+        webgl::ConstantBool(context_.Tree(), context_.Model(), *conditional.condition);
     const glsl::Expr* if_true = webgl::Unparenthesized(conditional.if_true);
     const glsl::Expr* if_false = webgl::Unparenthesized(conditional.if_false);
     const bool folds = value ? IsTemporary(*value ? *if_true : *if_false)

@@ -14,13 +14,13 @@
 
 #include "glsl/syntax/visit.h"
 #include "rules/all_rules.h"
+#include "rules/webgl/constant_expression.h"
 #include "rules/webgl/webgl_support.h"
 
 namespace shaderport::rules {
 namespace {
 
 constexpr std::string_view kId = "webgl/infinite-loop";
-constexpr int kMaxDepth = 16;  // const variables defined by other const variables
 
 // A `break` of this loop (not of a nested loop or switch), or a `return` anywhere in it.
 bool HasWayOut(const glsl::Node& body) {
@@ -45,100 +45,6 @@ bool HasWayOut(const glsl::Node& body) {
   return way_out;
 }
 
-class ConditionValues {
- public:
-  explicit ConditionValues(const rule::RuleContext& context) : context_(context) {}
-
-  // The value of a constant condition ANGLE folds: literals, `!`, `&&`, `||`, integer
-  // and float comparisons and const variables of them; nullopt for anything else.
-  std::optional<bool> Bool(const glsl::Expr* expr, int depth = 0) const {
-    expr = webgl::Unparenthesized(expr);
-    if (expr == nullptr || depth > kMaxDepth) return std::nullopt;
-    if (const auto* literal = expr->As<glsl::LiteralExpr>()) {
-      if (literal->literal_kind != glsl::LiteralKind::kBool) return std::nullopt;
-      return literal->bool_value;
-    }
-    if (const auto* unary = expr->As<glsl::UnaryExpr>()) {
-      if (unary->op != glsl::UnaryOp::kNot) return std::nullopt;
-      const std::optional<bool> operand = Bool(unary->operand, depth + 1);
-      return operand ? std::optional<bool>(!*operand) : std::nullopt;
-    }
-    if (const auto* binary = expr->As<glsl::BinaryExpr>()) return Binary(*binary, depth);
-    if (expr->kind == glsl::NodeKind::kIdentifierExpr) {
-      const glsl::Declarator* declarator = ConstDeclarator(*expr);
-      return declarator != nullptr ? Bool(declarator->initializer, depth + 1) : std::nullopt;
-    }
-    return std::nullopt;
-  }
-
-  // The declarator of the variable `expr` names, when it is a variable (not a
-  // parameter) with an initializer; nullptr otherwise.
-  const glsl::Declarator* Declaration(const glsl::Expr& expr) const {
-    const glsl::Symbol* symbol = webgl::SymbolOf(context_, expr);
-    if (symbol == nullptr || symbol->kind != glsl::SymbolKind::kVariable ||
-        symbol->declaration == glsl::kNoNode) {
-      return nullptr;
-    }
-    const auto* declarator = context_.Tree().NodeAt(symbol->declaration).As<glsl::Declarator>();
-    return declarator != nullptr && declarator->initializer != nullptr ? declarator : nullptr;
-  }
-
- private:
-  const glsl::Declarator* ConstDeclarator(const glsl::Expr& expr) const {
-    const glsl::Symbol* symbol = webgl::SymbolOf(context_, expr);
-    return symbol != nullptr && symbol->is_const ? Declaration(expr) : nullptr;
-  }
-
-  // An int or float constant (ints up to 2^53 compare exactly as doubles).
-  std::optional<double> Number(const glsl::Expr* expr, int depth) const {
-    expr = webgl::Unparenthesized(expr);
-    if (expr == nullptr || depth > kMaxDepth) return std::nullopt;
-    if (const auto* literal = expr->As<glsl::LiteralExpr>()) {
-      if (literal->literal_kind == glsl::LiteralKind::kInt) {
-        return static_cast<double>(literal->int_value);
-      }
-      if (literal->literal_kind == glsl::LiteralKind::kFloat) return literal->float_value;
-      return std::nullopt;
-    }
-    if (expr->kind == glsl::NodeKind::kIdentifierExpr) {
-      const glsl::Declarator* declarator = ConstDeclarator(*expr);
-      return declarator != nullptr ? Number(declarator->initializer, depth + 1) : std::nullopt;
-    }
-    return std::nullopt;
-  }
-
-  std::optional<bool> Binary(const glsl::BinaryExpr& binary, int depth) const {
-    using Op = glsl::BinaryOp;
-    if (binary.op == Op::kLogicalAnd || binary.op == Op::kLogicalOr) {
-      const std::optional<bool> lhs = Bool(binary.lhs, depth + 1);
-      const std::optional<bool> rhs = Bool(binary.rhs, depth + 1);
-      if (!lhs || !rhs) return std::nullopt;
-      return binary.op == Op::kLogicalAnd ? (*lhs && *rhs) : (*lhs || *rhs);
-    }
-    const std::optional<double> lhs = Number(binary.lhs, depth + 1);
-    const std::optional<double> rhs = Number(binary.rhs, depth + 1);
-    if (!lhs || !rhs) return std::nullopt;
-    switch (binary.op) {
-      case Op::kLess:
-        return *lhs < *rhs;
-      case Op::kGreater:
-        return *lhs > *rhs;
-      case Op::kLessEqual:
-        return *lhs <= *rhs;
-      case Op::kGreaterEqual:
-        return *lhs >= *rhs;
-      case Op::kEqual:
-        return *lhs == *rhs;
-      case Op::kNotEqual:
-        return *lhs != *rhs;
-      default:
-        return std::nullopt;
-    }
-  }
-
-  const rule::RuleContext& context_;
-};
-
 class InfiniteLoopRule final : public rule::Rule {
  public:
   const rule::RuleInfo& Info() const override {
@@ -149,7 +55,6 @@ class InfiniteLoopRule final : public rule::Rule {
   }
 
   void Run(rule::RuleContext& context) const override {
-    const ConditionValues values(context);
     struct Loop {
       const glsl::Node* node;
       const glsl::Node* condition;
@@ -175,7 +80,7 @@ class InfiniteLoopRule final : public rule::Rule {
       return true;
     });
     for (const Loop& loop : loops) {
-      if (loop.body == nullptr || !AlwaysTrue(context, values, loop.condition, bare_conditions) ||
+      if (loop.body == nullptr || !AlwaysTrue(context, loop.condition, bare_conditions) ||
           HasWayOut(*loop.body)) {
         continue;
       }
@@ -187,18 +92,21 @@ class InfiniteLoopRule final : public rule::Rule {
   }
 
  private:
-  static bool AlwaysTrue(const rule::RuleContext& context, const ConditionValues& values,
-                         const glsl::Node* condition,
+  static bool AlwaysTrue(const rule::RuleContext& context, const glsl::Node* condition,
                          const std::vector<const glsl::Node*>& bare_conditions) {
     if (condition == nullptr || condition->kind == glsl::NodeKind::kEmptyStatement) return true;
     if (!condition->IsExpr()) return false;
     const auto* expr = static_cast<const glsl::Expr*>(condition);
-    if (values.Bool(expr) == true) return true;
+    if (webgl::ConstantBool(context.Tree(), context.Model(), *expr) == true) return true;
     // A variable initialised to true that nothing reads or writes but loop conditions.
     const glsl::Expr* bare = webgl::Unparenthesized(expr);
     if (bare == nullptr || bare->kind != glsl::NodeKind::kIdentifierExpr) return false;
-    const glsl::Declarator* declarator = values.Declaration(*bare);
-    if (declarator == nullptr || values.Bool(declarator->initializer) != true) return false;
+    const glsl::Declarator* declarator =
+        webgl::InitializedDeclarator(context.Tree(), context.Model(), *bare);
+    if (declarator == nullptr ||
+        webgl::ConstantBool(context.Tree(), context.Model(), *declarator->initializer) != true) {
+      return false;
+    }
     const uint32_t symbol = context.Model().SymbolAt(bare->id);
     bool other_use = false;
     glsl::VisitPreorder(context.Tree(), [&](const glsl::Node& node, uint32_t /*depth*/) {
