@@ -275,23 +275,27 @@ FileReport CheckFile(const FileJob& job, const CheckOptions& options, SourceMana
   }
   request.parts = std::move(parts);
   validate::ValidationResult result = validate::ValidateWithGlslang(request);
-  // glslang's preprocessor crashed on the file's macros, which our own preprocessor took:
-  // glslang compiles our expansion of them instead, so that its checks still run. Not
-  // after a time-out (a loaded machine, not the macros) nor behind a Common part, whose
-  // macros the expansion would take out of their place.
+  // glslang crashed on the file's macros (or its child process failed: a differential
+  // run of 20,000 files saw one such file crash in a batch and compile alone), which our
+  // own preprocessor took: glslang compiles our expansion, in this process, so that its
+  // checks still run. Not behind a Common part, whose macros the expansion would take out
+  // of place. Only then: the expansion leaves out the rest of glslang's text
+  // (TextForGlslang), so on a file glslang did compile it would raise false errors.
   std::string expanded;
-  if (result.crashed && !result.hung && common == nullptr && !front.HasErrors()) {
+  if (result.crashed && common == nullptr && !front.HasErrors()) {
     expanded = ExpandedTextForGlslang(file, file, front, webgl);
     validate::ValidationRequest again = request;
+    again.texts_expanded = true;  // no macros left: glslang runs in this process
     for (validate::ShaderPart& part : again.parts) {
       if (part.kind == validate::PartKind::kUser && part.file == file.Id()) part.text = expanded;
     }
     validate::ValidationResult retried = validate::ValidateWithGlslang(again);
     if (!retried.crashed) {
       for (Diagnostic& diagnostic : retried.diagnostics) {
-        diagnostic.notes.push_back({{},
-                                    "glslang crashed on this file's macros; this is glslang's "
-                                    "message for shaderport's expansion of them"});
+        diagnostic.notes.push_back(
+            {{},
+             "glslang crashed on this file's macros; this is glslang's message for "
+             "shaderport's expansion of them"});
       }
       result = std::move(retried);
     }

@@ -180,7 +180,6 @@ GlslangRun RunGlslangIsolated(std::span<const GlslangPart> parts, model::Stage s
   const bool clean_exit = WIFEXITED(status) && WEXITSTATUS(status) == 0;
   if (!finished || !clean_exit || !Deserialize(data, run)) {
     failed.crashed = true;
-    failed.hung = !finished;
     return failed;
   }
   return run;

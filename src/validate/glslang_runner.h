@@ -21,7 +21,6 @@ struct GlslangPart {
 struct GlslangRun {
   bool ran = false;      // false when glslang could not be run at all (see crashed)
   bool crashed = false;  // glslang crashed or hung (isolated runs only)
-  bool hung = false;     // of those, past the time limit (a slow or loaded machine can do it)
   bool compiled = false;
   bool linked = false;  // only meaningful when linking was requested and compiled
   std::string compile_log;

@@ -324,11 +324,10 @@ ValidationResult ValidateWithGlslang(const ValidationRequest& request) {
     parts.push_back({InternalPartName(i), text});
   }
   const GlslangRun run =
-      mapper.UserCodeHasUnbalancedMacro()
+      mapper.UserCodeHasUnbalancedMacro() && !request.texts_expanded
           ? RunGlslangIsolated(parts, request.stage, request.default_version, request.link)
           : RunGlslang(parts, request.stage, request.default_version, request.link);
   result.crashed = run.crashed || !run.ran;
-  result.hung = run.hung;
   result.compiled = run.compiled;
   result.linked = run.linked;
   if (result.crashed) {

@@ -38,6 +38,9 @@ struct ValidationRequest {
   std::string entry_point;
   std::string
       entry_point_signature;  // shown in that error, e.g. "void mainImage(out vec4, in vec2)"
+  // The user parts' texts are an expansion without macros (their files keep the macros):
+  // glslang runs in this process even when those files' macros are unbalanced.
+  bool texts_expanded = false;
 };
 
 // A glslang message tied back to the request's parts.
@@ -50,7 +53,6 @@ struct ValidationResult {
   bool compiled = false;
   bool linked = false;                  // false when linking was not requested
   bool crashed = false;                 // glslang crashed or hung: nothing was validated
-  bool hung = false;                    // of those, past the time limit
   std::vector<MappedMessage> messages;  // everything glslang said, in order
   DiagnosticList diagnostics;
 
