@@ -34,7 +34,8 @@ class VoidParameterRule final : public rule::Rule {
       }
       webgl::ReportError(context, kId, first->range,
                          "'void' cannot be a parameter type except for the whole list '(void)'; "
-                         "'" + function->name.text + "' has " +
+                         "'" +
+                             function->name.text + "' has " +
                              std::to_string(function->parameters.size()) + " parameters");
     }
   }

@@ -73,7 +73,10 @@ std::optional<EnabledExtensions> ParseEnabledExtensions(std::string_view text, s
       std::string known;
       for (const Offered& offered : kOffered)
         known += std::string(known.empty() ? "" : ", ") + std::string(offered.name);
-      error = "unknown extension '" + std::string(name) +
+      // A name is echoed up to 80 bytes: the value may be anything a script passed.
+      const std::string shown =
+          name.size() > 80 ? std::string(name.substr(0, 80)) + "..." : std::string(name);
+      error = "unknown extension '" + shown +
               "' in --enabled-extensions (expected 'none' or GLSL names a WebGL context "
               "offers: " +
               known + ")";

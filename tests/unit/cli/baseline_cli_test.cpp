@@ -132,10 +132,9 @@ TEST(BaselineRename, ABaselineWrittenBeforeARuleWasRenamedStillMatches) {
   const fs::path programs = SourceDir() / "tests" / "rules" / "link-checks";
   const fs::path old_baseline =
       SourceDir() / "tests" / "data" / "baselines" / "link-varying-before-rename.json";
-  const CommandResult result =
-      RunShaderport("check --no-config --no-cache varying.vert varying.frag --baseline " +
-                        old_baseline.string(),
-                    programs);
+  const CommandResult result = RunShaderport(
+      "check --no-config --no-cache varying.vert varying.frag --baseline " + old_baseline.string(),
+      programs);
   EXPECT_EQ(result.exit_code, 0) << result.out << result.err;
   EXPECT_EQ(result.out.find("link/varying"), std::string::npos) << result.out;
   const std::string said = result.out + result.err;

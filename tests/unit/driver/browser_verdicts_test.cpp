@@ -23,9 +23,7 @@ namespace fs = std::filesystem;
 
 const fs::path kDir = fs::path(SHADERPORT_SOURCE_DIR) / "tests" / "browser-verdicts";
 
-bool IsLinkRule(const std::string& id) {
-  return id.starts_with("link/");
-}
+bool IsLinkRule(const std::string& id) { return id.starts_with("link/"); }
 
 // First error of each file, "" when check accepts it; by path relative to kDir.
 std::map<std::string, std::string> FirstErrors(const std::string& context, model::Target target) {

@@ -66,8 +66,7 @@ TEST(ProgramLink, UniformStructMembersMustAgree) {
   const std::string swapped =
       "precision mediump float;\nstruct S { vec4 color; vec4 pos; };\nuniform S uni;\n"
       "void main() { gl_FragColor = uni.color; }\n";
-  EXPECT_EQ(LinkErrors("struct-order", vertex, swapped),
-            std::set<std::string>{"link/uniform"});
+  EXPECT_EQ(LinkErrors("struct-order", vertex, swapped), std::set<std::string>{"link/uniform"});
   // The vertex shader's default float precision is highp, the fragment's mediump here.
   const std::string same_names =
       "precision mediump float;\nstruct S { vec4 pos; vec4 color; };\nuniform S uni;\n"

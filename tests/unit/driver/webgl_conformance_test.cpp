@@ -51,9 +51,7 @@ std::string Name(size_t index) {
   return buffer;
 }
 
-bool IsLinkRule(const std::string& id) {
-  return id.starts_with("link/");
-}
+bool IsLinkRule(const std::string& id) { return id.starts_with("link/"); }
 
 struct Verdict {
   bool compiled = true;
